@@ -1,0 +1,14 @@
+//! Exact algebra: everything here is exact (BigRational coefficients) and
+//! never touches `f64`, names or source spans.
+//!
+//! * [`ring`]: the capability ladder `Ring → GcdDomain → EuclideanDomain`,
+//!   `Field`, implemented by ring *objects* stored beside the data;
+//! * [`rational`]: the field Q;
+//! * [`mpoly`]: sparse multivariate polynomials over Q in commuting symbols;
+//! * [`gcd`]: multivariate gcd by recursive primitive PRS;
+//! * [`ratfunc`]: the field Q(s1..sn) of reduced rational functions;
+//! * [`upoly`]: dense univariate polynomials over any field object (Q[x],
+//!   Q(others)[λ]);
+//! * [`matrix`]: `Matrix<R>` over a ring object, Bareiss determinant,
+//!   adjugate, rank, minors;
+//! * [`smith`]: the three honest Smith modes and their certificates.

@@ -1,0 +1,14 @@
+//! lambdamat turns systems of linear operator equations into exact algebra
+//! and then into numerical solvers.
+//!
+//! The crate is split along the pipeline of `docs/design.md`; each folder is
+//! one stage and may only depend on the stages before it:
+//!
+//! * [`lang`]: text → spanned AST → validated, lowered objects (the only
+//!   place that knows about source positions and names);
+//! * [`algebra`]: exact rationals, polynomials, rational functions, matrices
+//!   over a ring object and the certified Smith normal form (never `f64`);
+//! * [`cli`]: the `lambdamat` command line and its text/LaTeX/JSON reports.
+pub mod algebra;
+pub mod cli;
+pub mod lang;
