@@ -12,3 +12,7 @@
 //! * [`matrix`]: `Matrix<R>` over a ring object, Bareiss determinant,
 //!   adjugate, rank, minors;
 //! * [`smith`]: the three honest Smith modes and their certificates.
+
+pub mod mpoly;
+pub mod rational;
+pub mod ring;
