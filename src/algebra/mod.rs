@@ -13,6 +13,11 @@
 //!   adjugate, rank, minors;
 //! * [`smith`]: the three honest Smith modes and their certificates.
 
+pub mod gcd;
+pub mod matrix;
 pub mod mpoly;
+pub mod polyring;
+pub mod ratfunc;
 pub mod rational;
 pub mod ring;
+pub mod upoly;

@@ -339,6 +339,70 @@ impl MPoly {
     }
 }
 
+/// LaTeX name of a symbol: `k1` → `k_{1}`, `lambda` → `\\lambda`.
+pub fn latex_name(name: &str) -> String {
+    const GREEK: [&str; 12] = [
+        "alpha", "beta", "gamma", "delta", "kappa", "lambda", "mu", "nu", "sigma", "tau", "phi",
+        "omega",
+    ];
+    let split = name
+        .find(|c: char| c.is_ascii_digit())
+        .unwrap_or(name.len());
+    let (head, digits) = name.split_at(split);
+    let head = if GREEK.contains(&head) {
+        format!("\\{head}")
+    } else {
+        head.to_string()
+    };
+    if digits.is_empty() || !digits.chars().all(|c| c.is_ascii_digit()) {
+        if digits.is_empty() {
+            head
+        } else {
+            format!("\\mathit{{{name}}}")
+        }
+    } else {
+        format!("{head}_{{{digits}}}")
+    }
+}
+
+impl MPoly {
+    /// LaTeX form with the given variable names, e.g. `k_{1} k_{4} - k_{2} k_{3}`.
+    pub fn to_latex_with<S: AsRef<str>>(&self, names: &[S]) -> String {
+        if self.terms.is_empty() {
+            return "0".into();
+        }
+        let mut out = String::new();
+        for (i, (m, c)) in self.terms.iter().enumerate() {
+            let neg = c.is_negative();
+            if i == 0 {
+                if neg {
+                    out.push('-');
+                }
+            } else {
+                out.push_str(if neg { " - " } else { " + " });
+            }
+            let a = c.abs();
+            let mono: Vec<String> = m
+                .iter()
+                .enumerate()
+                .filter(|(_, e)| **e > 0)
+                .map(|(v, &e)| {
+                    let n = latex_name(names.get(v).map(|s| s.as_ref()).unwrap_or("s"));
+                    if e == 1 { n } else { format!("{n}^{{{e}}}") }
+                })
+                .collect();
+            if mono.is_empty() || !a.is_one() {
+                out.push_str(&super::rational::latex_q(&a));
+                if !mono.is_empty() {
+                    out.push(' ');
+                }
+            }
+            out.push_str(&mono.join(" "));
+        }
+        out
+    }
+}
+
 fn fmt_monomial<S: AsRef<str>>(m: &[u32], names: &[S]) -> String {
     let mut parts = Vec::new();
     for (v, &e) in m.iter().enumerate() {

@@ -30,6 +30,16 @@ pub fn fmt_q(a: &Q) -> String {
     }
 }
 
+/// LaTeX form of `a`: `n` or `\frac{n}{d}` (with the sign in front).
+pub fn latex_q(a: &Q) -> String {
+    if a.denom().is_one() {
+        a.numer().to_string()
+    } else {
+        let sign = if a.is_negative() { "-" } else { "" };
+        format!("{sign}\\frac{{{}}}{{{}}}", a.numer().abs(), a.denom())
+    }
+}
+
 /// The unit `u > 0` such that `u * c` are coprime integers for all `c` in
 /// `coeffs` (lcm of denominators over gcd of numerators); one for an empty
 /// or all-zero list.
@@ -83,6 +93,12 @@ impl Ring for Rationals {
     fn format(&self, a: &Q) -> String {
         fmt_q(a)
     }
+    fn latex(&self, a: &Q) -> String {
+        latex_q(a)
+    }
+    fn is_negative(&self, a: &Q) -> bool {
+        a.is_negative()
+    }
     fn name(&self) -> String {
         "Q".into()
     }
@@ -91,6 +107,9 @@ impl Ring for Rationals {
 impl Field for Rationals {
     fn inv(&self, a: &Q) -> Option<Q> {
         (!a.is_zero()).then(|| a.recip())
+    }
+    fn small_scale(&self, coeffs: &[&Q]) -> Q {
+        primitive_scale(coeffs.iter().copied())
     }
 }
 

@@ -29,6 +29,13 @@ pub trait Ring: Clone + Debug {
     fn is_unit(&self, a: &Self::Elem) -> bool;
     /// Human-readable form of an element (expanded, highest degree first).
     fn format(&self, a: &Self::Elem) -> String;
+    /// LaTeX form of an element.
+    fn latex(&self, a: &Self::Elem) -> String;
+    /// Whether the printed form of `a` starts with a minus sign (used to
+    /// print sums as `a - b` rather than `a + -b`).
+    fn is_negative(&self, _a: &Self::Elem) -> bool {
+        false
+    }
     /// A short name of the ring, e.g. `Q[x]` or `Q(k1, k2, k3)[k4]`.
     fn name(&self) -> String;
 }
@@ -66,4 +73,10 @@ pub trait EuclideanDomain: GcdDomain {
 pub trait Field: Ring {
     /// `1/a`, or `None` for `a = 0`.
     fn inv(&self, a: &Self::Elem) -> Option<Self::Elem>;
+    /// A nonzero scalar by which a list of coefficients may be multiplied to
+    /// keep them small (for Q: clear denominators and integer content).
+    /// Default: one.
+    fn small_scale(&self, _coeffs: &[&Self::Elem]) -> Self::Elem {
+        self.one()
+    }
 }
