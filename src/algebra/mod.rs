@@ -12,3 +12,12 @@
 //! * [`matrix`]: `Matrix<R>` over a ring object, Bareiss determinant,
 //!   adjugate, rank, minors;
 //! * [`smith`]: the three honest Smith modes and their certificates.
+
+pub mod gcd;
+pub mod matrix;
+pub mod mpoly;
+pub mod polyring;
+pub mod ratfunc;
+pub mod rational;
+pub mod ring;
+pub mod upoly;

@@ -1,0 +1,434 @@
+//! `Matrix<R>`: a dense matrix that stores its ring object beside its
+//! entries, so one type serves Q, Q[x], Q[s1..sn] and Q(others)[λ]. Owns
+//! shape handling, products, the fraction-free (Bareiss) determinant,
+//! adjugate, rank and k×k minors; the Smith normal form lives in
+//! [`super::smith`].
+
+use super::ring::{GcdDomain, Ring};
+
+/// A `rows × cols` matrix over the ring object `ring`, row-major.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Matrix<R: Ring> {
+    /// The ring the entries live in.
+    pub ring: R,
+    rows: usize,
+    cols: usize,
+    data: Vec<R::Elem>,
+}
+
+impl<R: Ring> Matrix<R> {
+    /// A matrix from row-major entries (`data.len() == rows * cols`).
+    pub fn new(ring: R, rows: usize, cols: usize, data: Vec<R::Elem>) -> Self {
+        assert_eq!(data.len(), rows * cols, "matrix data has the wrong length");
+        Matrix {
+            ring,
+            rows,
+            cols,
+            data,
+        }
+    }
+
+    /// The zero matrix.
+    pub fn zeros(ring: R, rows: usize, cols: usize) -> Self {
+        let z = ring.zero();
+        Matrix::new(ring, rows, cols, vec![z; rows * cols])
+    }
+
+    /// The identity matrix.
+    pub fn identity(ring: R, n: usize) -> Self {
+        let mut m = Self::zeros(ring, n, n);
+        for i in 0..n {
+            m.data[i * n + i] = m.ring.one();
+        }
+        m
+    }
+
+    /// Number of rows.
+    pub fn rows(&self) -> usize {
+        self.rows
+    }
+
+    /// Number of columns.
+    pub fn cols(&self) -> usize {
+        self.cols
+    }
+
+    /// Entry `(i, j)`.
+    pub fn get(&self, i: usize, j: usize) -> &R::Elem {
+        &self.data[i * self.cols + j]
+    }
+
+    /// Mutable entry `(i, j)`.
+    pub fn get_mut(&mut self, i: usize, j: usize) -> &mut R::Elem {
+        &mut self.data[i * self.cols + j]
+    }
+
+    /// Sets entry `(i, j)`.
+    pub fn set(&mut self, i: usize, j: usize, v: R::Elem) {
+        self.data[i * self.cols + j] = v;
+    }
+
+    /// Row `i` as a slice.
+    pub fn row(&self, i: usize) -> &[R::Elem] {
+        &self.data[i * self.cols..(i + 1) * self.cols]
+    }
+
+    /// The entries, row-major.
+    pub fn entries(&self) -> &[R::Elem] {
+        &self.data
+    }
+
+    /// The same matrix with every entry mapped into another ring.
+    pub fn map<S: Ring>(&self, ring: S, f: impl Fn(&R::Elem) -> S::Elem) -> Matrix<S> {
+        Matrix::new(
+            ring,
+            self.rows,
+            self.cols,
+            self.data.iter().map(f).collect(),
+        )
+    }
+
+    /// The matrix product `self * other`, or `None` if the shapes do not fit.
+    pub fn mul(&self, other: &Matrix<R>) -> Option<Matrix<R>> {
+        if self.cols != other.rows {
+            return None;
+        }
+        let r = &self.ring;
+        let mut out = Matrix::zeros(r.clone(), self.rows, other.cols);
+        for i in 0..self.rows {
+            for k in 0..self.cols {
+                let a = self.get(i, k);
+                if r.is_zero(a) {
+                    continue;
+                }
+                for j in 0..other.cols {
+                    let b = other.get(k, j);
+                    if r.is_zero(b) {
+                        continue;
+                    }
+                    let t = r.mul(a, b);
+                    let e = out.get_mut(i, j);
+                    *e = r.add(e, &t);
+                }
+            }
+        }
+        Some(out)
+    }
+
+    /// The transpose.
+    pub fn transpose(&self) -> Matrix<R> {
+        let mut data = Vec::with_capacity(self.data.len());
+        for j in 0..self.cols {
+            for i in 0..self.rows {
+                data.push(self.get(i, j).clone());
+            }
+        }
+        Matrix::new(self.ring.clone(), self.cols, self.rows, data)
+    }
+
+    /// Whether every off-diagonal entry is zero.
+    pub fn is_diagonal(&self) -> bool {
+        (0..self.rows).all(|i| (0..self.cols).all(|j| i == j || self.ring.is_zero(self.get(i, j))))
+    }
+
+    /// Whether this is the identity matrix.
+    pub fn is_identity(&self) -> bool {
+        self.rows == self.cols
+            && self.is_diagonal()
+            && (0..self.rows).all(|i| {
+                self.ring
+                    .is_zero(&self.ring.sub(self.get(i, i), &self.ring.one()))
+            })
+    }
+
+    /// The diagonal entries.
+    pub fn diagonal(&self) -> Vec<R::Elem> {
+        (0..self.rows.min(self.cols))
+            .map(|i| self.get(i, i).clone())
+            .collect()
+    }
+
+    /// Swaps rows `a` and `b`.
+    pub fn swap_rows(&mut self, a: usize, b: usize) {
+        if a == b {
+            return;
+        }
+        for j in 0..self.cols {
+            self.data.swap(a * self.cols + j, b * self.cols + j);
+        }
+    }
+
+    /// Swaps columns `a` and `b`.
+    pub fn swap_cols(&mut self, a: usize, b: usize) {
+        if a == b {
+            return;
+        }
+        for i in 0..self.rows {
+            self.data.swap(i * self.cols + a, i * self.cols + b);
+        }
+    }
+
+    /// `row[dst] += c * row[src]`.
+    pub fn add_row_multiple(&mut self, dst: usize, src: usize, c: &R::Elem) {
+        if self.ring.is_zero(c) {
+            return;
+        }
+        for j in 0..self.cols {
+            let s = self.get(src, j);
+            if self.ring.is_zero(s) {
+                continue;
+            }
+            let t = self.ring.mul(c, s);
+            let d = self.get(dst, j);
+            let v = self.ring.add(d, &t);
+            self.set(dst, j, v);
+        }
+    }
+
+    /// `col[dst] += c * col[src]`.
+    pub fn add_col_multiple(&mut self, dst: usize, src: usize, c: &R::Elem) {
+        if self.ring.is_zero(c) {
+            return;
+        }
+        for i in 0..self.rows {
+            let s = self.get(i, src);
+            if self.ring.is_zero(s) {
+                continue;
+            }
+            let t = self.ring.mul(c, s);
+            let d = self.get(i, dst);
+            let v = self.ring.add(d, &t);
+            self.set(i, dst, v);
+        }
+    }
+
+    /// `row[i] *= c`.
+    pub fn scale_row(&mut self, i: usize, c: &R::Elem) {
+        for j in 0..self.cols {
+            let v = self.ring.mul(self.get(i, j), c);
+            self.set(i, j, v);
+        }
+    }
+
+    /// `col[j] *= c`.
+    pub fn scale_col(&mut self, j: usize, c: &R::Elem) {
+        for i in 0..self.rows {
+            let v = self.ring.mul(self.get(i, j), c);
+            self.set(i, j, v);
+        }
+    }
+
+    /// The submatrix on the given rows and columns.
+    pub fn submatrix(&self, rows: &[usize], cols: &[usize]) -> Matrix<R> {
+        let mut data = Vec::with_capacity(rows.len() * cols.len());
+        for &i in rows {
+            for &j in cols {
+                data.push(self.get(i, j).clone());
+            }
+        }
+        Matrix::new(self.ring.clone(), rows.len(), cols.len(), data)
+    }
+
+    /// Rows of formatted entries (for reports).
+    pub fn format_rows(&self) -> Vec<Vec<String>> {
+        (0..self.rows)
+            .map(|i| {
+                (0..self.cols)
+                    .map(|j| self.ring.format(self.get(i, j)))
+                    .collect()
+            })
+            .collect()
+    }
+
+    /// Rows of LaTeX entries (for reports).
+    pub fn latex_rows(&self) -> Vec<Vec<String>> {
+        (0..self.rows)
+            .map(|i| {
+                (0..self.cols)
+                    .map(|j| self.ring.latex(self.get(i, j)))
+                    .collect()
+            })
+            .collect()
+    }
+}
+
+impl<R: GcdDomain> Matrix<R> {
+    /// Determinant by fraction-free Gaussian elimination (Bareiss), with
+    /// exact divisions only; `None` for a non-square matrix.
+    pub fn det(&self) -> Option<R::Elem> {
+        if self.rows != self.cols {
+            return None;
+        }
+        let r = &self.ring;
+        let n = self.rows;
+        if n == 0 {
+            return Some(r.one());
+        }
+        let mut m = self.clone();
+        let mut sign_negative = false;
+        let mut prev = r.one();
+        for k in 0..n - 1 {
+            let Some(p) = (k..n).find(|&i| !r.is_zero(m.get(i, k))) else {
+                return Some(r.zero());
+            };
+            if p != k {
+                m.swap_rows(p, k);
+                sign_negative = !sign_negative;
+            }
+            for i in k + 1..n {
+                for j in k + 1..n {
+                    let t = r.sub(
+                        &r.mul(m.get(k, k), m.get(i, j)),
+                        &r.mul(m.get(i, k), m.get(k, j)),
+                    );
+                    let v = r.div_exact(&t, &prev).expect("Bareiss division is exact");
+                    m.set(i, j, v);
+                }
+            }
+            prev = m.get(k, k).clone();
+        }
+        let d = m.get(n - 1, n - 1).clone();
+        Some(if sign_negative { r.neg(&d) } else { d })
+    }
+
+    /// The adjugate (transposed cofactor matrix): `A·adj(A) = det(A)·I`.
+    pub fn adjugate(&self) -> Option<Matrix<R>> {
+        if self.rows != self.cols {
+            return None;
+        }
+        let n = self.rows;
+        let r = &self.ring;
+        let mut out = Matrix::zeros(r.clone(), n, n);
+        if n == 1 {
+            out.set(0, 0, r.one());
+            return Some(out);
+        }
+        for i in 0..n {
+            for j in 0..n {
+                let rows: Vec<usize> = (0..n).filter(|&k| k != i).collect();
+                let cols: Vec<usize> = (0..n).filter(|&k| k != j).collect();
+                let c = self.submatrix(&rows, &cols).det()?;
+                let c = if (i + j) % 2 == 1 { r.neg(&c) } else { c };
+                out.set(j, i, c);
+            }
+        }
+        Some(out)
+    }
+
+    /// Rank over the fraction field (fraction-free elimination).
+    pub fn rank(&self) -> usize {
+        let r = &self.ring;
+        let mut m = self.clone();
+        let mut rank = 0;
+        let mut prev = r.one();
+        for col in 0..self.cols {
+            if rank == self.rows {
+                break;
+            }
+            let Some(p) = (rank..self.rows).find(|&i| !r.is_zero(m.get(i, col))) else {
+                continue;
+            };
+            m.swap_rows(p, rank);
+            for i in rank + 1..self.rows {
+                for j in col + 1..self.cols {
+                    let t = r.sub(
+                        &r.mul(m.get(rank, col), m.get(i, j)),
+                        &r.mul(m.get(i, col), m.get(rank, j)),
+                    );
+                    let v = r.div_exact(&t, &prev).expect("Bareiss division is exact");
+                    m.set(i, j, v);
+                }
+                m.set(i, col, r.zero());
+            }
+            prev = m.get(rank, col).clone();
+            rank += 1;
+        }
+        rank
+    }
+
+    /// All k×k minors (in lexicographic order of row and column subsets).
+    pub fn minors(&self, k: usize) -> Vec<R::Elem> {
+        let rs = subsets(self.rows, k);
+        let cs = subsets(self.cols, k);
+        let mut out = Vec::with_capacity(rs.len() * cs.len());
+        for r in &rs {
+            for c in &cs {
+                out.push(self.submatrix(r, c).det().expect("square"));
+            }
+        }
+        out
+    }
+}
+
+/// All `k`-subsets of `0..n` in lexicographic order.
+pub fn subsets(n: usize, k: usize) -> Vec<Vec<usize>> {
+    fn go(start: usize, n: usize, k: usize, cur: &mut Vec<usize>, out: &mut Vec<Vec<usize>>) {
+        if cur.len() == k {
+            out.push(cur.clone());
+            return;
+        }
+        for i in start..n {
+            if n - i < k - cur.len() {
+                break;
+            }
+            cur.push(i);
+            go(i + 1, n, k, cur, out);
+            cur.pop();
+        }
+    }
+    let mut out = Vec::new();
+    if k <= n {
+        go(0, n, k, &mut Vec::new(), &mut out);
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::algebra::mpoly::MPoly;
+    use crate::algebra::polyring::PolyRing;
+
+    fn seed() -> Matrix<PolyRing> {
+        let names: Vec<String> = ["k1", "k2", "k3", "k4"]
+            .iter()
+            .map(|s| s.to_string())
+            .collect();
+        let ring = PolyRing::new(names);
+        let v: Vec<MPoly> = (0..4).map(|i| MPoly::var(i, 4)).collect();
+        Matrix::new(ring, 2, 2, v)
+    }
+
+    #[test]
+    fn det_and_adjugate_of_the_seed_matrix() {
+        let a = seed();
+        let d = a.det().unwrap();
+        assert_eq!(a.ring.format(&d), "k1*k4 - k2*k3");
+        let adj = a.adjugate().unwrap();
+        let prod = a.mul(&adj).unwrap();
+        let expect = Matrix::new(
+            a.ring.clone(),
+            2,
+            2,
+            vec![d.clone(), MPoly::zero(4), MPoly::zero(4), d],
+        );
+        assert_eq!(prod, expect);
+        assert_eq!(a.rank(), 2);
+    }
+
+    #[test]
+    fn rank_deficient_and_empty() {
+        let a = seed();
+        let r = a.ring.clone();
+        let row: Vec<MPoly> = a.row(0).to_vec();
+        let twice: Vec<MPoly> = row.iter().map(|p| p + p).collect();
+        let m = Matrix::new(r.clone(), 2, 2, [row, twice].concat());
+        assert_eq!(m.rank(), 1);
+        assert!(r.is_zero(&m.det().unwrap()));
+        let e = Matrix::zeros(r.clone(), 0, 0);
+        assert_eq!(e.det(), Some(r.one()));
+        assert_eq!(e.rank(), 0);
+        assert_eq!(subsets(4, 2).len(), 6);
+        assert!(subsets(2, 3).is_empty());
+    }
+}

@@ -1,0 +1,596 @@
+//! Sparse multivariate polynomials over Q in commuting symbols with a fixed
+//! variable order (index 0 is the most significant in the lexicographic
+//! term order). This module owns the representation and the ring
+//! operations (add, mul, pow, exact division, content, substitution,
+//! degrees, printing); gcd lives in [`super::gcd`], and names are only
+//! borrowed for printing.
+
+use super::rational::{Q, fmt_q, primitive_scale};
+use num_traits::{One, Signed, Zero};
+use std::cmp::Ordering;
+use std::collections::BTreeMap;
+use std::ops::{Add, Mul, Neg, Sub};
+
+/// Exponent vector of a monomial (one entry per variable).
+pub type Monomial = Vec<u32>;
+
+/// A polynomial in `nvars` commuting variables with rational coefficients.
+///
+/// Terms are kept sorted by descending lexicographic order of their exponent
+/// vectors, with no zero coefficients, so equal polynomials are equal as
+/// data.
+///
+/// ```
+/// use lambdamat::algebra::mpoly::MPoly;
+/// let x = MPoly::var(0, 2);
+/// let y = MPoly::var(1, 2);
+/// let p = (&x + &y).pow(2) - &x * &y;
+/// assert_eq!(p.to_string_with(&["x", "y"]), "x^2 + x*y + y^2");
+/// ```
+#[derive(Clone, PartialEq, Eq, Hash, Debug)]
+pub struct MPoly {
+    nvars: usize,
+    terms: Vec<(Monomial, Q)>,
+}
+
+impl MPoly {
+    /// The zero polynomial.
+    pub fn zero(nvars: usize) -> Self {
+        MPoly {
+            nvars,
+            terms: Vec::new(),
+        }
+    }
+
+    /// The constant one.
+    pub fn one(nvars: usize) -> Self {
+        Self::constant(Q::one(), nvars)
+    }
+
+    /// The constant `c`.
+    pub fn constant(c: Q, nvars: usize) -> Self {
+        if c.is_zero() {
+            return Self::zero(nvars);
+        }
+        MPoly {
+            nvars,
+            terms: vec![(vec![0; nvars], c)],
+        }
+    }
+
+    /// The variable with index `i`.
+    pub fn var(i: usize, nvars: usize) -> Self {
+        assert!(i < nvars, "variable index out of range");
+        let mut m = vec![0; nvars];
+        m[i] = 1;
+        MPoly {
+            nvars,
+            terms: vec![(m, Q::one())],
+        }
+    }
+
+    /// `c * x^m` for one monomial.
+    pub fn monomial(m: Monomial, c: Q) -> Self {
+        let nvars = m.len();
+        if c.is_zero() {
+            return Self::zero(nvars);
+        }
+        MPoly {
+            nvars,
+            terms: vec![(m, c)],
+        }
+    }
+
+    /// Builds a polynomial from arbitrary terms (merged and sorted).
+    pub fn from_terms(nvars: usize, terms: impl IntoIterator<Item = (Monomial, Q)>) -> Self {
+        let mut map: BTreeMap<Monomial, Q> = BTreeMap::new();
+        for (m, c) in terms {
+            debug_assert_eq!(m.len(), nvars);
+            *map.entry(m).or_insert_with(Q::zero) += c;
+        }
+        MPoly {
+            nvars,
+            terms: map
+                .into_iter()
+                .rev()
+                .filter(|(_, c)| !c.is_zero())
+                .collect(),
+        }
+    }
+
+    /// Number of variables of the ambient ring.
+    pub fn nvars(&self) -> usize {
+        self.nvars
+    }
+
+    /// The terms, in descending lexicographic order.
+    pub fn terms(&self) -> &[(Monomial, Q)] {
+        &self.terms
+    }
+
+    /// Whether this is the zero polynomial.
+    pub fn is_zero(&self) -> bool {
+        self.terms.is_empty()
+    }
+
+    /// The value if the polynomial is constant (zero included).
+    pub fn as_constant(&self) -> Option<Q> {
+        match self.terms.as_slice() {
+            [] => Some(Q::zero()),
+            [(m, c)] if m.iter().all(|&e| e == 0) => Some(c.clone()),
+            _ => None,
+        }
+    }
+
+    /// Whether the polynomial is a nonzero constant.
+    pub fn is_nonzero_constant(&self) -> bool {
+        matches!(self.as_constant(), Some(c) if !c.is_zero())
+    }
+
+    /// Leading term (largest in lex order).
+    pub fn leading(&self) -> Option<&(Monomial, Q)> {
+        self.terms.first()
+    }
+
+    /// Multiplies every coefficient by `c`.
+    pub fn scale(&self, c: &Q) -> Self {
+        if c.is_zero() {
+            return Self::zero(self.nvars);
+        }
+        MPoly {
+            nvars: self.nvars,
+            terms: self.terms.iter().map(|(m, a)| (m.clone(), a * c)).collect(),
+        }
+    }
+
+    /// `self^e` by repeated squaring.
+    pub fn pow(&self, mut e: u32) -> Self {
+        let mut base = self.clone();
+        let mut acc = Self::one(self.nvars);
+        while e > 0 {
+            if e & 1 == 1 {
+                acc = &acc * &base;
+            }
+            e >>= 1;
+            if e > 0 {
+                base = &base * &base;
+            }
+        }
+        acc
+    }
+
+    /// Degree in variable `v` (`None` for zero).
+    pub fn degree_in(&self, v: usize) -> Option<u32> {
+        self.terms.iter().map(|(m, _)| m[v]).max()
+    }
+
+    /// Total degree (`None` for zero).
+    pub fn total_degree(&self) -> Option<u32> {
+        self.terms.iter().map(|(m, _)| m.iter().sum()).max()
+    }
+
+    /// Whether variable `v` occurs.
+    pub fn contains_var(&self, v: usize) -> bool {
+        self.terms.iter().any(|(m, _)| m[v] > 0)
+    }
+
+    /// The most significant variable that occurs, if any.
+    pub fn main_var(&self) -> Option<usize> {
+        (0..self.nvars).find(|&v| self.contains_var(v))
+    }
+
+    /// Coefficients with respect to `v`: `self = Σ_k c_k v^k`; each `c_k`
+    /// is free of `v`. Index `k` of the result is `c_k`.
+    pub fn coeffs_in(&self, v: usize) -> Vec<MPoly> {
+        let Some(d) = self.degree_in(v) else {
+            return Vec::new();
+        };
+        let mut buckets: Vec<Vec<(Monomial, Q)>> = vec![Vec::new(); d as usize + 1];
+        for (m, c) in &self.terms {
+            let mut m2 = m.clone();
+            let k = std::mem::replace(&mut m2[v], 0);
+            buckets[k as usize].push((m2, c.clone()));
+        }
+        buckets
+            .into_iter()
+            .map(|ts| {
+                // Removing one variable's exponent keeps lex order among the
+                // terms of one bucket only when `v` is the first variable, so
+                // re-sort in general.
+                let mut p = MPoly {
+                    nvars: self.nvars,
+                    terms: ts,
+                };
+                p.terms.sort_by(|a, b| b.0.cmp(&a.0));
+                p
+            })
+            .collect()
+    }
+
+    /// The leading coefficient with respect to `v` (free of `v`).
+    pub fn lc_in(&self, v: usize) -> MPoly {
+        self.coeffs_in(v)
+            .pop()
+            .unwrap_or_else(|| Self::zero(self.nvars))
+    }
+
+    /// `Σ_k c_k v^k` from coefficients free of `v`.
+    pub fn from_coeffs_in(v: usize, coeffs: &[MPoly], nvars: usize) -> Self {
+        let mut terms = Vec::new();
+        for (k, c) in coeffs.iter().enumerate() {
+            for (m, a) in &c.terms {
+                let mut m2 = m.clone();
+                m2[v] += k as u32;
+                terms.push((m2, a.clone()));
+            }
+        }
+        Self::from_terms(nvars, terms)
+    }
+
+    /// Multiplies by `v^k`.
+    pub fn shift(&self, v: usize, k: u32) -> Self {
+        MPoly {
+            nvars: self.nvars,
+            terms: self
+                .terms
+                .iter()
+                .map(|(m, c)| {
+                    let mut m2 = m.clone();
+                    m2[v] += k;
+                    (m2, c.clone())
+                })
+                .collect(),
+        }
+    }
+
+    /// Substitutes the value `val` for variable `v`.
+    pub fn eval_var(&self, v: usize, val: &Q) -> Self {
+        let coeffs = self.coeffs_in(v);
+        let mut acc = Self::zero(self.nvars);
+        for c in coeffs.iter().rev() {
+            acc = acc.scale(val) + c;
+        }
+        acc
+    }
+
+    /// Substitutes the polynomial `p` for variable `v`.
+    pub fn substitute(&self, v: usize, p: &MPoly) -> Self {
+        let coeffs = self.coeffs_in(v);
+        let mut acc = Self::zero(self.nvars);
+        for c in coeffs.iter().rev() {
+            acc = &(&acc * p) + c;
+        }
+        acc
+    }
+
+    /// The positive rational `u` such that `u * self` has coprime integer
+    /// coefficients (one for zero).
+    pub fn integer_scale(&self) -> Q {
+        primitive_scale(self.terms.iter().map(|(_, c)| c))
+    }
+
+    /// The associate with coprime integer coefficients and positive leading
+    /// coefficient: the normal form used for gcds and printing.
+    pub fn primitive_normal(&self) -> Self {
+        if self.is_zero() {
+            return self.clone();
+        }
+        let mut u = self.integer_scale();
+        if self.terms[0].1.is_negative() {
+            u = -u;
+        }
+        self.scale(&u)
+    }
+
+    /// Exact division: `Some(q)` with `q * d == self`, or `None` if `d` does
+    /// not divide `self` (or `d` is zero).
+    pub fn div_exact(&self, d: &MPoly) -> Option<MPoly> {
+        let (dm, dc) = d.terms.first()?;
+        if let Some(c) = d.as_constant() {
+            return Some(self.scale(&c.recip()));
+        }
+        let dinv = dc.recip();
+        let mut r = self.clone();
+        let mut quot: Vec<(Monomial, Q)> = Vec::new();
+        while let Some((rm, rc)) = r.terms.first() {
+            if !rm.iter().zip(dm).all(|(a, b)| a >= b) {
+                return None;
+            }
+            let m: Monomial = rm.iter().zip(dm).map(|(a, b)| a - b).collect();
+            let c = rc * &dinv;
+            r = r - MPoly::monomial(m.clone(), c.clone()) * d;
+            quot.push((m, c));
+        }
+        Some(MPoly {
+            nvars: self.nvars,
+            terms: quot,
+        })
+    }
+
+    /// Prints with the given variable names, e.g. `k1*k4 - k2*k3` or
+    /// `x^2 + 1/2*x - 3` (highest term first).
+    pub fn to_string_with<S: AsRef<str>>(&self, names: &[S]) -> String {
+        if self.terms.is_empty() {
+            return "0".into();
+        }
+        let mut out = String::new();
+        for (i, (m, c)) in self.terms.iter().enumerate() {
+            let neg = c.is_negative();
+            let a = c.abs();
+            if i == 0 {
+                if neg {
+                    out.push('-');
+                }
+            } else {
+                out.push_str(if neg { " - " } else { " + " });
+            }
+            let mono = fmt_monomial(m, names);
+            match (mono.is_empty(), a.is_one()) {
+                (true, _) => out.push_str(&fmt_q(&a)),
+                (false, true) => out.push_str(&mono),
+                (false, false) => {
+                    out.push_str(&fmt_q(&a));
+                    out.push('*');
+                    out.push_str(&mono);
+                }
+            }
+        }
+        out
+    }
+}
+
+/// LaTeX name of a symbol: `k1` → `k_{1}`, `lambda` → `\\lambda`.
+pub fn latex_name(name: &str) -> String {
+    const GREEK: [&str; 12] = [
+        "alpha", "beta", "gamma", "delta", "kappa", "lambda", "mu", "nu", "sigma", "tau", "phi",
+        "omega",
+    ];
+    let split = name
+        .find(|c: char| c.is_ascii_digit())
+        .unwrap_or(name.len());
+    let (head, digits) = name.split_at(split);
+    let head = if GREEK.contains(&head) {
+        format!("\\{head}")
+    } else {
+        head.to_string()
+    };
+    if digits.is_empty() || !digits.chars().all(|c| c.is_ascii_digit()) {
+        if digits.is_empty() {
+            head
+        } else {
+            format!("\\mathit{{{name}}}")
+        }
+    } else {
+        format!("{head}_{{{digits}}}")
+    }
+}
+
+impl MPoly {
+    /// LaTeX form with the given variable names, e.g. `k_{1} k_{4} - k_{2} k_{3}`.
+    pub fn to_latex_with<S: AsRef<str>>(&self, names: &[S]) -> String {
+        if self.terms.is_empty() {
+            return "0".into();
+        }
+        let mut out = String::new();
+        for (i, (m, c)) in self.terms.iter().enumerate() {
+            let neg = c.is_negative();
+            if i == 0 {
+                if neg {
+                    out.push('-');
+                }
+            } else {
+                out.push_str(if neg { " - " } else { " + " });
+            }
+            let a = c.abs();
+            let mono: Vec<String> = m
+                .iter()
+                .enumerate()
+                .filter(|(_, e)| **e > 0)
+                .map(|(v, &e)| {
+                    let n = latex_name(names.get(v).map(|s| s.as_ref()).unwrap_or("s"));
+                    if e == 1 { n } else { format!("{n}^{{{e}}}") }
+                })
+                .collect();
+            if mono.is_empty() || !a.is_one() {
+                out.push_str(&super::rational::latex_q(&a));
+                if !mono.is_empty() {
+                    out.push(' ');
+                }
+            }
+            out.push_str(&mono.join(" "));
+        }
+        out
+    }
+}
+
+fn fmt_monomial<S: AsRef<str>>(m: &[u32], names: &[S]) -> String {
+    let mut parts = Vec::new();
+    for (v, &e) in m.iter().enumerate() {
+        let name = names
+            .get(v)
+            .map(|s| s.as_ref().to_string())
+            .unwrap_or_else(|| format!("s{v}"));
+        match e {
+            0 => {}
+            1 => parts.push(name),
+            _ => parts.push(format!("{name}^{e}")),
+        }
+    }
+    parts.join("*")
+}
+
+fn merge(a: &MPoly, b: &MPoly, negate_b: bool) -> MPoly {
+    debug_assert_eq!(a.nvars, b.nvars);
+    let mut terms = Vec::with_capacity(a.terms.len() + b.terms.len());
+    let (mut i, mut j) = (0, 0);
+    while i < a.terms.len() || j < b.terms.len() {
+        let ord = match (a.terms.get(i), b.terms.get(j)) {
+            (Some(x), Some(y)) => y.0.cmp(&x.0),
+            (Some(_), None) => Ordering::Less,
+            _ => Ordering::Greater,
+        };
+        match ord {
+            Ordering::Less => {
+                terms.push(a.terms[i].clone());
+                i += 1;
+            }
+            Ordering::Greater => {
+                let (m, c) = &b.terms[j];
+                terms.push((m.clone(), if negate_b { -c } else { c.clone() }));
+                j += 1;
+            }
+            Ordering::Equal => {
+                let c = if negate_b {
+                    &a.terms[i].1 - &b.terms[j].1
+                } else {
+                    &a.terms[i].1 + &b.terms[j].1
+                };
+                if !c.is_zero() {
+                    terms.push((a.terms[i].0.clone(), c));
+                }
+                i += 1;
+                j += 1;
+            }
+        }
+    }
+    MPoly {
+        nvars: a.nvars,
+        terms,
+    }
+}
+
+fn product(a: &MPoly, b: &MPoly) -> MPoly {
+    debug_assert_eq!(a.nvars, b.nvars);
+    if a.is_zero() || b.is_zero() {
+        return MPoly::zero(a.nvars);
+    }
+    let mut map: BTreeMap<Monomial, Q> = BTreeMap::new();
+    for (ma, ca) in &a.terms {
+        for (mb, cb) in &b.terms {
+            let m: Monomial = ma.iter().zip(mb).map(|(x, y)| x + y).collect();
+            let c = ca * cb;
+            match map.entry(m) {
+                std::collections::btree_map::Entry::Vacant(e) => {
+                    e.insert(c);
+                }
+                std::collections::btree_map::Entry::Occupied(mut e) => {
+                    *e.get_mut() += c;
+                }
+            }
+        }
+    }
+    MPoly {
+        nvars: a.nvars,
+        terms: map
+            .into_iter()
+            .rev()
+            .filter(|(_, c)| !c.is_zero())
+            .collect(),
+    }
+}
+
+macro_rules! forward_binop {
+    ($tr:ident, $method:ident, $body:expr) => {
+        impl $tr<&MPoly> for &MPoly {
+            type Output = MPoly;
+            fn $method(self, rhs: &MPoly) -> MPoly {
+                $body(self, rhs)
+            }
+        }
+        impl $tr<MPoly> for MPoly {
+            type Output = MPoly;
+            fn $method(self, rhs: MPoly) -> MPoly {
+                $body(&self, &rhs)
+            }
+        }
+        impl $tr<&MPoly> for MPoly {
+            type Output = MPoly;
+            fn $method(self, rhs: &MPoly) -> MPoly {
+                $body(&self, rhs)
+            }
+        }
+        impl $tr<MPoly> for &MPoly {
+            type Output = MPoly;
+            fn $method(self, rhs: MPoly) -> MPoly {
+                $body(self, &rhs)
+            }
+        }
+    };
+}
+
+forward_binop!(Add, add, |a, b| merge(a, b, false));
+forward_binop!(Sub, sub, |a, b| merge(a, b, true));
+forward_binop!(Mul, mul, product);
+
+impl Neg for &MPoly {
+    type Output = MPoly;
+    fn neg(self) -> MPoly {
+        MPoly {
+            nvars: self.nvars,
+            terms: self.terms.iter().map(|(m, c)| (m.clone(), -c)).collect(),
+        }
+    }
+}
+
+impl Neg for MPoly {
+    type Output = MPoly;
+    fn neg(self) -> MPoly {
+        -&self
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::algebra::rational::{q, qi};
+
+    fn xy() -> (MPoly, MPoly) {
+        (MPoly::var(0, 2), MPoly::var(1, 2))
+    }
+
+    #[test]
+    fn prints_highest_first_with_rationals() {
+        let x = MPoly::var(0, 1);
+        let p = x.pow(2) + x.scale(&q(1, 2)) - MPoly::constant(qi(3), 1);
+        assert_eq!(p.to_string_with(&["x"]), "x^2 + 1/2*x - 3");
+        assert_eq!((-&x).to_string_with(&["x"]), "-x");
+        assert_eq!(MPoly::zero(1).to_string_with(&["x"]), "0");
+    }
+
+    #[test]
+    fn exact_division_and_its_failure() {
+        let (x, y) = xy();
+        let a = &x + &y;
+        let b = &x - &y;
+        let p = &a * &b;
+        assert_eq!(p.div_exact(&a), Some(b.clone()));
+        assert_eq!(p.div_exact(&(&x + MPoly::one(2))), None);
+        assert_eq!(p.div_exact(&MPoly::zero(2)), None);
+    }
+
+    #[test]
+    fn coefficients_round_trip() {
+        let (x, y) = xy();
+        let p = (&x * &y + &y).pow(3) - &x;
+        for v in 0..2 {
+            let cs = p.coeffs_in(v);
+            assert_eq!(MPoly::from_coeffs_in(v, &cs, 2), p);
+            assert!(cs.iter().all(|c| !c.contains_var(v)));
+        }
+    }
+
+    #[test]
+    fn substitution_and_evaluation() {
+        let (x, y) = xy();
+        let p = &x * &x - &y;
+        assert_eq!(p.substitute(1, &(&x * &x)), MPoly::zero(2));
+        assert_eq!(p.eval_var(0, &qi(2)), MPoly::constant(qi(4), 2) - &y);
+    }
+
+    #[test]
+    fn primitive_normal_is_integer_positive() {
+        let (x, y) = xy();
+        let p = (x.scale(&q(-2, 3)) + y.scale(&q(4, 9))).primitive_normal();
+        assert_eq!(p.to_string_with(&["x", "y"]), "3*x - 2*y");
+    }
+}
