@@ -16,8 +16,6 @@ use super::error::LangError;
 #[derive(Debug)]
 pub struct LangErrors {
     source: NamedSource<String>,
-    name: String,
-    text: String,
     errors: Vec<LangError>,
 }
 
@@ -26,8 +24,6 @@ impl LangErrors {
     pub fn new(filename: &str, text: &str, errors: Vec<LangError>) -> LangErrors {
         LangErrors {
             source: NamedSource::new(filename, text.to_string()),
-            name: filename.to_string(),
-            text: text.to_string(),
             errors,
         }
     }
@@ -49,7 +45,7 @@ impl LangErrors {
 
     /// The 1-based line and column (in characters) where `span` starts.
     pub fn line_col(&self, span: Span) -> (usize, usize) {
-        line_col(&self.text, span.start)
+        line_col(self.source.inner(), span.start)
     }
 
     /// Plain-text rendering of every error (no colours), one block each:
@@ -82,16 +78,19 @@ impl LangErrors {
     }
 
     fn snippet(&self, out: &mut String, span: Span, label: &str) {
-        let (line, col) = line_col(&self.text, span.start);
-        let line_text = self.text.lines().nth(line - 1).unwrap_or("");
+        let text = self.source.inner();
+        let (line, col) = line_col(text, span.start);
+        let line_text = text.lines().nth(line - 1).unwrap_or("");
         let gutter = " ".repeat(line.to_string().len());
         let line_chars = line_text.chars().count();
-        let span_chars = self
-            .text
-            .get(clamp(&self.text, span.start)..clamp(&self.text, span.end))
+        let span_chars = text
+            .get(clamp(text, span.start)..clamp(text, span.end))
             .map_or(1, |s| s.chars().take_while(|c| *c != '\n').count());
         let width = span_chars.min(line_chars.saturating_sub(col - 1)).max(1);
-        out.push_str(&format!("{gutter}--> {}:{line}:{col}\n", self.name));
+        out.push_str(&format!(
+            "{gutter}--> {}:{line}:{col}\n",
+            self.source.name()
+        ));
         out.push_str(&format!("{gutter} |\n"));
         out.push_str(&format!("{line} | {line_text}\n"));
         out.push_str(&format!(
@@ -124,7 +123,7 @@ impl fmt::Display for LangErrors {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self.errors.as_slice() {
             [one] => write!(f, "{}", one.message),
-            many => write!(f, "{} errors in {}", many.len(), self.name),
+            many => write!(f, "{} errors in {}", many.len(), self.source.name()),
         }
     }
 }
@@ -175,7 +174,10 @@ impl Diagnostic for LangError {
     fn labels(&self) -> Option<Box<dyn Iterator<Item = LabeledSpan> + '_>> {
         let primary = LabeledSpan::new_primary_with_span(
             Some(self.label.clone()),
-            (self.span.start, self.span.end.saturating_sub(self.span.start)),
+            (
+                self.span.start,
+                self.span.end.saturating_sub(self.span.start),
+            ),
         );
         let related = self.related.iter().map(|(s, l)| {
             LabeledSpan::new_with_span(Some(l.clone()), (s.start, s.end.saturating_sub(s.start)))

@@ -278,7 +278,11 @@ fn build(pair: Pair<'_, Rule>) -> Result<Built, LangError> {
 fn primary(pair: Pair<'_, Rule>) -> Result<Built, LangError> {
     let span = span_of(&pair);
     match pair.as_rule() {
-        Rule::number => node(ExprKind::Number(parse_number(pair.as_str(), span)?), span, 1),
+        Rule::number => node(
+            ExprKind::Number(parse_number(pair.as_str(), span)?),
+            span,
+            1,
+        ),
         Rule::pi => node(ExprKind::Pi, span, 1),
         Rule::identity => node(ExprKind::Identity, span, 1),
         Rule::name_ref => node(ExprKind::Name(ident(&pair)), span, 1),
@@ -364,7 +368,9 @@ fn check_nesting(src: &str) -> Result<(), LangError> {
                 if depth > MAX_NESTING {
                     return Err(LangError::new(
                         ErrorKind::TooDeep,
-                        format!("brackets are nested too deeply (the limit is {MAX_NESTING} levels)"),
+                        format!(
+                            "brackets are nested too deeply (the limit is {MAX_NESTING} levels)"
+                        ),
                         Span::new(i, i + 1),
                         "too deeply nested",
                     ));
@@ -429,8 +435,7 @@ fn describe_rule(rule: Rule) -> Option<&'static str> {
     })
 }
 
-const STATEMENT: &str =
-    "a statement (`var`, `principal`, `matrix`, `smith`, `check`, `param`, `unknown`, `operator`, `equation`, `solve` or `output`)";
+const STATEMENT: &str = "a statement (`var`, `principal`, `matrix`, `smith`, `check`, `param`, `unknown`, `operator`, `equation`, `solve` or `output`)";
 
 /// What is written at byte `pos`, in words.
 fn found_at(src: &str, pos: usize) -> (String, Option<String>, usize) {
@@ -487,23 +492,21 @@ fn syntax_error(e: &pest::error::Error<Rule>, src: &str) -> LangError {
             }
         }
     }
-    if let Some(att) = e.parse_attempts() {
-        if att.max_position == pos {
-            let tokens: BTreeSet<String> = att
-                .expected_tokens()
-                .into_iter()
-                .map(|t| t.to_string())
-                .filter(|token| {
-                    !token.is_empty()
-                        && token.chars().all(|c| !c.is_alphanumeric() && c != '_')
-                        && !matches!(token.as_str(), "#" | "\n" | " " | "\t" | "\r")
-                        && !token.chars().any(char::is_whitespace)
-                })
-                .map(|token| format!("`{token}`"))
-                .collect();
-            for t in tokens {
-                push(t);
-            }
+    if let Some(att) = e.parse_attempts().filter(|a| a.max_position == pos) {
+        let tokens: BTreeSet<String> = att
+            .expected_tokens()
+            .into_iter()
+            .map(|t| t.to_string())
+            .filter(|token| {
+                !token.is_empty()
+                    && token.chars().all(|c| !c.is_alphanumeric() && c != '_')
+                    && !matches!(token.as_str(), "#" | "\n" | " " | "\t" | "\r")
+                    && !token.chars().any(char::is_whitespace)
+            })
+            .map(|token| format!("`{token}`"))
+            .collect();
+        for t in tokens {
+            push(t);
         }
     }
     // The end of the file is always acceptable between statements; saying
@@ -513,7 +516,10 @@ fn syntax_error(e: &pest::error::Error<Rule>, src: &str) -> LangError {
     }
     let has = |e: &[String], what: &str| e.iter().any(|s| s.starts_with(what));
     let covered: Vec<&str> = [
-        (has(&expected, "an operator"), &["`+`", "`-`", "`*`", "`/`", "`^`"][..]),
+        (
+            has(&expected, "an operator"),
+            &["`+`", "`-`", "`*`", "`/`", "`^`"][..],
+        ),
         (has(&expected, "an expression"), &["`(`", "`-`"][..]),
         (has(&expected, "a term"), &["`(`", "`-`"][..]),
         (true, &["`.`"][..]),
@@ -524,20 +530,22 @@ fn syntax_error(e: &pest::error::Error<Rule>, src: &str) -> LangError {
     .collect();
     expected.retain(|s| !covered.contains(&s.as_str()));
     let (found, keyword, len) = found_at(src, pos);
-    let span = Span::new(pos, pos + len.max(0));
-    if let Some(word) = keyword {
-        if expected.iter().any(|s| s == "a name" || s == "an expression") {
-            return LangError::new(
-                ErrorKind::KeywordAsName,
-                format!("`{word}` is a reserved keyword and cannot be used as a name"),
-                span,
-                "reserved keyword",
-            )
-            .with_help(format!(
-                "choose another name; the reserved words are {}",
-                KEYWORDS.join(", ")
-            ));
-        }
+    let span = Span::new(pos, pos + len);
+    if let Some(word) = keyword.filter(|_| {
+        expected
+            .iter()
+            .any(|s| s == "a name" || s == "an expression")
+    }) {
+        return LangError::new(
+            ErrorKind::KeywordAsName,
+            format!("`{word}` is a reserved keyword and cannot be used as a name"),
+            span,
+            "reserved keyword",
+        )
+        .with_help(format!(
+            "choose another name; the reserved words are {}",
+            KEYWORDS.join(", ")
+        ));
     }
     let what = join_or(&expected);
     LangError::new(
@@ -546,4 +554,63 @@ fn syntax_error(e: &pest::error::Error<Rule>, src: &str) -> LangError {
         span,
         format!("expected {what}"),
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn q(n: i64, d: i64) -> BigRational {
+        BigRational::new(BigInt::from(n), BigInt::from(d))
+    }
+
+    /// Prints a tree fully parenthesised, to check precedence.
+    fn show(e: &Expr) -> String {
+        match &e.kind {
+            ExprKind::Number(v) => v.to_string(),
+            ExprKind::Name(id) => id.name.clone(),
+            ExprKind::Neg(a) => format!("(-{})", show(a)),
+            ExprKind::Binary(op, a, b) => format!("({} {} {})", show(a), op.symbol(), show(b)),
+            other => format!("{other:?}"),
+        }
+    }
+
+    fn entry(src: &str) -> String {
+        let file = parse_file(&format!("matrix A = [{src}]")).expect("parses");
+        match &file.statements[0].kind {
+            Stmt::Matrix { rows, .. } => show(&rows[0].entries[0]),
+            _ => String::new(),
+        }
+    }
+
+    #[test]
+    fn decimals_are_exact() {
+        let s = Span::default();
+        assert_eq!(parse_number("0.25", s).ok(), Some(q(1, 4)));
+        assert_eq!(parse_number("12", s).ok(), Some(q(12, 1)));
+        assert_eq!(parse_number("1.50", s).ok(), Some(q(3, 2)));
+    }
+
+    #[test]
+    fn precedence_and_associativity() {
+        assert_eq!(entry("a + b * c"), "(a + (b * c))");
+        assert_eq!(entry("a - b - c"), "((a - b) - c)");
+        assert_eq!(entry("a / b / c"), "((a / b) / c)");
+        assert_eq!(entry("a ^ b ^ c"), "(a ^ (b ^ c))");
+        assert_eq!(entry("-a ^ 2"), "(-(a ^ 2))");
+        assert_eq!(entry("-a * b"), "((-a) * b)");
+        assert_eq!(entry("a ^ -b"), "(a ^ (-b))");
+        assert_eq!(entry("(a + b) * c"), "((a + b) * c)");
+    }
+
+    #[test]
+    fn spans_cover_the_written_text() {
+        let src = "matrix A = [ (x + 1) * y ]";
+        let file = parse_file(src).expect("parses");
+        let Stmt::Matrix { rows, .. } = &file.statements[0].kind else {
+            panic!("not a matrix")
+        };
+        let e = &rows[0].entries[0];
+        assert_eq!(&src[e.span.start..e.span.end], "(x + 1) * y");
+    }
 }
