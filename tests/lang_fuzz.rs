@@ -9,6 +9,10 @@ const VALID: &[&str] = &[
     "var k1, k2, k3, k4\nprincipal k4\nmatrix A = [k1, k2; k3, k4]\nmatrix U = [1, 0; -k3, k1]\nmatrix D = [1, 0; 0, k1*k4 - k2*k3]\nmatrix V = [1, -k2; 0, 1]\ncheck smith A with U, D, V\n",
     include_str!("data/peers_3x3.lmx"),
     "param nu = 1/4\nparam gamma = (1 - 2*nu)/(2 - 2*nu)\nvar x\nmatrix E = []\nmatrix B = [gamma*x^2, 0.5;]\n",
+    include_str!("../examples/hertz_stick.lmx"),
+    "operator a = int(0..x) dt\noperator b = 2*id - x^2*id + int(x..1) (t - x) dt/3\nunknown p, q\n\
+     equation b*a p - 2*a*q + p = x\nequation -a p + a^2 q - b q = sqrt(x)\n\
+     output S = 1 + 1/3*int(0..1) q(t)*(1 - sqrt(1 - t^2)) dt - int(0..1/2) p(x) dx\n",
 ];
 
 const TOKENS: &[&str] = &[

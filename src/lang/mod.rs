@@ -18,6 +18,7 @@ pub mod lower;
 pub mod parser;
 pub mod scope;
 pub mod validate;
+pub mod validate_system;
 
 pub use crate::system::{Directive, MatrixDef, Program};
 pub use diagnostics::LangErrors;

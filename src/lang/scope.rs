@@ -7,7 +7,7 @@ use std::collections::HashMap;
 
 use num_rational::BigRational;
 
-use super::ast::Span;
+use super::ast::{BinOp, Expr, ExprKind, Span};
 
 /// What a declared name stands for, with its index in the lowered program.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -129,5 +129,34 @@ impl Scope {
     /// The value of parameter `i`, if known.
     pub fn param_value(&self, i: usize) -> Option<&BigRational> {
         self.params.get(i).and_then(|(_, v)| v.as_ref())
+    }
+}
+
+impl Scope {
+    /// Whether `e` is an exact rational constant: numbers and parameters
+    /// combined by `+ - * /` and integer-literal powers. Such expressions
+    /// are folded to one number when lowered.
+    pub fn is_rational_const(&self, e: &Expr) -> bool {
+        match &e.kind {
+            ExprKind::Number(_) => true,
+            ExprKind::Name(id) => matches!(
+                self.get(&id.name),
+                Some(Entry {
+                    sort: Sort::Param(_),
+                    ..
+                })
+            ),
+            ExprKind::Neg(a) => self.is_rational_const(a),
+            ExprKind::Binary(BinOp::Pow, a, b) => {
+                let lit = match &b.kind {
+                    ExprKind::Neg(inner) => inner.as_ref(),
+                    _ => b.as_ref(),
+                };
+                matches!(&lit.kind, ExprKind::Number(q) if q.is_integer())
+                    && self.is_rational_const(a)
+            }
+            ExprKind::Binary(_, a, b) => self.is_rational_const(a) && self.is_rational_const(b),
+            _ => false,
+        }
     }
 }

@@ -47,21 +47,23 @@ pub fn validate(file: &File) -> Result<Validated, Vec<LangError>> {
 
 /// Upper bounds on the size of a polynomial expression.
 #[derive(Clone, Copy, Debug, Default)]
-struct Size {
-    degree: u64,
-    bits: u64,
+pub(super) struct Size {
+    pub(super) degree: u64,
+    pub(super) bits: u64,
 }
 
 /// Where a polynomial expression appears, for the wording of errors.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum PolyCtx {
+pub(super) enum PolyCtx {
     /// A matrix entry.
     Entry,
+    /// The operator product of an equation term.
+    Operator,
 }
 
-struct Validator {
-    scope: Scope,
-    errors: Vec<LangError>,
+pub(super) struct Validator {
+    pub(super) scope: Scope,
+    pub(super) errors: Vec<LangError>,
     /// `processed_params[i]`: parameter `i`'s definition has been evaluated.
     processed_params: Vec<bool>,
 }
@@ -85,7 +87,7 @@ fn bits_of(q: &BigRational) -> u64 {
 }
 
 impl Validator {
-    fn err(&mut self, e: LangError) {
+    pub(super) fn err(&mut self, e: LangError) {
         self.errors.push(e);
     }
 
@@ -107,8 +109,29 @@ impl Validator {
                     }
                 }
                 Stmt::Param { name, .. } => {
+                    self.not_reserved(name, "a parameter");
                     if let Err(first) = self.scope.declare_param(&name.name, name.span) {
                         self.err(duplicate("parameter", name, first));
+                    }
+                }
+                Stmt::Unknown(names) => {
+                    for id in names {
+                        self.not_reserved(id, "an unknown");
+                        if let Err(first) = self.scope.declare_unknown(&id.name, id.span) {
+                            self.err(duplicate("unknown", id, first));
+                        }
+                    }
+                }
+                Stmt::Operator { name, .. } => {
+                    self.not_reserved(name, "an operator");
+                    if let Err(first) = self.scope.declare_symbol(&name.name, name.span) {
+                        self.err(duplicate("operator", name, first));
+                    }
+                }
+                Stmt::Output { name, .. } => {
+                    self.not_reserved(name, "an output");
+                    if let Err(first) = self.scope.declare_output(&name.name, name.span) {
+                        self.err(duplicate("output", name, first));
                     }
                 }
                 _ => {}
@@ -247,12 +270,17 @@ impl Validator {
                         self.matrix_ref(id);
                     }
                 }
-                _ => {}
+                Stmt::Operator { body, .. } => self.operator_body(body),
+                Stmt::Equation { lhs, rhs } => self.equation(lhs, rhs),
+                Stmt::Solve(id) => self.solve_target(id),
+                Stmt::Output { body, .. } => self.output_body(body),
+                Stmt::Var(_) | Stmt::Param { .. } | Stmt::Unknown(_) => {}
             }
         }
+        self.square(file);
     }
 
-    fn symbol_list(&self) -> String {
+    pub(super) fn symbol_list(&self) -> String {
         if self.scope.symbols.is_empty() {
             String::new()
         } else {
@@ -358,7 +386,7 @@ impl Validator {
     }
 
     /// Checks a polynomial expression and bounds its size.
-    fn poly(&mut self, e: &Expr, ctx: PolyCtx) -> Size {
+    pub(super) fn poly(&mut self, e: &Expr, ctx: PolyCtx) -> Size {
         match &e.kind {
             ExprKind::Number(q) => Size {
                 degree: 0,
@@ -376,6 +404,39 @@ impl Validator {
                     degree: 0,
                     bits: self.scope.param_value(i).map_or(1, bits_of),
                 },
+                Some(Entry {
+                    sort: Sort::Unknown(_),
+                    ..
+                }) if ctx == PolyCtx::Operator => {
+                    self.err(
+                        LangError::new(
+                            ErrorKind::NonLinear,
+                            format!(
+                                "the unknown `{}` is used non-linearly: each term applies operators to one unknown, written last",
+                                id.name
+                            ),
+                            id.span,
+                            "unknown used as a factor",
+                        )
+                        .with_help("write e.g. `k1 p + k2 q`"),
+                    );
+                    Size::default()
+                }
+                None if ctx == PolyCtx::Operator && (id.name == "x" || id.name == "t") => {
+                    self.err(
+                        LangError::new(
+                            ErrorKind::BadVariable,
+                            format!(
+                                "`{}` cannot appear in the operator part of an equation",
+                                id.name
+                            ),
+                            id.span,
+                            "a variable, not an operator",
+                        )
+                        .with_help("to multiply by a function of x, define an operator such as `operator m = x*id`"),
+                    );
+                    Size::default()
+                }
                 Some(en) => {
                     self.err(
                         LangError::new(
@@ -394,18 +455,24 @@ impl Validator {
                     Size::default()
                 }
                 None => {
+                    let (what, help) = match ctx {
+                        PolyCtx::Entry => ("symbol", format!("declare it with `var {}`", id.name)),
+                        PolyCtx::Operator => (
+                            "operator",
+                            format!(
+                                "define it with `operator {0} = …` or declare it with `var {0}`",
+                                id.name
+                            ),
+                        ),
+                    };
                     self.err(
                         LangError::new(
                             ErrorKind::Undeclared,
-                            format!("undeclared symbol `{}`", id.name),
+                            format!("undeclared {what} `{}`", id.name),
                             id.span,
                             "not declared",
                         )
-                        .with_help(format!(
-                            "declare it with `var {}`{}",
-                            id.name,
-                            self.symbol_list()
-                        )),
+                        .with_help(format!("{help}{}", self.symbol_list())),
                     );
                     Size::default()
                 }
@@ -515,7 +582,7 @@ impl Validator {
 
     /// Evaluates a constant expression exactly (numbers, parameters defined
     /// so far, + - * /, integer powers), reporting every error.
-    fn constant(&mut self, e: &Expr) -> Option<BigRational> {
+    pub(super) fn constant(&mut self, e: &Expr) -> Option<BigRational> {
         match &e.kind {
             ExprKind::Number(q) => Some(q.clone()),
             ExprKind::Name(id) => match self.scope.get(&id.name) {
@@ -676,11 +743,12 @@ impl PolyCtx {
     fn what(self) -> &'static str {
         match self {
             PolyCtx::Entry => "matrix entries",
+            PolyCtx::Operator => "operator polynomials in equations",
         }
     }
 }
 
-fn division_by_zero(span: Span) -> LangError {
+pub(super) fn division_by_zero(span: Span) -> LangError {
     LangError::new(
         ErrorKind::DivisionByZero,
         "division by zero",

@@ -5,9 +5,16 @@
 //! numerics. Nothing here knows about source text, spans or parsing, and
 //! nothing here does algebra beyond storing [`MPoly`] values.
 //!
-//! * [`program`]: [`Program`], [`MatrixDef`], [`Directive`].
+//! * [`program`]: [`Program`], [`MatrixDef`], [`Directive`], equations,
+//!   parameters and outputs;
+//! * [`operator`]: the operator table (integral terms, multipliers, identity);
+//! * [`expr`]: expression trees in `x` and `t` with `eval`.
 
+pub mod expr;
+pub mod operator;
 pub mod program;
 
 pub use crate::algebra::mpoly::MPoly;
-pub use program::{Directive, MatrixDef, Program};
+pub use expr::{Expr, Func};
+pub use operator::{Limit, OperatorDef, Term};
+pub use program::{Directive, Equation, FunctionalTerm, MatrixDef, Output, Param, Program};
