@@ -164,6 +164,8 @@ fn smul(a: SExpr, b: SExpr) -> SExpr {
         (SExpr::Const(x), SExpr::Const(y)) => SExpr::Const(x * y),
         (SExpr::Const(x), b) if x.is_one() => b,
         (a, SExpr::Const(y)) if y.is_one() => a,
+        (SExpr::Const(x), b) if (-&x).is_one() => sneg(b),
+        (a, SExpr::Const(y)) if (-&y).is_one() => sneg(a),
         (a, b) => SExpr::Mul(Box::new(a), Box::new(b)),
     }
 }
@@ -369,11 +371,8 @@ fn scale_term(t: FunctionalTerm, f: impl Fn(SExpr) -> SExpr) -> FunctionalTerm {
     }
 }
 
-/// An output body as a list of terms.
+/// An output body as a list of terms (every `+`, `-` at the top splits).
 fn output_terms(e: &Expr, scope: &Scope) -> Result<Vec<FunctionalTerm>, LangError> {
-    if !contains_integral(e) {
-        return Ok(vec![FunctionalTerm::Constant(fexpr(e, scope)?)]);
-    }
     Ok(match &e.kind {
         ExprKind::Integral {
             lower,
@@ -410,6 +409,9 @@ fn output_terms(e: &Expr, scope: &Scope) -> Result<Vec<FunctionalTerm>, LangErro
             v.extend(output_terms(b, scope)?.into_iter().map(negate_term));
             v
         }
+        ExprKind::Binary(BinOp::Mul | BinOp::Div, _, _) if !contains_integral(e) => {
+            vec![FunctionalTerm::Constant(fexpr(e, scope)?)]
+        }
         ExprKind::Binary(BinOp::Mul, a, b) => {
             if contains_integral(a) {
                 let g = fexpr(b, scope)?;
@@ -432,6 +434,7 @@ fn output_terms(e: &Expr, scope: &Scope) -> Result<Vec<FunctionalTerm>, LangErro
                 .map(|t| scale_term(t, |c| sdiv(c, g.clone())))
                 .collect()
         }
+        _ if !contains_integral(e) => vec![FunctionalTerm::Constant(fexpr(e, scope)?)],
         _ => return Err(internal(e)),
     })
 }

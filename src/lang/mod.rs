@@ -8,7 +8,8 @@
 //! * [`parser`]: text → spanned [`ast`] (pest + a Pratt parser);
 //! * [`validate`]: every meaning error at once, each with a span;
 //! * [`diagnostics`]: [`LangErrors`], the only place that formats line:column;
-//! * [`lower`]: validated AST → span-free [`Program`].
+//! * [`lower`]: validated AST → span-free [`Program`];
+//! * [`pretty`]: [`Program`] → source text that parses back to it.
 
 pub mod ast;
 pub mod diagnostics;
@@ -16,6 +17,7 @@ pub mod error;
 pub mod keywords;
 pub mod lower;
 pub mod parser;
+pub mod pretty;
 pub mod scope;
 pub mod validate;
 pub mod validate_system;

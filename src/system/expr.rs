@@ -147,8 +147,9 @@ impl Expr {
         }
     }
 
-    /// Binding strength when printed: higher binds tighter.
-    fn prec(&self) -> u8 {
+    /// Binding strength when printed: higher binds tighter (1 for `+ -`,
+    /// 2 for `* /` and fractions, 3 for unary minus, 4 for `^`, 5 for atoms).
+    pub fn prec(&self) -> u8 {
         match self {
             Expr::Add(..) | Expr::Sub(..) => 1,
             Expr::Mul(..) | Expr::Div(..) => 2,
