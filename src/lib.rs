@@ -8,7 +8,9 @@
 //!   place that knows about source positions and names);
 //! * [`algebra`]: exact rationals, polynomials, rational functions, matrices
 //!   over a ring object and the certified Smith normal form (never `f64`);
+//! * [`system`]: the span-free lowered program shared by algebra and numerics;
 //! * [`cli`]: the `lambdamat` command line and its text/LaTeX/JSON reports.
 pub mod algebra;
 pub mod cli;
 pub mod lang;
+pub mod system;

@@ -1,0 +1,53 @@
+//! The reserved words of the language, shared by the parser's error messages,
+//! the validator and the pretty-printer. The grammar's `keyword` rule must
+//! list exactly these; a unit test checks that it does.
+
+/// Every reserved word; none of them can name a symbol, matrix, parameter,
+/// unknown, operator or output.
+pub const KEYWORDS: &[&str] = &[
+    "var",
+    "principal",
+    "matrix",
+    "smith",
+    "check",
+    "with",
+    "param",
+    "unknown",
+    "operator",
+    "equation",
+    "solve",
+    "for",
+    "output",
+    "int",
+    "id",
+    "pi",
+    "sqrt",
+    "ln",
+    "abs",
+    "exp",
+    "dt",
+    "dx",
+];
+
+/// Whether `word` is reserved.
+pub fn is_keyword(word: &str) -> bool {
+    KEYWORDS.contains(&word)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn grammar_reserves_exactly_these_words() {
+        let grammar = include_str!("../../grammar/lambdamat.pest");
+        let start = grammar.find("keyword = @{").expect("keyword rule");
+        let end = start + grammar[start..].find('}').expect("end of rule");
+        let rule = &grammar[start..end];
+        let mut listed: Vec<&str> = rule.split('"').skip(1).step_by(2).collect();
+        listed.sort_unstable();
+        let mut ours = KEYWORDS.to_vec();
+        ours.sort_unstable();
+        assert_eq!(listed, ours);
+    }
+}

@@ -1,0 +1,603 @@
+//! Validated AST → span-free [`Program`]: the only place that maps names to
+//! indices for the algebra and builds the [`MPoly`] entries. It trusts the
+//! validator (every name resolved, every divisor a nonzero constant, every
+//! exponent a small literal) but still never panics: anything unexpected
+//! becomes an internal error. It must not check user errors itself.
+
+use num_rational::BigRational;
+use num_traits::{One, ToPrimitive, Zero};
+
+use super::ast::{BinOp, Expr, ExprKind, File, Ident, IntVar, Sign, Stmt};
+use super::error::{ErrorKind, LangError};
+use super::scope::{Entry, Scope, Sort};
+use super::validate::Validated;
+use super::validate_system::{contains_operator, split_term};
+use crate::algebra::mpoly::MPoly;
+use crate::system::expr::{Expr as SExpr, Func};
+use crate::system::{
+    Directive, Equation, FunctionalTerm, Limit, MatrixDef, OperatorDef, Output, Param, Program,
+    Term,
+};
+
+fn internal(e: &Expr) -> LangError {
+    LangError::new(
+        ErrorKind::WrongSort,
+        "internal error: an expression passed validation but cannot be lowered",
+        e.span,
+        "here",
+    )
+}
+
+fn internal_name(id: &Ident) -> LangError {
+    LangError::new(
+        ErrorKind::WrongSort,
+        format!(
+            "internal error: `{}` passed validation but cannot be resolved",
+            id.name
+        ),
+        id.span,
+        "here",
+    )
+}
+
+/// Builds the program of a validated file.
+pub fn lower(file: &File, v: &Validated) -> Result<Program, LangError> {
+    let scope = &v.scope;
+    let n = scope.symbols.len();
+    let mut program = Program {
+        symbols: scope.symbols.clone(),
+        principal: None,
+        matrices: Vec::new(),
+        directives: Vec::new(),
+        params: scope
+            .params
+            .iter()
+            .map(|(name, v)| Param {
+                name: name.clone(),
+                value: v.clone().unwrap_or_else(BigRational::zero),
+            })
+            .collect(),
+        unknowns: scope.unknowns.clone(),
+        operators: Vec::new(),
+        equations: Vec::new(),
+        outputs: Vec::new(),
+    };
+    let unknown_index = |id: &Ident| match scope.get(&id.name) {
+        Some(Entry {
+            sort: Sort::Unknown(i),
+            ..
+        }) => Ok(i),
+        _ => Err(internal_name(id)),
+    };
+    let matrix_index = |id: &Ident| match scope.get(&id.name) {
+        Some(Entry {
+            sort: Sort::Matrix(i),
+            ..
+        }) => Ok(i),
+        _ => Err(internal_name(id)),
+    };
+    for st in &file.statements {
+        match &st.kind {
+            Stmt::Principal(id) => match scope.get(&id.name) {
+                Some(Entry {
+                    sort: Sort::Symbol(i),
+                    ..
+                }) => program.principal = Some(i),
+                _ => return Err(internal_name(id)),
+            },
+            Stmt::Matrix { name, rows, .. } => {
+                let cols = rows.first().map_or(0, |r| r.entries.len());
+                let mut entries = Vec::with_capacity(rows.len() * cols);
+                for row in rows {
+                    for e in &row.entries {
+                        entries.push(poly(e, scope, n)?);
+                    }
+                }
+                program.matrices.push(MatrixDef {
+                    name: name.name.clone(),
+                    rows: rows.len(),
+                    cols,
+                    entries,
+                });
+            }
+            Stmt::Smith(id) => program.directives.push(Directive::Smith {
+                matrix: matrix_index(id)?,
+            }),
+            Stmt::CheckSmith { a, u, d, v } => program.directives.push(Directive::CheckSmith {
+                matrix: matrix_index(a)?,
+                u: matrix_index(u)?,
+                d: matrix_index(d)?,
+                v: matrix_index(v)?,
+            }),
+            Stmt::Solve(id) => program.directives.push(Directive::Solve {
+                unknown: unknown_index(id)?,
+            }),
+            Stmt::Operator { name, body } => {
+                let symbol = match scope.get(&name.name) {
+                    Some(Entry {
+                        sort: Sort::Symbol(i),
+                        ..
+                    }) => i,
+                    _ => return Err(internal_name(name)),
+                };
+                let terms = operator_terms(body, scope)?
+                    .into_iter()
+                    .map(|(factor, atom)| atom.into_term(factor))
+                    .collect();
+                program.operators.push(OperatorDef { symbol, terms });
+            }
+            Stmt::Equation { lhs, rhs } => {
+                let mut row = vec![MPoly::zero(n); scope.unknowns.len()];
+                for term in lhs {
+                    let (product, unknown) = split_term(term);
+                    let u = unknown.ok_or_else(|| internal(&term.product))?;
+                    let j = unknown_index(u)?;
+                    let mut c = match product {
+                        Some(p) => poly(p, scope, n)?,
+                        None => MPoly::one(n),
+                    };
+                    if term.sign == Sign::Minus {
+                        c = -c;
+                    }
+                    let slot = row.get_mut(j).ok_or_else(|| internal_name(u))?;
+                    *slot = &*slot + &c;
+                }
+                program.equations.push(Equation {
+                    lhs: row,
+                    rhs: fexpr(rhs, scope)?,
+                });
+            }
+            Stmt::Output { name, body } => program.outputs.push(Output {
+                name: name.name.clone(),
+                terms: output_terms(body, scope)?,
+            }),
+            Stmt::Var(_) | Stmt::Param { .. } | Stmt::Unknown(_) => {}
+        }
+    }
+    program.operators.sort_by_key(|o| o.symbol);
+    Ok(program)
+}
+
+/// `a * b`, folding rational constants and factors of one.
+fn smul(a: SExpr, b: SExpr) -> SExpr {
+    match (a, b) {
+        (SExpr::Const(x), SExpr::Const(y)) => SExpr::Const(x * y),
+        (SExpr::Const(x), b) if x.is_one() => b,
+        (a, SExpr::Const(y)) if y.is_one() => a,
+        (SExpr::Const(x), b) if (-&x).is_one() => sneg(b),
+        (a, SExpr::Const(y)) if (-&y).is_one() => sneg(a),
+        (a, b) => SExpr::Mul(Box::new(a), Box::new(b)),
+    }
+}
+
+/// `a / b`, folding rational constants and divisors of one.
+fn sdiv(a: SExpr, b: SExpr) -> SExpr {
+    match (a, b) {
+        (SExpr::Const(x), SExpr::Const(y)) if !y.is_zero() => SExpr::Const(x / y),
+        (a, SExpr::Const(y)) if y.is_one() => a,
+        (a, b) => SExpr::Div(Box::new(a), Box::new(b)),
+    }
+}
+
+/// `-a`, folding rational constants.
+fn sneg(a: SExpr) -> SExpr {
+    match a {
+        SExpr::Const(x) => SExpr::Const(-x),
+        a => SExpr::Neg(Box::new(a)),
+    }
+}
+
+/// A real expression tree, with parameters substituted and rational
+/// subexpressions folded.
+pub(crate) fn fexpr(e: &Expr, scope: &Scope) -> Result<SExpr, LangError> {
+    if scope.is_rational_const(e) {
+        return constant(e, scope)
+            .map(SExpr::Const)
+            .ok_or_else(|| internal(e));
+    }
+    let b = |x: &Expr| fexpr(x, scope).map(Box::new);
+    Ok(match &e.kind {
+        ExprKind::Name(id) if id.name == "x" => SExpr::X,
+        ExprKind::Name(id) if id.name == "t" => SExpr::T,
+        ExprKind::Pi => SExpr::Pi,
+        ExprKind::Neg(a) => SExpr::Neg(b(a)?),
+        ExprKind::Binary(op, x, y) => {
+            let (x, y) = (b(x)?, b(y)?);
+            match op {
+                BinOp::Add => SExpr::Add(x, y),
+                BinOp::Sub => SExpr::Sub(x, y),
+                BinOp::Mul => SExpr::Mul(x, y),
+                BinOp::Div => SExpr::Div(x, y),
+                BinOp::Pow => SExpr::Pow(x, y),
+            }
+        }
+        ExprKind::Call(f, a) => {
+            SExpr::Call(Func::from_name(&f.name).ok_or_else(|| internal(e))?, b(a)?)
+        }
+        _ => return Err(internal(e)),
+    })
+}
+
+/// One operator piece before its factor is folded in.
+enum Atom {
+    Identity,
+    Integral {
+        lower: Limit,
+        upper: Limit,
+        kernel: SExpr,
+    },
+}
+
+impl Atom {
+    fn into_term(self, factor: SExpr) -> Term {
+        match self {
+            Atom::Identity => match factor {
+                SExpr::Const(c) if c.is_one() => Term::Identity,
+                SExpr::Const(c) => Term::Scalar(c),
+                f => Term::Multiply(f),
+            },
+            Atom::Integral {
+                lower,
+                upper,
+                kernel,
+            } => Term::Integral {
+                lower,
+                upper,
+                kernel: smul(factor, kernel),
+            },
+        }
+    }
+}
+
+fn limit(e: &Expr, scope: &Scope) -> Result<Limit, LangError> {
+    match &e.kind {
+        ExprKind::Name(id) if id.name == "x" => Ok(Limit::X),
+        _ => constant(e, scope)
+            .map(Limit::Const)
+            .ok_or_else(|| internal(e)),
+    }
+}
+
+/// An operator body as a list of (factor, piece).
+fn operator_terms(e: &Expr, scope: &Scope) -> Result<Vec<(SExpr, Atom)>, LangError> {
+    let one = || SExpr::Const(BigRational::one());
+    Ok(match &e.kind {
+        ExprKind::Identity => vec![(one(), Atom::Identity)],
+        ExprKind::Integral {
+            lower,
+            upper,
+            integrand,
+            ..
+        } => vec![(
+            one(),
+            Atom::Integral {
+                lower: limit(lower, scope)?,
+                upper: limit(upper, scope)?,
+                kernel: match integrand {
+                    Some(k) => fexpr(k, scope)?,
+                    None => one(),
+                },
+            },
+        )],
+        ExprKind::Neg(a) => operator_terms(a, scope)?
+            .into_iter()
+            .map(|(f, t)| (sneg(f), t))
+            .collect(),
+        ExprKind::Binary(BinOp::Add, a, b) => {
+            let mut v = operator_terms(a, scope)?;
+            v.extend(operator_terms(b, scope)?);
+            v
+        }
+        ExprKind::Binary(BinOp::Sub, a, b) => {
+            let mut v = operator_terms(a, scope)?;
+            v.extend(
+                operator_terms(b, scope)?
+                    .into_iter()
+                    .map(|(f, t)| (sneg(f), t)),
+            );
+            v
+        }
+        ExprKind::Binary(BinOp::Mul, a, b) => {
+            if contains_operator(a) {
+                let g = fexpr(b, scope)?;
+                operator_terms(a, scope)?
+                    .into_iter()
+                    .map(|(f, t)| (smul(f, g.clone()), t))
+                    .collect()
+            } else {
+                let g = fexpr(a, scope)?;
+                operator_terms(b, scope)?
+                    .into_iter()
+                    .map(|(f, t)| (smul(g.clone(), f), t))
+                    .collect()
+            }
+        }
+        ExprKind::Binary(BinOp::Div, a, b) => {
+            let g = fexpr(b, scope)?;
+            operator_terms(a, scope)?
+                .into_iter()
+                .map(|(f, t)| (sdiv(f, g.clone()), t))
+                .collect()
+        }
+        _ => return Err(internal(e)),
+    })
+}
+
+/// Replaces `t` by `x` (output weights are stored in `x`).
+fn t_to_x(e: SExpr) -> SExpr {
+    let b = |x: Box<SExpr>| Box::new(t_to_x(*x));
+    match e {
+        SExpr::T => SExpr::X,
+        SExpr::Neg(a) => SExpr::Neg(b(a)),
+        SExpr::Add(x, y) => SExpr::Add(b(x), b(y)),
+        SExpr::Sub(x, y) => SExpr::Sub(b(x), b(y)),
+        SExpr::Mul(x, y) => SExpr::Mul(b(x), b(y)),
+        SExpr::Div(x, y) => SExpr::Div(b(x), b(y)),
+        SExpr::Pow(x, y) => SExpr::Pow(b(x), b(y)),
+        SExpr::Call(f, a) => SExpr::Call(f, b(a)),
+        other => other,
+    }
+}
+
+fn contains_integral(e: &Expr) -> bool {
+    match &e.kind {
+        ExprKind::Integral { .. } => true,
+        ExprKind::Neg(a) | ExprKind::Call(_, a) => contains_integral(a),
+        ExprKind::Binary(_, a, b) => contains_integral(a) || contains_integral(b),
+        _ => false,
+    }
+}
+
+fn negate_term(t: FunctionalTerm) -> FunctionalTerm {
+    scale_term(t, sneg)
+}
+
+fn scale_term(t: FunctionalTerm, f: impl Fn(SExpr) -> SExpr) -> FunctionalTerm {
+    match t {
+        FunctionalTerm::Constant(c) => FunctionalTerm::Constant(f(c)),
+        FunctionalTerm::Integral {
+            coeff,
+            lower,
+            upper,
+            weight,
+            unknown,
+        } => FunctionalTerm::Integral {
+            coeff: f(coeff),
+            lower,
+            upper,
+            weight,
+            unknown,
+        },
+    }
+}
+
+/// An output body as a list of terms (every `+`, `-` at the top splits).
+fn output_terms(e: &Expr, scope: &Scope) -> Result<Vec<FunctionalTerm>, LangError> {
+    Ok(match &e.kind {
+        ExprKind::Integral {
+            lower,
+            upper,
+            integrand,
+            var,
+            ..
+        } => {
+            let lo = constant(lower, scope).ok_or_else(|| internal(lower))?;
+            let hi = constant(upper, scope).ok_or_else(|| internal(upper))?;
+            let integrand = integrand.as_ref().ok_or_else(|| internal(e))?;
+            weighted(integrand, scope)?
+                .into_iter()
+                .map(|(w, u)| FunctionalTerm::Integral {
+                    coeff: SExpr::Const(BigRational::one()),
+                    lower: lo.clone(),
+                    upper: hi.clone(),
+                    weight: if *var == IntVar::T { t_to_x(w) } else { w },
+                    unknown: u,
+                })
+                .collect()
+        }
+        ExprKind::Neg(a) => output_terms(a, scope)?
+            .into_iter()
+            .map(negate_term)
+            .collect(),
+        ExprKind::Binary(BinOp::Add, a, b) => {
+            let mut v = output_terms(a, scope)?;
+            v.extend(output_terms(b, scope)?);
+            v
+        }
+        ExprKind::Binary(BinOp::Sub, a, b) => {
+            let mut v = output_terms(a, scope)?;
+            v.extend(output_terms(b, scope)?.into_iter().map(negate_term));
+            v
+        }
+        ExprKind::Binary(BinOp::Mul | BinOp::Div, _, _) if !contains_integral(e) => {
+            vec![FunctionalTerm::Constant(fexpr(e, scope)?)]
+        }
+        ExprKind::Binary(BinOp::Mul, a, b) => {
+            if contains_integral(a) {
+                let g = fexpr(b, scope)?;
+                output_terms(a, scope)?
+                    .into_iter()
+                    .map(|t| scale_term(t, |c| smul(c, g.clone())))
+                    .collect()
+            } else {
+                let g = fexpr(a, scope)?;
+                output_terms(b, scope)?
+                    .into_iter()
+                    .map(|t| scale_term(t, |c| smul(g.clone(), c)))
+                    .collect()
+            }
+        }
+        ExprKind::Binary(BinOp::Div, a, b) => {
+            let g = fexpr(b, scope)?;
+            output_terms(a, scope)?
+                .into_iter()
+                .map(|t| scale_term(t, |c| sdiv(c, g.clone())))
+                .collect()
+        }
+        _ if !contains_integral(e) => vec![FunctionalTerm::Constant(fexpr(e, scope)?)],
+        _ => return Err(internal(e)),
+    })
+}
+
+/// An output integrand as a sum of (weight, unknown index).
+fn weighted(e: &Expr, scope: &Scope) -> Result<Vec<(SExpr, usize)>, LangError> {
+    let unknown = |id: &Ident| match scope.get(&id.name) {
+        Some(Entry {
+            sort: Sort::Unknown(i),
+            ..
+        }) => Some(i),
+        _ => None,
+    };
+    let has_unknown = |x: &Expr| mentions_unknown(x, scope);
+    Ok(match &e.kind {
+        ExprKind::Call(f, _) => match unknown(f) {
+            Some(i) => vec![(SExpr::Const(BigRational::one()), i)],
+            None => return Err(internal(e)),
+        },
+        ExprKind::Neg(a) => weighted(a, scope)?
+            .into_iter()
+            .map(|(w, u)| (sneg(w), u))
+            .collect(),
+        ExprKind::Binary(BinOp::Add, a, b) => {
+            let mut v = weighted(a, scope)?;
+            v.extend(weighted(b, scope)?);
+            v
+        }
+        ExprKind::Binary(BinOp::Sub, a, b) => {
+            let mut v = weighted(a, scope)?;
+            v.extend(weighted(b, scope)?.into_iter().map(|(w, u)| (sneg(w), u)));
+            v
+        }
+        ExprKind::Binary(BinOp::Mul, a, b) => {
+            if has_unknown(a) {
+                let g = fexpr(b, scope)?;
+                weighted(a, scope)?
+                    .into_iter()
+                    .map(|(w, u)| (smul(w, g.clone()), u))
+                    .collect()
+            } else {
+                let g = fexpr(a, scope)?;
+                weighted(b, scope)?
+                    .into_iter()
+                    .map(|(w, u)| (smul(g.clone(), w), u))
+                    .collect()
+            }
+        }
+        ExprKind::Binary(BinOp::Div, a, b) => {
+            let g = fexpr(b, scope)?;
+            weighted(a, scope)?
+                .into_iter()
+                .map(|(w, u)| (sdiv(w, g.clone()), u))
+                .collect()
+        }
+        _ => return Err(internal(e)),
+    })
+}
+
+fn mentions_unknown(e: &Expr, scope: &Scope) -> bool {
+    let is_unknown = |name: &str| {
+        matches!(
+            scope.get(name),
+            Some(Entry {
+                sort: Sort::Unknown(_),
+                ..
+            })
+        )
+    };
+    match &e.kind {
+        ExprKind::Name(id) => is_unknown(&id.name),
+        ExprKind::Call(f, a) => is_unknown(&f.name) || mentions_unknown(a, scope),
+        ExprKind::Neg(a) => mentions_unknown(a, scope),
+        ExprKind::Binary(_, a, b) => mentions_unknown(a, scope) || mentions_unknown(b, scope),
+        _ => false,
+    }
+}
+
+/// The polynomial an expression denotes, over the `n` symbols of `scope`.
+pub(crate) fn poly(e: &Expr, scope: &Scope, n: usize) -> Result<MPoly, LangError> {
+    Ok(match &e.kind {
+        ExprKind::Number(q) => MPoly::constant(q.clone(), n),
+        ExprKind::Name(id) => match scope.get(&id.name) {
+            Some(Entry {
+                sort: Sort::Symbol(i),
+                ..
+            }) if i < n => MPoly::var(i, n),
+            Some(Entry {
+                sort: Sort::Param(i),
+                ..
+            }) => MPoly::constant(scope.param_value(i).cloned().ok_or_else(|| internal(e))?, n),
+            _ => return Err(internal(e)),
+        },
+        ExprKind::Neg(a) => -poly(a, scope, n)?,
+        ExprKind::Binary(op, a, b) => match op {
+            BinOp::Add => poly(a, scope, n)? + poly(b, scope, n)?,
+            BinOp::Sub => poly(a, scope, n)? - poly(b, scope, n)?,
+            BinOp::Mul => poly(a, scope, n)? * poly(b, scope, n)?,
+            BinOp::Div => {
+                let c = constant(b, scope).ok_or_else(|| internal(b))?;
+                if c.is_zero() {
+                    return Err(internal(b));
+                }
+                poly(a, scope, n)?.scale(&c.recip())
+            }
+            BinOp::Pow => {
+                let k = match &b.kind {
+                    ExprKind::Number(q) if q.is_integer() => q.to_integer().to_u32(),
+                    _ => None,
+                }
+                .ok_or_else(|| internal(b))?;
+                poly(a, scope, n)?.pow(k)
+            }
+        },
+        _ => return Err(internal(e)),
+    })
+}
+
+/// The exact value of a validated constant expression.
+pub(crate) fn constant(e: &Expr, scope: &Scope) -> Option<BigRational> {
+    match &e.kind {
+        ExprKind::Number(q) => Some(q.clone()),
+        ExprKind::Name(id) => match scope.get(&id.name) {
+            Some(Entry {
+                sort: Sort::Param(i),
+                ..
+            }) => scope.param_value(i).cloned(),
+            _ => None,
+        },
+        ExprKind::Neg(a) => constant(a, scope).map(|q| -q),
+        ExprKind::Binary(op, a, b) => {
+            let x = constant(a, scope)?;
+            match op {
+                BinOp::Add => Some(x + constant(b, scope)?),
+                BinOp::Sub => Some(x - constant(b, scope)?),
+                BinOp::Mul => Some(x * constant(b, scope)?),
+                BinOp::Div => {
+                    let y = constant(b, scope)?;
+                    (!y.is_zero()).then(|| x / y)
+                }
+                BinOp::Pow => {
+                    let (neg, lit) = match &b.kind {
+                        ExprKind::Neg(inner) => (true, inner.as_ref()),
+                        _ => (false, b.as_ref()),
+                    };
+                    let k = match &lit.kind {
+                        ExprKind::Number(q) if q.is_integer() => q.to_integer().to_u32()?,
+                        _ => return None,
+                    };
+                    let mut acc = BigRational::one();
+                    for _ in 0..k {
+                        acc *= &x;
+                    }
+                    if neg {
+                        if acc.is_zero() {
+                            return None;
+                        }
+                        acc = acc.recip();
+                    }
+                    Some(acc)
+                }
+            }
+        }
+        _ => None,
+    }
+}

@@ -1,0 +1,246 @@
+//! Real-valued expression trees in the output variable `x` and the
+//! integration variable `t`: kernels, multipliers, right sides and output
+//! weights. Parameters are already replaced by their exact values and every
+//! rational subexpression is folded into one [`Expr::Const`]. This module owns
+//! the tree, its evaluation at a point and its printing in source syntax; it
+//! must not parse, and compiling trees to closures is the numerics' job.
+
+use std::fmt;
+
+use num_rational::BigRational;
+use num_traits::{Signed, ToPrimitive, Zero};
+
+/// A built-in function of one argument.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Func {
+    /// Square root.
+    Sqrt,
+    /// Natural logarithm.
+    Ln,
+    /// Absolute value.
+    Abs,
+    /// Exponential.
+    Exp,
+}
+
+impl Func {
+    /// The function's name in source.
+    pub fn name(self) -> &'static str {
+        match self {
+            Func::Sqrt => "sqrt",
+            Func::Ln => "ln",
+            Func::Abs => "abs",
+            Func::Exp => "exp",
+        }
+    }
+
+    /// The function with this source name.
+    pub fn from_name(name: &str) -> Option<Func> {
+        Some(match name {
+            "sqrt" => Func::Sqrt,
+            "ln" => Func::Ln,
+            "abs" => Func::Abs,
+            "exp" => Func::Exp,
+            _ => return None,
+        })
+    }
+
+    fn apply(self, v: f64) -> f64 {
+        match self {
+            Func::Sqrt => v.sqrt(),
+            Func::Ln => v.ln(),
+            Func::Abs => v.abs(),
+            Func::Exp => v.exp(),
+        }
+    }
+}
+
+/// A real expression in `x` and `t`.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Expr {
+    /// An exact rational constant.
+    Const(BigRational),
+    /// The output variable `x`.
+    X,
+    /// The integration variable `t`.
+    T,
+    /// π.
+    Pi,
+    /// `-a`
+    Neg(Box<Expr>),
+    /// `a + b`
+    Add(Box<Expr>, Box<Expr>),
+    /// `a - b`
+    Sub(Box<Expr>, Box<Expr>),
+    /// `a * b`
+    Mul(Box<Expr>, Box<Expr>),
+    /// `a / b`
+    Div(Box<Expr>, Box<Expr>),
+    /// `a ^ b` (real power)
+    Pow(Box<Expr>, Box<Expr>),
+    /// `f(a)`
+    Call(Func, Box<Expr>),
+}
+
+impl Expr {
+    /// The value at `x`, `t` (IEEE semantics: may be NaN or infinite where
+    /// the expression is undefined).
+    ///
+    /// ```
+    /// use lambdamat::system::expr::{Expr, Func};
+    /// use num_rational::BigRational;
+    /// // t / sqrt(t^2 - x^2)
+    /// let two = || Box::new(Expr::Const(BigRational::from_integer(2.into())));
+    /// let t2 = Expr::Pow(Box::new(Expr::T), two());
+    /// let x2 = Expr::Pow(Box::new(Expr::X), two());
+    /// let root = Expr::Call(Func::Sqrt, Box::new(Expr::Sub(Box::new(t2), Box::new(x2))));
+    /// let k = Expr::Div(Box::new(Expr::T), Box::new(root));
+    /// assert!((k.eval(0.6, 1.0) - 1.25).abs() < 1e-15);
+    /// assert_eq!(k.to_string(), "t/sqrt(t^2 - x^2)");
+    /// ```
+    pub fn eval(&self, x: f64, t: f64) -> f64 {
+        match self {
+            Expr::Const(q) => q.to_f64().unwrap_or(f64::NAN),
+            Expr::X => x,
+            Expr::T => t,
+            Expr::Pi => std::f64::consts::PI,
+            Expr::Neg(a) => -a.eval(x, t),
+            Expr::Add(a, b) => a.eval(x, t) + b.eval(x, t),
+            Expr::Sub(a, b) => a.eval(x, t) - b.eval(x, t),
+            Expr::Mul(a, b) => a.eval(x, t) * b.eval(x, t),
+            Expr::Div(a, b) => a.eval(x, t) / b.eval(x, t),
+            Expr::Pow(a, b) => pow(a.eval(x, t), b),
+            Expr::Call(f, a) => f.apply(a.eval(x, t)),
+        }
+    }
+
+    /// Whether `x` occurs.
+    pub fn uses_x(&self) -> bool {
+        self.any(&|e| matches!(e, Expr::X))
+    }
+
+    /// Whether `t` occurs.
+    pub fn uses_t(&self) -> bool {
+        self.any(&|e| matches!(e, Expr::T))
+    }
+
+    /// The exact value, if this is a rational constant.
+    pub fn as_const(&self) -> Option<&BigRational> {
+        match self {
+            Expr::Const(q) => Some(q),
+            _ => None,
+        }
+    }
+
+    fn any(&self, p: &dyn Fn(&Expr) -> bool) -> bool {
+        if p(self) {
+            return true;
+        }
+        match self {
+            Expr::Const(_) | Expr::X | Expr::T | Expr::Pi => false,
+            Expr::Neg(a) | Expr::Call(_, a) => a.any(p),
+            Expr::Add(a, b)
+            | Expr::Sub(a, b)
+            | Expr::Mul(a, b)
+            | Expr::Div(a, b)
+            | Expr::Pow(a, b) => a.any(p) || b.any(p),
+        }
+    }
+
+    /// Binding strength when printed: higher binds tighter (1 for `+ -`,
+    /// 2 for `* /` and fractions, 3 for unary minus, 4 for `^`, 5 for atoms).
+    pub fn prec(&self) -> u8 {
+        match self {
+            Expr::Add(..) | Expr::Sub(..) => 1,
+            Expr::Mul(..) | Expr::Div(..) => 2,
+            Expr::Neg(..) => 3,
+            Expr::Pow(..) => 4,
+            Expr::Const(q) if !q.is_integer() || q.is_negative() => 2,
+            _ => 5,
+        }
+    }
+}
+
+/// Real power, with integer exponents done exactly by `powi`.
+fn pow(base: f64, exp: &Expr) -> f64 {
+    if let Expr::Const(q) = exp {
+        if q.is_integer()
+            && let Some(n) = q.to_integer().to_i32()
+        {
+            return base.powi(n);
+        }
+        if let Some(e) = q.to_f64() {
+            return base.powf(e);
+        }
+    }
+    base.powf(exp.eval(f64::NAN, f64::NAN))
+}
+
+/// Writes `e`, parenthesised if it binds looser than `min`.
+fn child(f: &mut fmt::Formatter<'_>, e: &Expr, min: u8) -> fmt::Result {
+    if e.prec() < min {
+        write!(f, "({e})")
+    } else {
+        write!(f, "{e}")
+    }
+}
+
+/// Prints in source syntax, so that parsing the text gives the same tree:
+/// `t/sqrt(t^2 - x^2)`, `-1/2*x`, `(1 - x)^(-1/2)`.
+impl fmt::Display for Expr {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Expr::Const(q) => {
+                if q.is_zero() {
+                    write!(f, "0")
+                } else if q.is_negative() {
+                    // A negative constant prints as `-(…)`, which parses
+                    // back as a negation and folds into the same constant.
+                    let a = -q;
+                    if a.is_integer() {
+                        write!(f, "-{}", a.numer())
+                    } else {
+                        write!(f, "-{}/{}", a.numer(), a.denom())
+                    }
+                } else if q.is_integer() {
+                    write!(f, "{}", q.numer())
+                } else {
+                    write!(f, "{}/{}", q.numer(), q.denom())
+                }
+            }
+            Expr::X => write!(f, "x"),
+            Expr::T => write!(f, "t"),
+            Expr::Pi => write!(f, "pi"),
+            Expr::Neg(a) => {
+                write!(f, "-")?;
+                child(f, a, 4)
+            }
+            Expr::Add(a, b) => {
+                child(f, a, 1)?;
+                write!(f, " + ")?;
+                child(f, b, 2)
+            }
+            Expr::Sub(a, b) => {
+                child(f, a, 1)?;
+                write!(f, " - ")?;
+                child(f, b, 2)
+            }
+            Expr::Mul(a, b) => {
+                child(f, a, 2)?;
+                write!(f, "*")?;
+                child(f, b, 4)
+            }
+            Expr::Div(a, b) => {
+                child(f, a, 2)?;
+                write!(f, "/")?;
+                child(f, b, 5)
+            }
+            Expr::Pow(a, b) => {
+                child(f, a, 5)?;
+                write!(f, "^")?;
+                child(f, b, 5)
+            }
+            Expr::Call(func, a) => write!(f, "{}({a})", func.name()),
+        }
+    }
+}

@@ -1,0 +1,160 @@
+//! The lowered program: symbol table, principal symbol, matrices of
+//! polynomials, parameters, the operator system (unknowns, operator table,
+//! equations as rows of a λ-matrix with right sides, outputs) and
+//! directives, all indexed, all span-free. This file defines data only;
+//! building it is `lang::lower`'s job and printing it back as source is
+//! `lang::pretty`'s.
+
+use num_rational::BigRational;
+
+use super::expr::Expr;
+use super::operator::OperatorDef;
+use crate::algebra::mpoly::MPoly;
+
+/// Everything a file says, ready for the algebra and the numerics.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Program {
+    /// The polynomial symbols in declaration order; an [`MPoly`] in this
+    /// program has `symbols.len()` variables and variable `i` is
+    /// `symbols[i]`.
+    pub symbols: Vec<String>,
+    /// Index into `symbols` of the principal symbol (`principal k4`).
+    pub principal: Option<usize>,
+    /// The matrices, in definition order.
+    pub matrices: Vec<MatrixDef>,
+    /// What the file asks to be done, in source order.
+    pub directives: Vec<Directive>,
+    /// The parameters with their exact values, in definition order (already
+    /// substituted everywhere; kept for reports).
+    pub params: Vec<Param>,
+    /// The unknown functions of x, in declaration order.
+    pub unknowns: Vec<String>,
+    /// Definitions of operator symbols (symbols declared with `var` have
+    /// none: they are purely algebraic).
+    pub operators: Vec<OperatorDef>,
+    /// The equations in source order; equation `i` is row `i` of the
+    /// λ-matrix.
+    pub equations: Vec<Equation>,
+    /// Output functionals, in definition order.
+    pub outputs: Vec<Output>,
+}
+
+impl Program {
+    /// The λ-matrix of the operator system: one row per equation, one
+    /// column per unknown.
+    pub fn lambda_matrix(&self) -> MatrixDef {
+        MatrixDef {
+            name: "A".to_string(),
+            rows: self.equations.len(),
+            cols: self.unknowns.len(),
+            entries: self
+                .equations
+                .iter()
+                .flat_map(|e| e.lhs.iter().cloned())
+                .collect(),
+        }
+    }
+
+    /// The definition of symbol `i`, if it is a defined operator.
+    pub fn operator(&self, symbol: usize) -> Option<&OperatorDef> {
+        self.operators.iter().find(|o| o.symbol == symbol)
+    }
+}
+
+/// A named exact constant.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Param {
+    /// Its name.
+    pub name: String,
+    /// Its value.
+    pub value: BigRational,
+}
+
+/// One equation `Σ_j lhs[j] u_j = rhs`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Equation {
+    /// The operator polynomial applied to each unknown (one per unknown,
+    /// zero where the unknown does not occur).
+    pub lhs: Vec<MPoly>,
+    /// The right side, a function of `x`.
+    pub rhs: Expr,
+}
+
+/// A number computed from the solution: a sum of terms.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Output {
+    /// Its name.
+    pub name: String,
+    /// The terms whose sum is the output.
+    pub terms: Vec<FunctionalTerm>,
+}
+
+/// One term of an output functional.
+#[derive(Clone, Debug, PartialEq)]
+pub enum FunctionalTerm {
+    /// A constant (may involve `pi`; never `x` or `t`).
+    Constant(Expr),
+    /// `coeff · ∫_lower^upper weight(x) u(x) dx`.
+    Integral {
+        /// A constant factor (never `x` or `t`).
+        coeff: Expr,
+        /// Lower limit.
+        lower: BigRational,
+        /// Upper limit.
+        upper: BigRational,
+        /// The weight, a function of the integration variable, written `x`.
+        weight: Expr,
+        /// Index into `Program::unknowns`.
+        unknown: usize,
+    },
+}
+
+/// A named matrix of polynomials.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MatrixDef {
+    /// Its name.
+    pub name: String,
+    /// Number of rows.
+    pub rows: usize,
+    /// Number of columns.
+    pub cols: usize,
+    /// `rows * cols` entries, row-major.
+    pub entries: Vec<MPoly>,
+}
+
+impl MatrixDef {
+    /// The entry in row `i`, column `j` (0-based), if inside the matrix.
+    pub fn get(&self, i: usize, j: usize) -> Option<&MPoly> {
+        if i < self.rows && j < self.cols {
+            self.entries.get(i * self.cols + j)
+        } else {
+            None
+        }
+    }
+}
+
+/// A request made by the file.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Directive {
+    /// `smith A`: the Smith form of `matrices[matrix]`.
+    Smith {
+        /// Index into `Program::matrices`.
+        matrix: usize,
+    },
+    /// `check smith A with U, D, V`: check a user-supplied decomposition.
+    CheckSmith {
+        /// The matrix A.
+        matrix: usize,
+        /// The left transform U.
+        u: usize,
+        /// The claimed diagonal form D.
+        d: usize,
+        /// The right transform V.
+        v: usize,
+    },
+    /// `solve for p`: eliminate for and solve for this unknown.
+    Solve {
+        /// Index into `Program::unknowns`.
+        unknown: usize,
+    },
+}
