@@ -181,7 +181,12 @@ pub fn certify<R: GcdDomain>(
     c
 }
 
-fn unimodular<R: GcdDomain>(m: &Matrix<R>, ev: Unimodular<'_, R>, left: bool) -> (bool, String) {
+fn unimodular<R: GcdDomain>(
+    name: &str,
+    m: &Matrix<R>,
+    ev: Unimodular<'_, R>,
+    left: bool,
+) -> (bool, String) {
     let r = &m.ring;
     match ev {
         Unimodular::Inverse(inv) => {
@@ -189,19 +194,23 @@ fn unimodular<R: GcdDomain>(m: &Matrix<R>, ev: Unimodular<'_, R>, left: bool) ->
             match p {
                 Some(p) if p.is_identity() => (
                     true,
-                    "its inverse is polynomial (product with the recorded inverse is I), so det is a unit"
-                        .to_string(),
+                    format!(
+                        "{name}·{name}⁻¹ = I for a polynomial {name}⁻¹, so det {name} is a unit"
+                    ),
                 ),
-                _ => (false, "product with the recorded inverse is not I".to_string()),
+                _ => (false, format!("{name} times the recorded inverse is not I")),
             }
         }
         Unimodular::Determinant => {
             let d = m.det().expect("square");
             let s = r.format(&d);
             if r.is_unit(&d) {
-                (true, format!("det = {s}, a unit of {}", r.name()))
+                (true, format!("det {name} = {s}, a unit of {}", r.name()))
             } else {
-                (false, format!("det = {s} is not a unit of {}", r.name()))
+                (
+                    false,
+                    format!("det {name} = {s} is not a unit of {}", r.name()),
+                )
             }
         }
     }
