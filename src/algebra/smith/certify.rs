@@ -115,7 +115,7 @@ pub fn certify<R: GcdDomain>(
         },
     );
     for (name, mat, ev, left) in [("U", u, u_evidence, true), ("V", v, v_evidence, false)] {
-        let (ok, detail) = unimodular(mat, ev, left);
+        let (ok, detail) = unimodular(name, mat, ev, left);
         c.push(
             format!("{name} unimodular"),
             ok,
