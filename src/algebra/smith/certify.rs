@@ -116,11 +116,7 @@ pub fn certify<R: GcdDomain>(
     );
     for (name, mat, ev, left) in [("U", u, u_evidence, true), ("V", v, v_evidence, false)] {
         let (ok, detail) = unimodular(name, mat, ev, left);
-        c.push(
-            format!("{name} unimodular"),
-            ok,
-            format!("{name}: {detail}"),
-        );
+        c.push(format!("{name} unimodular"), ok, detail);
     }
     if !diag_ok {
         return c;
