@@ -58,8 +58,11 @@ fn permuted<R: Ring>(a: &Matrix<R>, rot_r: usize, rot_c: usize) -> Matrix<R> {
     a.submatrix(&rows, &cols)
 }
 
+/// An elementary operation: `row i += c·row j` (or a swap when `i == j`).
+type ElemOp = (usize, usize, Vec<(i64, i64)>);
+
 /// A random unimodular n×n matrix: a product of elementary operations.
-fn unimodular(n: usize, ops: &[(usize, usize, Vec<(i64, i64)>)]) -> Matrix<QxRing> {
+fn unimodular(n: usize, ops: &[ElemOp]) -> Matrix<QxRing> {
     let r = QxRing::new("x");
     let mut m = Matrix::identity(r, n);
     for (i, j, c) in ops {
