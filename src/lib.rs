@@ -12,3 +12,4 @@
 pub mod algebra;
 pub mod cli;
 pub mod lang;
+pub mod numeric;
