@@ -11,12 +11,15 @@
 //! * [`assemble`]: collocation matrices of operators;
 //! * [`solve`]: dense solves that refuse singular or ill-conditioned
 //!   systems;
+//! * [`elimination`]: coupled, ordered and commutative solves of 2×2
+//!   systems, operator products and commutator defects;
 //! * [`error`]: the layer's error enum.
 //!
 //! Problem-specific code (the Hertz problem, solvers for systems from the
 //! language) builds on this layer and must not copy its quadrature.
 pub mod assemble;
 pub mod basis;
+pub mod elimination;
 pub mod error;
 pub mod gamma;
 pub mod gauss;
