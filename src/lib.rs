@@ -11,5 +11,6 @@
 //! * [`cli`]: the `lambdamat` command line and its text/LaTeX/JSON reports.
 pub mod algebra;
 pub mod cli;
+pub mod hertz;
 pub mod lang;
 pub mod numeric;

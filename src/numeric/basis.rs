@@ -21,7 +21,7 @@ pub struct Factor {
 impl Factor {
     /// Value `|t - at|^exponent`.
     pub fn eval(&self, t: f64) -> f64 {
-        (t - self.at).abs().powf(self.exponent)
+        super::product::pow_fast((t - self.at).abs(), self.exponent)
     }
 }
 

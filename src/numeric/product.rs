@@ -47,6 +47,18 @@ impl RuleCache {
     }
 }
 
+/// `d^e` with the square-root exponents of Abel kernels done by `sqrt`.
+#[inline]
+pub fn pow_fast(d: f64, e: f64) -> f64 {
+    if e == -0.5 {
+        1.0 / d.sqrt()
+    } else if e == 0.5 {
+        d.sqrt()
+    } else {
+        d.powf(e)
+    }
+}
+
 fn same_point(z: f64, e: f64) -> bool {
     (z - e).abs() <= 4.0 * f64::EPSILON * e.abs().max(1.0)
 }
@@ -151,7 +163,7 @@ pub fn composite_rule(
                 } else {
                     (f.at - b) + half * (1.0 - s)
                 };
-                v *= dist.powf(f.exponent);
+                v *= pow_fast(dist, f.exponent);
             }
             t_out.push(t);
             w_out.push(v);

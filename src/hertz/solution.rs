@@ -1,0 +1,230 @@
+//! The result of a Hertz solve and everything computed from it: `p`, `q`,
+//! `μp` and the slip `u` at any point, the stick and slip checks, and the
+//! serialisable summary. Owns evaluation of a finished discretisation; it
+//! must not iterate on `μ` or `c`.
+use std::f64::consts::{FRAC_2_PI, PI};
+
+use nalgebra::DVector;
+use serde::Serialize;
+
+use super::error::HertzError;
+use super::operators::{kappa3, kappa4};
+use crate::numeric::{Assembler, Mesh, Operator, PanelBasis};
+
+/// `p`, `q`, `μp` and `u` at one point.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Sample {
+    /// Radius.
+    pub x: f64,
+    /// Normal stress.
+    pub p: f64,
+    /// Shear stress.
+    pub q: f64,
+    /// `μ p`.
+    pub mu_p: f64,
+    /// Slip (zero in the stick zone).
+    pub u: f64,
+}
+
+/// The discrete fields of a solution (not serialised).
+#[derive(Debug, Clone)]
+pub struct Fields {
+    /// Basis of `p` (weighted by `(1-t)^{-α}`).
+    pub p_basis: PanelBasis,
+    /// Coefficients of `p`.
+    pub p: DVector<f64>,
+    /// Basis of the stick shear on `[0,c]` (`None` without a stick zone).
+    pub q_basis: Option<PanelBasis>,
+    /// Coefficients of the stick shear.
+    pub q: DVector<f64>,
+    /// E2's residual `r = -(κ3 p + κ4 q)` on the slip zone, interpolated.
+    pub r_basis: Option<PanelBasis>,
+    /// Coefficients of `r`.
+    pub r: DVector<f64>,
+}
+
+/// A solved Hertz problem with its checks and error estimate.
+#[derive(Debug, Clone, Serialize)]
+pub struct HertzSolution {
+    /// Poisson's ratio.
+    pub nu: f64,
+    /// `γ = (1-2ν)/(2-2ν)`.
+    pub gamma: f64,
+    /// Friction coefficient.
+    pub mu: f64,
+    /// Stick radius (0: no stick zone; 1: full stick).
+    pub c: f64,
+    /// Edge exponent `α = arccot(γμ)/π` factored out of `p`.
+    pub alpha: f64,
+    /// `P* = (π/2) ∫ x p dx`.
+    pub compliance: f64,
+    /// `P* = 1 + γ ∫ q (1 - √(1-t²)) dt`.
+    pub compliance_via_shear: f64,
+    /// `compliance - compliance_via_shear`.
+    pub compliance_difference: f64,
+    /// Largest change of `μ` (or `c`), `P*` and `P*` via shear between the
+    /// last two discretisations: a conservative estimate of the error.
+    pub error_estimate: f64,
+    /// Whether `error_estimate ≤ tol` was reached.
+    pub converged: bool,
+    /// The requested tolerance.
+    pub tol: f64,
+    /// `q < μp` on the sampled stick zone.
+    pub stick_ok: bool,
+    /// `u < 0` on the sampled slip zone.
+    pub slip_ok: bool,
+    /// `R(c)` of the final discretisation (bounded-shear condition).
+    pub residual_c: f64,
+    /// Number of unknowns of the final discretisation.
+    pub unknowns: usize,
+    /// Number of discretisation levels used.
+    pub levels: usize,
+    /// Condition estimate of the final block system.
+    pub condition: f64,
+    /// The discrete fields.
+    #[serde(skip)]
+    pub fields: Fields,
+}
+
+impl Fields {
+    /// Builds the fields and interpolates E2's residual on the slip zone.
+    pub fn new(
+        gamma: f64,
+        mu: f64,
+        c: f64,
+        p_basis: PanelBasis,
+        p: DVector<f64>,
+        q_basis: Option<PanelBasis>,
+        q: DVector<f64>,
+    ) -> Result<Fields, HertzError> {
+        let mut f = Fields {
+            p_basis,
+            p,
+            q_basis,
+            q,
+            r_basis: None,
+            r: DVector::zeros(0),
+        };
+        if c > 0.0 && c < 1.0 && mu > 0.0 {
+            // Slip panels of the p mesh, unweighted.
+            let panels: Vec<_> = f.p_basis.panels.iter().filter(|p| p.a >= c).collect();
+            let mut breaks = vec![c];
+            breaks.extend(panels.iter().map(|p| p.b));
+            let counts: Vec<usize> = panels.iter().map(|p| p.nodes.len()).collect();
+            let rb = PanelBasis::new(&Mesh::from_breaks(breaks)?, &counts, vec![])?;
+            let xs = rb.nodes();
+            let asm = Assembler::new(&f.p_basis)?;
+            let a3 = asm.matrix(&kappa3(gamma), &xs)?;
+            let a4 = asm.matrix_on(&kappa4(), &xs, (c, 1.0))?;
+            // κ4 of the stick shear vanishes for x > c (support [0,c]).
+            f.r = -(a3 * &f.p + a4 * &f.p * mu);
+            f.r_basis = Some(rb);
+        }
+        Ok(f)
+    }
+}
+
+impl HertzSolution {
+    /// Normal stress `p(x)` (`x ∈ [0,1)`).
+    pub fn p(&self, x: f64) -> f64 {
+        self.fields.p_basis.eval(self.fields.p.as_slice(), x)
+    }
+
+    /// Shear stress `q(x)`: the stick solution on `[0,c)`, `μp` on `[c,1)`.
+    pub fn q(&self, x: f64) -> f64 {
+        match &self.fields.q_basis {
+            Some(b) if x < self.c => b.eval(self.fields.q.as_slice(), x),
+            _ if x >= self.c => self.mu * self.p(x),
+            _ => 0.0,
+        }
+    }
+
+    /// Slip `u(x) = (2/(πx)) ∫_c^x s r(s)/√(x²-s²) ds` on `(c,1]` with `r`
+    /// the residual of E2; zero in the stick zone.
+    pub fn u(&self, x: f64) -> Result<f64, HertzError> {
+        let Some(rb) = &self.fields.r_basis else {
+            return Ok(0.0);
+        };
+        if x <= self.c {
+            return Ok(0.0);
+        }
+        let op = Operator::abel_lower(self.c, |_x, s| s);
+        let asm = Assembler::new(rb)?;
+        let mut row = vec![0.0; rb.dim()];
+        asm.row_into(&op, x.min(1.0), rb.support(), &mut row)?;
+        let v: f64 = row
+            .iter()
+            .zip(self.fields.r.iter())
+            .map(|(a, b)| a * b)
+            .sum();
+        Ok(FRAC_2_PI / x * v)
+    }
+
+    /// `p, q, μp, u` at the points `xs` (each in `[0, 1)`).
+    pub fn sample(&self, xs: &[f64]) -> Result<Vec<Sample>, HertzError> {
+        let mut out = Vec::with_capacity(xs.len());
+        let u_asm = match &self.fields.r_basis {
+            Some(rb) => Some((rb, Assembler::new(rb)?)),
+            None => None,
+        };
+        let op = Operator::abel_lower(self.c, |_x, s| s);
+        for &x in xs {
+            if !(0.0..1.0).contains(&x) {
+                return Err(HertzError::InvalidParameter(format!(
+                    "sample point {x} not in [0,1)"
+                )));
+            }
+            let p = self.p(x);
+            let u = match &u_asm {
+                Some((rb, asm)) if x > self.c => {
+                    let mut row = vec![0.0; rb.dim()];
+                    asm.row_into(&op, x, rb.support(), &mut row)?;
+                    FRAC_2_PI / x
+                        * row
+                            .iter()
+                            .zip(self.fields.r.iter())
+                            .map(|(a, b)| a * b)
+                            .sum::<f64>()
+                }
+                _ => 0.0,
+            };
+            out.push(Sample {
+                x,
+                p,
+                q: self.q(x),
+                mu_p: self.mu * p,
+                u,
+            });
+        }
+        Ok(out)
+    }
+
+    /// [`HertzSolution::sample`] on `n` equal steps of `[0,1)` plus points
+    /// clustered toward `c` from both sides and toward 1, sorted.
+    pub fn profile(&self, n: usize) -> Result<Vec<Sample>, HertzError> {
+        self.sample(&profile_points(self.c, n))
+    }
+}
+
+/// `n` equal steps of `[0,1)` plus points geometrically clustered toward
+/// `c` (both sides, when `0 < c < 1`) and toward 1, sorted.
+pub fn profile_points(c: f64, n: usize) -> Vec<f64> {
+    let mut xs: Vec<f64> = (0..n.max(2)).map(|i| i as f64 / n.max(2) as f64).collect();
+    for k in 1..=8i32 {
+        let d = 10f64.powi(-k / 2 - 1) * if k % 2 == 0 { 1.0 } else { 0.3 };
+        xs.push(1.0 - d);
+        if c > 0.0 && c < 1.0 {
+            xs.push(c - d * c);
+            xs.push(c + d * (1.0 - c));
+        }
+    }
+    xs.retain(|x| (0.0..1.0).contains(x));
+    xs.sort_by(|a, b| a.total_cmp(b));
+    xs.dedup();
+    xs
+}
+
+/// The exact frictionless pressure `(2/π)/√(1-x²)`.
+pub fn frictionless_pressure(x: f64) -> f64 {
+    2.0 / PI / (1.0 - x * x).sqrt()
+}

@@ -1,0 +1,380 @@
+//! The public Hertz solvers: given `(ν, c)` find `μ`, given `(ν, μ)` find
+//! `c`, and the frictionless case. Each runs a ladder of discretisations
+//! ([`Resolution::level`]); on the first it brackets the free-boundary
+//! residual `R` and applies Brent's method, on each further level it
+//! starts a secant iteration from the previous root, and it stops when two
+//! successive levels agree to `tol` in the free parameter and in both
+//! compliance formulas. Owns this control logic; the discretisation is in
+//! `system.rs`, evaluation and checks in `solution.rs`.
+use std::f64::consts::FRAC_PI_2;
+
+use nalgebra::DVector;
+use serde::Serialize;
+
+use super::error::HertzError;
+use super::operators::{edge_exponent, gamma_of_nu, kappa1};
+use super::roots::{bracket, brent, secant};
+use super::solution::{Fields, HertzSolution, profile_points};
+use super::system::{Discrete, Frame, Resolution};
+use crate::numeric::solve::{CheckedLu, DEFAULT_MAX_COND};
+use crate::numeric::{Assembler, Factor, Mesh, PanelBasis};
+
+/// Accuracy controls.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct HertzOptions {
+    /// Stop when successive levels agree to `tol` (absolute).
+    pub tol: f64,
+    /// Highest level of [`Resolution::level`] tried.
+    pub max_level: usize,
+}
+
+impl Default for HertzOptions {
+    fn default() -> HertzOptions {
+        HertzOptions {
+            tol: 1e-10,
+            max_level: 8,
+        }
+    }
+}
+
+struct Level {
+    param: f64,
+    pstar: f64,
+    pstar_shear: f64,
+}
+
+impl Level {
+    fn distance(&self, other: &Level) -> f64 {
+        (self.param - other.param)
+            .abs()
+            .max((self.pstar - other.pstar).abs())
+            .max((self.pstar_shear - other.pstar_shear).abs())
+    }
+}
+
+fn check_nu(nu: f64) -> Result<f64, HertzError> {
+    if !(0.0..=0.5).contains(&nu) {
+        return Err(HertzError::InvalidParameter(format!(
+            "Poisson's ratio ν = {nu} not in [0, 1/2]"
+        )));
+    }
+    Ok(gamma_of_nu(nu))
+}
+
+fn check_opts(o: &HertzOptions) -> Result<(), HertzError> {
+    if !(o.tol > 0.0 && o.tol.is_finite()) {
+        return Err(HertzError::InvalidParameter(format!(
+            "tolerance {} must be positive",
+            o.tol
+        )));
+    }
+    Ok(())
+}
+
+/// `1 - √(1-t²)` without cancellation.
+fn shear_weight(t: f64) -> f64 {
+    t * t / (1.0 + (1.0 - t * t).max(0.0).sqrt())
+}
+
+/// Both compliance formulas for a discrete solution.
+fn compliances(
+    gamma: f64,
+    mu: f64,
+    c: f64,
+    frame: &Frame,
+    d: &Discrete,
+) -> Result<(f64, f64), HertzError> {
+    let asm = Assembler::new(&d.p_basis)?;
+    let pstar = FRAC_PI_2 * DVector::from_vec(asm.functional(|t| t, 0.0, 1.0)?).dot(&d.p);
+    let slip = DVector::from_vec(asm.functional(shear_weight, c, 1.0)?).dot(&d.p) * mu;
+    let qa = Assembler::new(&frame.q_basis)?;
+    let stick = DVector::from_vec(qa.functional(shear_weight, 0.0, c)?).dot(&d.q);
+    Ok((pstar, 1.0 + gamma * (stick + slip)))
+}
+
+/// Solves for the friction coefficient `μ` that makes `c` the stick radius
+/// at Poisson's ratio `ν`, then `p`, `q`, `u`, `P*` and the checks.
+///
+/// ```no_run
+/// use lambdamat::hertz::{solve_given_c, HertzOptions};
+/// let s = solve_given_c(0.0, 0.5, &HertzOptions::default()).unwrap();
+/// assert!((s.mu - 0.2986).abs() < 1e-3);
+/// ```
+pub fn solve_given_c(nu: f64, c: f64, opts: &HertzOptions) -> Result<HertzSolution, HertzError> {
+    let gamma = check_nu(nu)?;
+    check_opts(opts)?;
+    if !(c > 0.0 && c < 1.0) {
+        return Err(HertzError::InvalidParameter(format!(
+            "stick radius c = {c} not in (0,1)"
+        )));
+    }
+    if gamma == 0.0 {
+        return Err(HertzError::InvalidParameter(
+            "ν = 1/2 decouples normal and shear stress: the stick zone is the whole contact (c = 1) for every μ".into(),
+        ));
+    }
+    let mut levels: Vec<Level> = Vec::new();
+    for k in 0..=opts.max_level {
+        let frame = Frame::new(gamma, c, &Resolution::level(k))?;
+        let mut evals: Vec<(f64, Discrete)> = Vec::new();
+        let mut f = |mu: f64| -> Result<f64, HertzError> {
+            let d = frame.solve(mu)?;
+            let r = d.residual_c;
+            evals.push((mu, d));
+            Ok(r)
+        };
+        let mu = find_root(&mut f, &levels, (0.1, 0.4), (0.0, 1e4), opts.tol)?;
+        let d = match evals.into_iter().rev().find(|e| e.0 == mu) {
+            Some(e) => e.1,
+            None => frame.solve(mu)?,
+        };
+        let (pstar, pstar_shear) = compliances(gamma, mu, c, &frame, &d)?;
+        let this = Level {
+            param: mu,
+            pstar,
+            pstar_shear,
+        };
+        let est = levels.last().map(|l| this.distance(l));
+        levels.push(this);
+        let converged = est.is_some_and(|e| e <= opts.tol);
+        if converged || k == opts.max_level {
+            return finish(
+                nu,
+                gamma,
+                c,
+                &frame,
+                d,
+                &levels,
+                est.unwrap_or(f64::INFINITY),
+                converged,
+                opts.tol,
+            );
+        }
+    }
+    Err(HertzError::NoConvergence("empty level ladder".into()))
+}
+
+/// Solves for the stick radius `c` at friction `μ` and Poisson's ratio `ν`,
+/// then `p`, `q`, `u`, `P*` and the checks. `μ = 0` is the frictionless
+/// punch (no stick zone, `c = 0`); `ν = 1/2` decouples the stresses (full
+/// stick, `c = 1`, `q = 0`).
+pub fn solve_given_mu(nu: f64, mu: f64, opts: &HertzOptions) -> Result<HertzSolution, HertzError> {
+    let gamma = check_nu(nu)?;
+    check_opts(opts)?;
+    if !(mu >= 0.0 && mu.is_finite()) {
+        return Err(HertzError::InvalidParameter(format!(
+            "friction μ = {mu} must be finite and ≥ 0"
+        )));
+    }
+    if mu == 0.0 {
+        return solve_frictionless(nu, mu, 0.0, opts);
+    }
+    if gamma == 0.0 {
+        return solve_frictionless(nu, mu, 1.0, opts);
+    }
+    let mut levels: Vec<Level> = Vec::new();
+    for k in 0..=opts.max_level {
+        let res = Resolution::level(k);
+        let mut evals: Vec<(f64, Frame, Discrete)> = Vec::new();
+        let mut f = |c: f64| -> Result<f64, HertzError> {
+            let frame = Frame::new(gamma, c, &res)?;
+            let d = frame.solve(mu)?;
+            let r = d.residual_c;
+            evals.push((c, frame, d));
+            Ok(r)
+        };
+        let c = find_root(&mut f, &levels, (0.3, 0.6), (0.0, 1.0), opts.tol)?;
+        let (frame, d) = match evals.into_iter().rev().find(|e| e.0 == c) {
+            Some(e) => (e.1, e.2),
+            None => {
+                let fr = Frame::new(gamma, c, &res)?;
+                let d = fr.solve(mu)?;
+                (fr, d)
+            }
+        };
+        let (pstar, pstar_shear) = compliances(gamma, mu, c, &frame, &d)?;
+        let this = Level {
+            param: c,
+            pstar,
+            pstar_shear,
+        };
+        let est = levels.last().map(|l| this.distance(l));
+        levels.push(this);
+        let converged = est.is_some_and(|e| e <= opts.tol);
+        if converged || k == opts.max_level {
+            return finish(
+                nu,
+                gamma,
+                c,
+                &frame,
+                d,
+                &levels,
+                est.unwrap_or(f64::INFINITY),
+                converged,
+                opts.tol,
+            );
+        }
+    }
+    Err(HertzError::NoConvergence("empty level ladder".into()))
+}
+
+/// Root of `f` on this level: Brent on a bracket for the first level, a
+/// warm-started secant afterwards (Brent again if the secant fails).
+fn find_root<F>(
+    f: &mut F,
+    levels: &[Level],
+    start: (f64, f64),
+    range: (f64, f64),
+    tol: f64,
+) -> Result<f64, HertzError>
+where
+    F: FnMut(f64) -> Result<f64, HertzError>,
+{
+    let xtol = (1e-3 * tol).clamp(1e-15, 1e-9);
+    if let Some(last) = levels.last() {
+        let x0 = last.param;
+        let step = match levels.len() {
+            1 => 1e-6 * x0.abs().max(1e-3),
+            n => (levels[n - 1].param - levels[n - 2].param).abs().max(1e-12),
+        };
+        let step = step.min(0.25 * (range.1 - x0)).min(0.25 * (x0 - range.0));
+        if let Some(x) = secant(f, x0, step, xtol, 10)? {
+            return Ok(x);
+        }
+        let w = (10.0 * step).max(1e-6);
+        let (a, fa, b, fb) = bracket(
+            f,
+            (x0 - w).max(0.5 * (x0 + range.0)),
+            (x0 + w).min(0.5 * (x0 + range.1)),
+            range.0,
+            range.1,
+        )?;
+        return brent(f, a, fa, b, fb, xtol);
+    }
+    let (a, fa, b, fb) = bracket(f, start.0, start.1, range.0, range.1)?;
+    brent(f, a, fa, b, fb, xtol)
+}
+
+#[allow(clippy::too_many_arguments)]
+fn finish(
+    nu: f64,
+    gamma: f64,
+    c: f64,
+    frame: &Frame,
+    d: Discrete,
+    levels: &[Level],
+    est: f64,
+    converged: bool,
+    tol: f64,
+) -> Result<HertzSolution, HertzError> {
+    let last = levels
+        .last()
+        .ok_or_else(|| HertzError::NoConvergence("no level".into()))?;
+    let (mu, alpha, cond, residual_c) = (d.mu, d.alpha, d.cond, d.residual_c);
+    let unknowns = frame.size();
+    let fields = Fields::new(
+        gamma,
+        mu,
+        c,
+        d.p_basis,
+        d.p,
+        Some(frame.q_basis.clone()),
+        d.q,
+    )?;
+    let mut s = HertzSolution {
+        nu,
+        gamma,
+        mu,
+        c,
+        alpha,
+        compliance: last.pstar,
+        compliance_via_shear: last.pstar_shear,
+        compliance_difference: last.pstar - last.pstar_shear,
+        error_estimate: est,
+        converged,
+        tol,
+        stick_ok: false,
+        slip_ok: false,
+        residual_c,
+        unknowns,
+        levels: levels.len(),
+        condition: cond,
+        fields,
+    };
+    let samples = s.sample(&profile_points(c, 200))?;
+    s.stick_ok = samples.iter().filter(|v| v.x < c).all(|v| v.q < v.mu_p);
+    s.slip_ok = samples.iter().filter(|v| v.x > c).all(|v| v.u < 0.0);
+    Ok(s)
+}
+
+/// The frictionless (or decoupled) problem `κ1 p = 1`, `q = 0`, on a mesh
+/// graded toward 1 with the weight `(1-t)^{-1/2}`; `c` is recorded as
+/// given (0: no stick zone, 1: full stick).
+fn solve_frictionless(
+    nu: f64,
+    mu: f64,
+    c: f64,
+    opts: &HertzOptions,
+) -> Result<HertzSolution, HertzError> {
+    let gamma = gamma_of_nu(nu);
+    // The weight (1-t)^{-1/2} is the whole singularity (φ is analytic), so
+    // uniform panels with rising degree suffice; the estimate compares P*
+    // and p itself (relative, on a grid) between successive levels.
+    let grid: Vec<f64> = (0..200).map(|i| i as f64 / 200.0).collect();
+    let mut prev: Option<(f64, Vec<f64>)> = None;
+    for k in 0..=opts.max_level {
+        let mesh = Mesh::uniform(0.0, 1.0, 2 + k / 3)?;
+        let n = 6 + 2 * k;
+        let basis = PanelBasis::new(
+            &mesh,
+            &vec![n; mesh.panels()],
+            vec![Factor {
+                at: 1.0,
+                exponent: -0.5,
+            }],
+        )?;
+        let asm = Assembler::new(&basis)?;
+        let xs = basis.nodes();
+        let a = asm.matrix(&kappa1(), &xs)?;
+        let lu = CheckedLu::new(&a, DEFAULT_MAX_COND)?;
+        let p = lu.solve(&DVector::from_element(xs.len(), 1.0))?;
+        let pstar = FRAC_PI_2 * DVector::from_vec(asm.functional(|t| t, 0.0, 1.0)?).dot(&p);
+        let values: Vec<f64> = grid.iter().map(|&x| basis.eval(p.as_slice(), x)).collect();
+        let est = prev.as_ref().map(|(q, v)| {
+            let dp = values
+                .iter()
+                .zip(v)
+                .map(|(a, b)| ((a - b) / a).abs())
+                .fold(0.0, f64::max);
+            (pstar - q).abs().max(dp)
+        });
+        let converged = est.is_some_and(|e| e <= opts.tol);
+        if converged || k == opts.max_level {
+            let fields = Fields::new(gamma, 0.0, c, basis, p, None, DVector::zeros(0))?;
+            let s = HertzSolution {
+                nu,
+                gamma,
+                mu,
+                c,
+                alpha: edge_exponent(gamma, 0.0),
+                compliance: pstar,
+                compliance_via_shear: 1.0,
+                compliance_difference: pstar - 1.0,
+                error_estimate: est.unwrap_or(f64::INFINITY),
+                converged,
+                tol: opts.tol,
+                // q = 0: no slip anywhere, and 0 < μp wherever there is stick.
+                stick_ok: true,
+                slip_ok: true,
+                residual_c: 0.0,
+                unknowns: xs.len(),
+                levels: k + 1,
+                condition: lu.cond(),
+                fields,
+            };
+            return Ok(s);
+        }
+        prev = Some((pstar, values));
+    }
+    Err(HertzError::NoConvergence("empty level ladder".into()))
+}
