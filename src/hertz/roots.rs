@@ -120,33 +120,36 @@ where
     Err(HertzError::NoConvergence("Brent iteration limit".into()))
 }
 
-/// Secant iteration from `x0` with first step `step`, stopping when the
-/// next update is below `xtol`; returns the last *evaluated* iterate (its
-/// distance to the root is about that last update), or `None` when it does
-/// not settle within `max_iter` steps (the caller then brackets).
+/// Secant iteration from `x0` (where `f(x0) = f0` is already known) with
+/// first step `step`, stopping when the next update is below `xtol`;
+/// returns the last *evaluated* iterate (its distance to the root is about
+/// that last update) and the last secant slope, or `None` when it does not
+/// settle within `max_iter` steps (the caller then brackets).
 pub fn secant<F>(
     f: &mut F,
     x0: f64,
+    f0: f64,
     step: f64,
     xtol: f64,
     max_iter: usize,
-) -> Result<Option<f64>, HertzError>
+) -> Result<Option<(f64, f64)>, HertzError>
 where
     F: FnMut(f64) -> Result<f64, HertzError>,
 {
-    let (mut a, mut fa) = (x0, f(x0)?);
+    let (mut a, mut fa) = (x0, f0);
     let mut b = x0 + step;
     let mut fb = f(b)?;
     for _ in 0..max_iter {
         if fb == fa {
-            return Ok(if fb == 0.0 { Some(b) } else { None });
+            return Ok(if fb == 0.0 { Some((b, 0.0)) } else { None });
         }
-        let nb = b - fb * (b - a) / (fb - fa);
+        let slope = (fb - fa) / (b - a);
+        let nb = b - fb / slope;
         if !nb.is_finite() {
             return Ok(None);
         }
         if (nb - b).abs() <= xtol {
-            return Ok(Some(b));
+            return Ok(Some((b, slope)));
         }
         a = b;
         fa = fb;
@@ -166,8 +169,10 @@ mod tests {
         let (a, fa, b, fb) = bracket(&mut f, 0.0, 0.1, -10.0, 10.0).unwrap();
         let r = brent(&mut f, a, fa, b, fb, 1e-15).unwrap();
         assert!((r - 0.739_085_133_215_160_6).abs() < 1e-14);
-        let s = secant(&mut f, 0.7, 1e-3, 1e-15, 20).unwrap().unwrap();
+        let f0 = f(0.7).unwrap();
+        let (s, slope) = secant(&mut f, 0.7, f0, 1e-3, 1e-15, 20).unwrap().unwrap();
         assert!((s - r).abs() < 1e-13);
+        assert!((slope + 1.0 + r.sin()).abs() < 1e-6);
         let mut g = |x: f64| -> Result<f64, HertzError> { Ok(x * x + 1.0) };
         assert!(bracket(&mut g, 0.0, 1.0, -5.0, 5.0).is_err());
     }

@@ -39,6 +39,7 @@ impl Default for HertzOptions {
 
 struct Level {
     param: f64,
+    slope: f64,
     pstar: f64,
     pstar_shear: f64,
 }
@@ -123,7 +124,7 @@ pub fn solve_given_c(nu: f64, c: f64, opts: &HertzOptions) -> Result<HertzSoluti
             evals.push((mu, d));
             Ok(r)
         };
-        let mu = find_root(&mut f, &levels, (0.1, 0.4), (0.0, 1e4), opts.tol)?;
+        let (mu, slope) = find_root(&mut f, &levels, (0.1, 0.4), (0.0, 1e4), opts.tol)?;
         let d = match evals.into_iter().rev().find(|e| e.0 == mu) {
             Some(e) => e.1,
             None => frame.solve(mu)?,
@@ -131,6 +132,7 @@ pub fn solve_given_c(nu: f64, c: f64, opts: &HertzOptions) -> Result<HertzSoluti
         let (pstar, pstar_shear) = compliances(gamma, mu, c, &frame, &d)?;
         let this = Level {
             param: mu,
+            slope,
             pstar,
             pstar_shear,
         };
@@ -183,7 +185,7 @@ pub fn solve_given_mu(nu: f64, mu: f64, opts: &HertzOptions) -> Result<HertzSolu
             evals.push((c, frame, d));
             Ok(r)
         };
-        let c = find_root(&mut f, &levels, (0.3, 0.6), (0.0, 1.0), opts.tol)?;
+        let (c, slope) = find_root(&mut f, &levels, (0.3, 0.6), (0.0, 1.0), opts.tol)?;
         let (frame, d) = match evals.into_iter().rev().find(|e| e.0 == c) {
             Some(e) => (e.1, e.2),
             None => {
@@ -195,6 +197,7 @@ pub fn solve_given_mu(nu: f64, mu: f64, opts: &HertzOptions) -> Result<HertzSolu
         let (pstar, pstar_shear) = compliances(gamma, mu, c, &frame, &d)?;
         let this = Level {
             param: c,
+            slope,
             pstar,
             pstar_shear,
         };
@@ -218,30 +221,38 @@ pub fn solve_given_mu(nu: f64, mu: f64, opts: &HertzOptions) -> Result<HertzSolu
     Err(HertzError::NoConvergence("empty level ladder".into()))
 }
 
-/// Root of `f` on this level: Brent on a bracket for the first level, a
-/// warm-started secant afterwards (Brent again if the secant fails).
+/// Root of `f` on this level and the slope of `f` there: Brent on a
+/// bracket for the first level; afterwards a secant iteration started from
+/// the previous level's root with a Newton step on the previous slope
+/// (Brent again if that fails).
 fn find_root<F>(
     f: &mut F,
     levels: &[Level],
     start: (f64, f64),
     range: (f64, f64),
     tol: f64,
-) -> Result<f64, HertzError>
+) -> Result<(f64, f64), HertzError>
 where
     F: FnMut(f64) -> Result<f64, HertzError>,
 {
     let xtol = (1e-3 * tol).clamp(1e-15, 1e-9);
+    let room = |x: f64| 0.25 * (range.1 - x).min(x - range.0);
     if let Some(last) = levels.last() {
         let x0 = last.param;
-        let step = match levels.len() {
-            1 => 1e-6 * x0.abs().max(1e-3),
-            n => (levels[n - 1].param - levels[n - 2].param).abs().max(1e-12),
+        let f0 = f(x0)?;
+        let mut step = if last.slope != 0.0 && last.slope.is_finite() {
+            -f0 / last.slope
+        } else {
+            1e-6
         };
-        let step = step.min(0.25 * (range.1 - x0)).min(0.25 * (x0 - range.0));
-        if let Some(x) = secant(f, x0, step, xtol, 10)? {
-            return Ok(x);
+        if step == 0.0 {
+            step = 1e-12;
         }
-        let w = (10.0 * step).max(1e-6);
+        let step = step.clamp(-room(x0), room(x0));
+        if let Some(r) = secant(f, x0, f0, step, xtol, 12)? {
+            return Ok(r);
+        }
+        let w = 10.0 * step.abs().max(1e-6);
         let (a, fa, b, fb) = bracket(
             f,
             (x0 - w).max(0.5 * (x0 + range.0)),
@@ -249,10 +260,15 @@ where
             range.0,
             range.1,
         )?;
-        return brent(f, a, fa, b, fb, xtol);
+        let x = brent(f, a, fa, b, fb, xtol)?;
+        return Ok((x, last.slope));
     }
     let (a, fa, b, fb) = bracket(f, start.0, start.1, range.0, range.1)?;
-    brent(f, a, fa, b, fb, xtol)
+    let x = brent(f, a, fa, b, fb, xtol)?;
+    // Slope at the root by one extra evaluation (cheap on the first level).
+    let h = 1e-6 * x.abs().max(1e-3);
+    let slope = (f(x + h)? - f(x)?) / h;
+    Ok((x, slope))
 }
 
 #[allow(clippy::too_many_arguments)]

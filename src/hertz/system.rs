@@ -33,14 +33,20 @@ pub struct Resolution {
 impl Resolution {
     /// Level `k` of the default refinement ladder (more layers and higher
     /// degrees as `k` grows).
+    /// Measured (see tests/hertz_convergence.rs): the error of `μ(c)`
+    /// falls by a factor of about 15 per level and is dominated by the
+    /// grading toward `c`; the agreement of the two compliance formulas is
+    /// dominated by the grading toward the edge. Both gain two layers per
+    /// level (at most 20: the smallest panel stays above ~1e-12·c).
     pub fn level(k: usize) -> Resolution {
+        let layers = (6 + 2 * k).min(20);
         Resolution {
-            layers_c: 6 + 2 * k,
-            layers_1: 6 + 2 * k,
-            sigma: 0.2,
+            layers_c: layers,
+            layers_1: layers,
+            sigma: 0.25,
             n_min: 3,
             slope: 0.75,
-            n_max: 8 + 2 * k,
+            n_max: 7 + k,
         }
     }
 }
