@@ -59,7 +59,15 @@ impl<'b> Assembler<'b> {
         for p in &basis.panels {
             let n = p.nodes.len();
             let (mut t, mut w) = (Vec::new(), Vec::new());
-            composite_rule(p.a, p.b, &basis.weight, n + extra, &cache, &mut t, &mut w)?;
+            composite_rule(
+                p.a,
+                p.b,
+                &basis.weight,
+                n.div_ceil(2) + extra,
+                &cache,
+                &mut t,
+                &mut w,
+            )?;
             let mut lag = vec![0.0; t.len() * n];
             for (q, &tq) in t.iter().enumerate() {
                 p.lagrange(tq, &mut lag[q * n..(q + 1) * n]);
@@ -229,7 +237,7 @@ impl<'b> Assembler<'b> {
                     seg.0,
                     seg.1,
                     &factors,
-                    n + self.extra,
+                    n.div_ceil(2) + self.extra,
                     &self.cache,
                     &mut ts,
                     &mut ws,

@@ -9,6 +9,7 @@
 //! * [`operator`]: operators as data (Abel-type and smooth integral terms,
 //!   multipliers, identity) with kernels as closures;
 //! * [`assemble`]: collocation matrices of operators;
+//! * [`lu`]: blocked LU with partial pivoting (and transposed solves);
 //! * [`solve`]: dense solves that refuse singular or ill-conditioned
 //!   systems;
 //! * [`elimination`]: coupled, ordered and commutative solves of 2×2
@@ -23,6 +24,7 @@ pub mod elimination;
 pub mod error;
 pub mod gamma;
 pub mod gauss;
+pub mod lu;
 pub mod mesh;
 pub mod operator;
 pub mod product;

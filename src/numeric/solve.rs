@@ -3,9 +3,10 @@
 //! a singular or too ill-conditioned system is a [`NumericError`], never a
 //! result. Also block-matrix assembly helpers. This file owns linear
 //! algebra only; it must not assemble operators.
-use nalgebra::{DMatrix, DVector, Dyn, LU};
+use nalgebra::{DMatrix, DVector};
 
 use super::error::NumericError;
+use super::lu::DenseLu;
 
 /// Default limit on the (equilibrated) condition number: beyond it a
 /// double-precision solve cannot promise even a few correct digits.
@@ -14,7 +15,7 @@ pub const DEFAULT_MAX_COND: f64 = 1e13;
 /// An LU factorisation of `A·D` (`D` scales columns to unit max-norm) that
 /// passed the singularity and conditioning checks.
 pub struct CheckedLu {
-    lu: LU<f64, Dyn, Dyn>,
+    lu: DenseLu,
     scale: Vec<f64>,
     cond: f64,
 }
@@ -48,10 +49,7 @@ impl CheckedLu {
             s.column_mut(j).scale_mut(1.0 / m);
         }
         let norm1 = (0..n).map(|j| s.column(j).lp_norm(1)).fold(0.0, f64::max);
-        let lu = s.lu();
-        if !lu.is_invertible() {
-            return Err(NumericError::Singular(n));
-        }
+        let lu = DenseLu::new(s)?;
         let mut me = CheckedLu {
             lu,
             scale,
@@ -84,10 +82,7 @@ impl CheckedLu {
                 self.scale.len()
             )));
         }
-        let mut y = self
-            .lu
-            .solve(b)
-            .ok_or(NumericError::Singular(self.scale.len()))?;
+        let mut y = self.lu.solve(b);
         for (v, s) in y.iter_mut().zip(&self.scale) {
             *v *= s;
         }
@@ -110,28 +105,13 @@ impl CheckedLu {
     /// Hager's estimate of `‖S⁻¹‖₁` for the equilibrated `S`.
     fn inverse_norm1_estimate(&self) -> f64 {
         let n = self.scale.len();
-        let l = self.lu.l();
-        let u = self.lu.u();
-        let p = self.lu.p();
-        let solve_s = |v: &DVector<f64>| self.lu.solve(v);
-        let solve_st = |v: &DVector<f64>| -> Option<DVector<f64>> {
-            // S = Pᵀ L U  ⇒  Sᵀ = Uᵀ Lᵀ P.
-            let y = u.tr_solve_upper_triangular(v)?;
-            let mut z = l.tr_solve_lower_triangular(&y)?;
-            p.inv_permute_rows(&mut z);
-            Some(z)
-        };
         let mut x = DVector::from_element(n, 1.0 / n as f64);
-        let mut est = 0.0;
+        let mut est: f64 = 0.0;
         for _ in 0..5 {
-            let Some(y) = solve_s(&x) else {
-                return f64::INFINITY;
-            };
+            let y = self.lu.solve(&x);
             est = y.lp_norm(1);
             let xi = y.map(|v| if v >= 0.0 { 1.0 } else { -1.0 });
-            let Some(z) = solve_st(&xi) else {
-                return f64::INFINITY;
-            };
+            let z = self.lu.solve_transpose(&xi);
             let (jmax, zmax) = z.iter().enumerate().fold((0, 0.0), |acc, (j, v)| {
                 if v.abs() > acc.1 { (j, v.abs()) } else { acc }
             });
@@ -141,7 +121,7 @@ impl CheckedLu {
             x = DVector::zeros(n);
             x[jmax] = 1.0;
         }
-        est
+        if est.is_finite() { est } else { f64::INFINITY }
     }
 }
 
