@@ -37,6 +37,9 @@ pub struct Fields {
     pub q_basis: Option<PanelBasis>,
     /// Coefficients of the stick shear.
     pub q: DVector<f64>,
+    /// Coefficient `B` of the singular part `B·t/√(c²-t²)` of the stick
+    /// shear (zero up to the root-finding tolerance in a solution).
+    pub q_singular: f64,
     /// E2's residual `r = -(κ3 p + κ4 q)` on the slip zone, interpolated.
     pub r_basis: Option<PanelBasis>,
     /// Coefficients of `r`.
@@ -75,6 +78,8 @@ pub struct HertzSolution {
     pub slip_ok: bool,
     /// `R(c)` of the final discretisation (bounded-shear condition).
     pub residual_c: f64,
+    /// `q(c⁻) - μ p(c)`: continuity of the shear at the stick/slip point.
+    pub shear_jump_at_c: f64,
     /// Number of unknowns of the final discretisation.
     pub unknowns: usize,
     /// Number of discretisation levels used.
@@ -88,6 +93,7 @@ pub struct HertzSolution {
 
 impl Fields {
     /// Builds the fields and interpolates E2's residual on the slip zone.
+    #[allow(clippy::too_many_arguments)]
     pub fn new(
         gamma: f64,
         mu: f64,
@@ -96,12 +102,14 @@ impl Fields {
         p: DVector<f64>,
         q_basis: Option<PanelBasis>,
         q: DVector<f64>,
+        q_singular: f64,
     ) -> Result<Fields, HertzError> {
         let mut f = Fields {
             p_basis,
             p,
             q_basis,
             q,
+            q_singular,
             r_basis: None,
             r: DVector::zeros(0),
         };
@@ -130,10 +138,14 @@ impl HertzSolution {
         self.fields.p_basis.eval(self.fields.p.as_slice(), x)
     }
 
-    /// Shear stress `q(x)`: the stick solution on `[0,c)`, `μp` on `[c,1)`.
+    /// Shear stress `q(x)`: the stick solution on `[0,c)` (including its
+    /// singular part, zero up to the root tolerance), `μp` on `[c,1)`.
     pub fn q(&self, x: f64) -> f64 {
         match &self.fields.q_basis {
-            Some(b) if x < self.c => b.eval(self.fields.q.as_slice(), x),
+            Some(b) if x < self.c => {
+                let s = x / ((self.c - x) * (self.c + x)).sqrt();
+                b.eval(self.fields.q.as_slice(), x) + self.fields.q_singular * s
+            }
             _ if x >= self.c => self.mu * self.p(x),
             _ => 0.0,
         }

@@ -120,7 +120,7 @@ pub fn solve_given_c(nu: f64, c: f64, opts: &HertzOptions) -> Result<HertzSoluti
         let mut evals: Vec<(f64, Discrete)> = Vec::new();
         let mut f = |mu: f64| -> Result<f64, HertzError> {
             let d = frame.solve(mu)?;
-            let r = d.residual_c;
+            let r = d.singular;
             evals.push((mu, d));
             Ok(r)
         };
@@ -181,11 +181,21 @@ pub fn solve_given_mu(nu: f64, mu: f64, opts: &HertzOptions) -> Result<HertzSolu
         let mut f = |c: f64| -> Result<f64, HertzError> {
             let frame = Frame::new(gamma, c, &res)?;
             let d = frame.solve(mu)?;
-            let r = d.residual_c;
+            let r = d.singular;
             evals.push((c, frame, d));
             Ok(r)
         };
-        let (c, slope) = find_root(&mut f, &levels, (0.3, 0.6), (0.0, 1.0), opts.tol)?;
+        // Start near c ≈ 2 exp(-γ/μ) (the small-c balance of the two terms
+        // of R(c)); R also vanishes on a spurious branch near c ≈ 3.5e-4
+        // (ν = 0) where ∂R/∂μ changes sign, so the start matters.
+        let guess = (2.0 * (-gamma / mu).exp()).clamp(2e-3, 0.9);
+        let (c, slope) = find_root(
+            &mut f,
+            &levels,
+            (guess, (1.3 * guess).min(0.95)),
+            (0.0, 1.0),
+            opts.tol,
+        )?;
         let (frame, d) = match evals.into_iter().rev().find(|e| e.0 == c) {
             Some(e) => (e.1, e.2),
             None => {
@@ -296,6 +306,7 @@ fn finish(
         d.p,
         Some(frame.q_basis.clone()),
         d.q,
+        d.singular,
     )?;
     let mut s = HertzSolution {
         nu,
@@ -312,11 +323,17 @@ fn finish(
         stick_ok: false,
         slip_ok: false,
         residual_c,
+        shear_jump_at_c: 0.0,
         unknowns,
         levels: levels.len(),
         condition: cond,
         fields,
     };
+    // Bounded, continuous shear: q(c⁻) = μ p(c) (the stick shear's last
+    // panel is closed at c; p's panel to the right of c starts there).
+    if let Some(qb) = &s.fields.q_basis {
+        s.shear_jump_at_c = qb.eval(s.fields.q.as_slice(), c) - s.mu * s.p(c);
+    }
     let samples = s.sample(&profile_points(c, 200))?;
     s.stick_ok = samples.iter().filter(|v| v.x < c).all(|v| v.q < v.mu_p);
     s.slip_ok = samples.iter().filter(|v| v.x > c).all(|v| v.u < 0.0);
@@ -366,7 +383,7 @@ fn solve_frictionless(
         });
         let converged = est.is_some_and(|e| e <= opts.tol);
         if converged || k == opts.max_level {
-            let fields = Fields::new(gamma, 0.0, c, basis, p, None, DVector::zeros(0))?;
+            let fields = Fields::new(gamma, 0.0, c, basis, p, None, DVector::zeros(0), 0.0)?;
             let s = HertzSolution {
                 nu,
                 gamma,
@@ -383,6 +400,7 @@ fn solve_frictionless(
                 stick_ok: true,
                 slip_ok: true,
                 residual_c: 0.0,
+                shear_jump_at_c: 0.0,
                 unknowns: xs.len(),
                 levels: k + 1,
                 condition: lu.cond(),

@@ -10,7 +10,7 @@ use nalgebra::{DMatrix, DVector};
 
 use super::error::HertzError;
 use super::operators::{edge_exponent, kappa1, kappa2, kappa3, kappa4};
-use crate::numeric::solve::{CheckedLu, DEFAULT_MAX_COND, block_matrix};
+use crate::numeric::solve::{CheckedLu, DEFAULT_MAX_COND};
 use crate::numeric::{Assembler, Factor, Grading, Mesh, PanelBasis, Side};
 
 /// Mesh and degree parameters of one discretisation level.
@@ -160,25 +160,46 @@ impl Frame {
             asm.matrix(&kappa1(), &self.xp)? + asm.matrix_on(&kappa2(g), &self.xp, slip)? * mu;
         let a21 =
             asm.matrix(&kappa3(g), &self.xq)? + asm.matrix_on(&kappa4(), &self.xq, slip)? * mu;
-        let a = block_matrix(&[vec![&a11, &self.k2q], vec![&a21, &self.k4q]])?;
-        let mut rhs = DVector::zeros(self.size());
-        rhs.rows_mut(0, self.xp.len()).fill(1.0);
-        let lu = CheckedLu::new(&a, DEFAULT_MAX_COND)?;
-        let sol = lu.solve(&rhs)?;
+        // The shear may carry a singular part B·t/√(c²-t²) on the stick
+        // zone; it is one extra unknown, with images in closed form:
+        // κ2[s](x) = -γc + γx·½ln((x+c)/|x-c|), κ4[s](x) = -πx/2 (x < c).
+        // The extra equation is E2 at x → c⁻, where κ4 of the bounded part
+        // vanishes: c·R(c) - B·πc/2 = 0 with c·R(c) = κ3 p(c) + μκ4[p|slip](c).
         let np = self.xp.len();
-        let p = sol.rows(0, np).into_owned();
-        let q = sol.rows(np, sol.len() - np).into_owned();
-        // E2 at x = c with bounded q: c·R(c) = κ3 p(c) + μ κ4[p|slip](c).
+        let nq = self.xq.len();
+        let n = np + nq + 1;
         let mut r3 = vec![0.0; p_basis.dim()];
         asm.row_into(&kappa3(g), c, (0.0, 1.0), &mut r3)?;
         let mut r4 = vec![0.0; p_basis.dim()];
         asm.row_into(&kappa4(), c, slip, &mut r4)?;
+        let mut a = DMatrix::zeros(n, n);
+        a.view_mut((0, 0), (np, np)).copy_from(&a11);
+        a.view_mut((0, np), (np, nq)).copy_from(&self.k2q);
+        a.view_mut((np, 0), (nq, np)).copy_from(&a21);
+        a.view_mut((np, np), (nq, nq)).copy_from(&self.k4q);
+        for (i, &x) in self.xp.iter().enumerate() {
+            a[(i, n - 1)] = -g * c + g * x * 0.5 * ((x + c) / (x - c).abs()).ln();
+        }
+        for (i, &x) in self.xq.iter().enumerate() {
+            a[(np + i, n - 1)] = -std::f64::consts::FRAC_PI_2 * x;
+        }
+        for j in 0..np {
+            a[(n - 1, j)] = r3[j] + mu * r4[j];
+        }
+        a[(n - 1, n - 1)] = -std::f64::consts::FRAC_PI_2 * c;
+        let mut rhs = DVector::zeros(n);
+        rhs.rows_mut(0, np).fill(1.0);
+        let lu = CheckedLu::new(&a, DEFAULT_MAX_COND)?;
+        let sol = lu.solve(&rhs)?;
+        let p = sol.rows(0, np).into_owned();
+        let q = sol.rows(np, nq).into_owned();
         let e2c: f64 = r3
             .iter()
             .zip(&r4)
             .zip(p.iter())
             .map(|((a, b), p)| (a + mu * b) * p)
             .sum();
+        let singular = sol[n - 1];
         Ok(Discrete {
             mu,
             alpha,
@@ -186,6 +207,7 @@ impl Frame {
             p,
             q,
             residual_c: e2c / c,
+            singular,
             cond: lu.cond(),
         })
     }
@@ -205,6 +227,9 @@ pub struct Discrete {
     pub q: DVector<f64>,
     /// `R(c)`: zero exactly when the shear is bounded at `c`.
     pub residual_c: f64,
+    /// Coefficient `B` of the singular part `B·t/√(c²-t²)` of the stick
+    /// shear (`B = (2/π) R(c)` in the continuous problem).
+    pub singular: f64,
     /// Condition estimate of the block system.
     pub cond: f64,
 }

@@ -63,9 +63,10 @@ impl Mesh {
     }
 
     /// A mesh on `[lo, hi]` graded geometrically with ratio `sigma ∈ (0,1)`
-    /// toward every point of `gradings` (each becomes a breakpoint). Between
-    /// two consecutive special points, a side that is graded gets `layers`
-    /// panels of sizes `∝ σ^k`; two graded sides meet in the middle; an
+    /// toward every point of `gradings` (each becomes a breakpoint; the same
+    /// point may be listed once per side with different layer counts).
+    /// Between two consecutive special points, a side that is graded gets
+    /// `layers` panels of sizes `∝ σ^k`; two graded sides meet in the middle; an
     /// interval with no graded side becomes one panel. Layer indices count
     /// outward from the graded point.
     ///
@@ -94,9 +95,8 @@ impl Mesh {
                 "grading ratio {sigma} not in (0,1)"
             )));
         }
-        // Special points with their graded sides.
-        let mut pts: Vec<(f64, bool, bool, usize)> =
-            vec![(lo, false, false, 0), (hi, false, false, 0)];
+        // Special points with the layer counts of their left and right sides.
+        let mut pts: Vec<(f64, usize, usize)> = vec![(lo, 0, 0), (hi, 0, 0)];
         for g in gradings {
             if !(g.at >= lo && g.at <= hi) {
                 return Err(NumericError::InvalidMesh(format!(
@@ -105,25 +105,24 @@ impl Mesh {
                 )));
             }
             let (l, r) = match g.side {
-                Side::Left => (true, false),
-                Side::Right => (false, true),
-                Side::Both => (true, true),
+                Side::Left => (g.layers, 0),
+                Side::Right => (0, g.layers),
+                Side::Both => (g.layers, g.layers),
             };
             if let Some(p) = pts.iter_mut().find(|p| p.0 == g.at) {
-                p.1 |= l;
-                p.2 |= r;
-                p.3 = p.3.max(g.layers);
+                p.1 = p.1.max(l);
+                p.2 = p.2.max(r);
             } else {
-                pts.push((g.at, l, r, g.layers));
+                pts.push((g.at, l, r));
             }
         }
         pts.sort_by(|a, b| a.0.total_cmp(&b.0));
         let mut breaks = vec![lo];
         let mut levels = Vec::new();
         for w in pts.windows(2) {
-            let (a, _, a_right, la) = w[0];
-            let (b, b_left, _, lb) = w[1];
-            let (ga, gb) = (a_right && la > 0, b_left && lb > 0);
+            let (a, _, la) = w[0];
+            let (b, lb, _) = w[1];
+            let (ga, gb) = (la > 0, lb > 0);
             let mid = match (ga, gb) {
                 (true, true) => 0.5 * (a + b),
                 (true, false) => b,
@@ -222,6 +221,25 @@ mod tests {
         let m = Mesh::graded(0.0, 1.0, &g, 0.5).unwrap();
         assert_eq!(m.breaks, vec![0.0, 0.25, 0.5, 0.75, 1.0]);
         assert_eq!(m.levels, vec![0, 1, 1, 0]);
+    }
+
+    #[test]
+    fn sides_may_have_different_layer_counts() {
+        let g = [
+            Grading {
+                at: 0.5,
+                side: Side::Left,
+                layers: 1,
+            },
+            Grading {
+                at: 0.5,
+                side: Side::Right,
+                layers: 2,
+            },
+        ];
+        let m = Mesh::graded(0.0, 1.0, &g, 0.5).unwrap();
+        assert_eq!(m.breaks, vec![0.0, 0.5, 0.75, 1.0]);
+        assert_eq!(m.levels, vec![0, 0, 1]);
     }
 
     #[test]
