@@ -6,6 +6,7 @@
 //! * [`roots`]: bracketing, Brent and warm-started secant iterations;
 //! * [`solve`]: the public solvers and their refinement ladder;
 //! * [`solution`]: the result, field evaluation, checks;
+//! * [`seed`]: the seed paper's literal algorithm, for comparison only;
 //! * [`error`]: the layer's error enum.
 //!
 //! ```no_run
@@ -16,6 +17,7 @@
 pub mod error;
 pub mod operators;
 pub mod roots;
+pub mod seed;
 pub mod solution;
 pub mod solve;
 pub mod system;
