@@ -37,3 +37,39 @@ fn decoupled_material_sticks_everywhere() {
     assert!((s.compliance - 1.0).abs() <= 1e-10);
     assert!(s.stick_ok && s.slip_ok);
 }
+
+#[test]
+fn solution_serialises_with_the_documented_keys() {
+    let s = solve_given_mu(0.0, 0.0, &HertzOptions::default()).unwrap();
+    let v: serde_json::Value = serde_json::to_value(&s).unwrap();
+    for k in [
+        "nu",
+        "gamma",
+        "mu",
+        "c",
+        "alpha",
+        "compliance",
+        "compliance_via_shear",
+        "error_estimate",
+        "stick_ok",
+        "slip_ok",
+    ] {
+        assert!(v.get(k).is_some(), "missing key {k}");
+    }
+    assert!(v.get("fields").is_none());
+}
+
+#[test]
+fn bad_parameters_are_errors_not_results() {
+    use lambdamat::hertz::solve_given_c;
+    let o = HertzOptions::default();
+    assert!(solve_given_c(0.0, 1.0, &o).is_err());
+    assert!(solve_given_c(0.0, -0.1, &o).is_err());
+    assert!(solve_given_c(0.7, 0.5, &o).is_err());
+    assert!(solve_given_c(0.5, 0.5, &o).is_err());
+    assert!(solve_given_mu(0.0, -1.0, &o).is_err());
+    assert!(solve_given_mu(0.0, f64::NAN, &o).is_err());
+    assert!(solve_given_mu(0.0, 0.3, &HertzOptions { tol: 0.0, ..o }).is_err());
+    // Stick zones below the reliable range are refused, not returned.
+    assert!(solve_given_mu(0.0, 0.03, &o).is_err());
+}

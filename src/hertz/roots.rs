@@ -43,6 +43,46 @@ where
     ))
 }
 
+/// Brackets a root of a function known to be increasing (`increasing`) or
+/// decreasing in its argument: from `x0` it steps with `up` or `down`
+/// (chosen by the sign of `f(x0)`) until the sign changes. Returns the
+/// bracket and its values.
+pub fn directed_bracket<F>(
+    f: &mut F,
+    x0: f64,
+    increasing: bool,
+    up: impl Fn(f64) -> f64,
+    down: impl Fn(f64) -> f64,
+    max_steps: usize,
+) -> Result<(f64, f64, f64, f64), HertzError>
+where
+    F: FnMut(f64) -> Result<f64, HertzError>,
+{
+    let f0 = f(x0)?;
+    if f0 == 0.0 {
+        return Ok((x0, f0, x0, f0));
+    }
+    // Root above x0 when f(x0) has the sign of the function's low end.
+    let go_up = (f0 < 0.0) == increasing;
+    let (mut a, mut fa) = (x0, f0);
+    for _ in 0..max_steps {
+        let b = if go_up { up(a) } else { down(a) };
+        let fb = f(b)?;
+        if fb == 0.0 || fb.signum() != fa.signum() {
+            return Ok(if a < b {
+                (a, fa, b, fb)
+            } else {
+                (b, fb, a, fa)
+            });
+        }
+        a = b;
+        fa = fb;
+    }
+    Err(HertzError::NoConvergence(format!(
+        "no sign change of the free-boundary residual found (searched from {x0} to {a})"
+    )))
+}
+
 /// Brent's method on a bracket `[a, b]` with `f(a) f(b) ≤ 0`, to absolute
 /// tolerance `xtol` in the argument.
 pub fn brent<F>(f: &mut F, a: f64, fa: f64, b: f64, fb: f64, xtol: f64) -> Result<f64, HertzError>
@@ -132,6 +172,7 @@ pub fn secant<F>(
     step: f64,
     xtol: f64,
     max_iter: usize,
+    range: (f64, f64),
 ) -> Result<Option<(f64, f64)>, HertzError>
 where
     F: FnMut(f64) -> Result<f64, HertzError>,
@@ -145,7 +186,7 @@ where
         }
         let slope = (fb - fa) / (b - a);
         let nb = b - fb / slope;
-        if !nb.is_finite() {
+        if !nb.is_finite() || nb <= range.0 || nb >= range.1 {
             return Ok(None);
         }
         if (nb - b).abs() <= xtol {
@@ -170,7 +211,12 @@ mod tests {
         let r = brent(&mut f, a, fa, b, fb, 1e-15).unwrap();
         assert!((r - 0.739_085_133_215_160_6).abs() < 1e-14);
         let f0 = f(0.7).unwrap();
-        let (s, slope) = secant(&mut f, 0.7, f0, 1e-3, 1e-15, 20).unwrap().unwrap();
+        let (s, slope) = secant(&mut f, 0.7, f0, 1e-3, 1e-15, 20, (0.0, 1.0))
+            .unwrap()
+            .unwrap();
+        let (a, fa, b, fb) =
+            directed_bracket(&mut f, 0.1, false, |x| 2.0 * x, |x| 0.5 * x, 20).unwrap();
+        assert!(a < r && r < b && fa > 0.0 && fb < 0.0);
         assert!((s - r).abs() < 1e-13);
         assert!((slope + 1.0 + r.sin()).abs() < 1e-6);
         let mut g = |x: f64| -> Result<f64, HertzError> { Ok(x * x + 1.0) };

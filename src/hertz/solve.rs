@@ -13,7 +13,7 @@ use serde::Serialize;
 
 use super::error::HertzError;
 use super::operators::{edge_exponent, gamma_of_nu, kappa1};
-use super::roots::{bracket, brent, secant};
+use super::roots::{brent, directed_bracket, secant};
 use super::solution::{Fields, HertzSolution, profile_points};
 use super::system::{Discrete, Frame, Resolution};
 use crate::numeric::solve::{CheckedLu, DEFAULT_MAX_COND};
@@ -124,7 +124,13 @@ pub fn solve_given_c(nu: f64, c: f64, opts: &HertzOptions) -> Result<HertzSoluti
             evals.push((mu, d));
             Ok(r)
         };
-        let (mu, slope) = find_root(&mut f, &levels, (0.1, 0.4), (0.0, 1e4), opts.tol)?;
+        // B decreases with μ; start from the small-c balance μ ≈ γ/ln(2/c).
+        let search = Search {
+            start: gamma / (2.0 / c).ln().max(0.5),
+            increasing: false,
+            range: (0.0, f64::INFINITY),
+        };
+        let (mu, slope) = find_root(&mut f, &levels, &search, opts.tol)?;
         let d = match evals.into_iter().rev().find(|e| e.0 == mu) {
             Some(e) => e.1,
             None => frame.solve(mu)?,
@@ -188,14 +194,13 @@ pub fn solve_given_mu(nu: f64, mu: f64, opts: &HertzOptions) -> Result<HertzSolu
         // Start near c ≈ 2 exp(-γ/μ) (the small-c balance of the two terms
         // of R(c)); R also vanishes on a spurious branch near c ≈ 3.5e-4
         // (ν = 0) where ∂R/∂μ changes sign, so the start matters.
-        let guess = (2.0 * (-gamma / mu).exp()).clamp(2e-3, 0.9);
-        let (c, slope) = find_root(
-            &mut f,
-            &levels,
-            (guess, (1.3 * guess).min(0.95)),
-            (0.0, 1.0),
-            opts.tol,
-        )?;
+        // B increases with c.
+        let search = Search {
+            start: (2.0 * (-gamma / mu).exp()).clamp(2e-3, 0.9),
+            increasing: true,
+            range: (0.0, 1.0),
+        };
+        let (c, slope) = find_root(&mut f, &levels, &search, opts.tol)?;
         let (frame, d) = match evals.into_iter().rev().find(|e| e.0 == c) {
             Some(e) => (e.1, e.2),
             None => {
@@ -231,22 +236,41 @@ pub fn solve_given_mu(nu: f64, mu: f64, opts: &HertzOptions) -> Result<HertzSolu
     Err(HertzError::NoConvergence("empty level ladder".into()))
 }
 
-/// Root of `f` on this level and the slope of `f` there: Brent on a
-/// bracket for the first level; afterwards a secant iteration started from
-/// the previous level's root with a Newton step on the previous slope
-/// (Brent again if that fails).
+/// How the first level looks for a sign change of the singular
+/// coefficient `B`.
+struct Search {
+    /// Starting point.
+    start: f64,
+    /// `B` increases with the argument.
+    increasing: bool,
+    /// Admissible open range of the argument.
+    range: (f64, f64),
+}
+
+/// Root of `f` on this level and the slope of `f` there: on the first level
+/// a directed bracket search from `search.start` and Brent; afterwards a
+/// secant iteration started from the previous level's root with a Newton
+/// step on the previous slope (a new bracket and Brent if that fails).
 fn find_root<F>(
     f: &mut F,
     levels: &[Level],
-    start: (f64, f64),
-    range: (f64, f64),
+    search: &Search,
     tol: f64,
 ) -> Result<(f64, f64), HertzError>
 where
     F: FnMut(f64) -> Result<f64, HertzError>,
 {
+    let (lo, hi) = search.range;
     let xtol = (1e-3 * tol).clamp(1e-15, 1e-9);
-    let room = |x: f64| 0.25 * (range.1 - x).min(x - range.0);
+    let room = |x: f64| 0.25 * (hi - x).min(x - lo);
+    let up = |x: f64| {
+        if hi.is_finite() {
+            x + 0.5 * (hi - x)
+        } else {
+            1.5 * x
+        }
+    };
+    let down = |x: f64| lo + 0.5 * (x - lo);
     if let Some(last) = levels.last() {
         let x0 = last.param;
         let f0 = f(x0)?;
@@ -259,26 +283,37 @@ where
             step = 1e-12;
         }
         let step = step.clamp(-room(x0), room(x0));
-        if let Some(r) = secant(f, x0, f0, step, xtol, 12)? {
+        if let Some(r) = secant(f, x0, f0, step, xtol, 12, search.range)? {
             return Ok(r);
         }
-        let w = 10.0 * step.abs().max(1e-6);
-        let (a, fa, b, fb) = bracket(
-            f,
-            (x0 - w).max(0.5 * (x0 + range.0)),
-            (x0 + w).min(0.5 * (x0 + range.1)),
-            range.0,
-            range.1,
-        )?;
+        let (a, fa, b, fb) = directed_bracket(f, x0, search.increasing, up, down, 80)?;
         let x = brent(f, a, fa, b, fb, xtol)?;
+        check_not_pole(f, x, fa, fb)?;
         return Ok((x, last.slope));
     }
-    let (a, fa, b, fb) = bracket(f, start.0, start.1, range.0, range.1)?;
+    let (a, fa, b, fb) = directed_bracket(f, search.start, search.increasing, up, down, 80)?;
     let x = brent(f, a, fa, b, fb, xtol)?;
+    check_not_pole(f, x, fa, fb)?;
     // Slope at the root by one extra evaluation (cheap on the first level).
-    let h = 1e-6 * x.abs().max(1e-3);
+    let h = 1e-6 * room(x).min(x.abs()).max(1e-12);
     let slope = (f(x + h)? - f(x)?) / h;
     Ok((x, slope))
+}
+
+/// `B` is a ratio of determinants in the parameter and can change sign
+/// across a pole; Brent then converges to the pole. Refuse that.
+fn check_not_pole<F>(f: &mut F, x: f64, fa: f64, fb: f64) -> Result<(), HertzError>
+where
+    F: FnMut(f64) -> Result<f64, HertzError>,
+{
+    let fx = f(x)?;
+    if fx.abs() <= 1e-6 * (fa.abs() + fb.abs()) {
+        Ok(())
+    } else {
+        Err(HertzError::NoConvergence(format!(
+            "the free-boundary residual changes sign across a pole near {x:.6e} (value {fx:.3e}), not a root"
+        )))
+    }
 }
 
 #[allow(clippy::too_many_arguments)]
@@ -333,6 +368,18 @@ fn finish(
     // panel is closed at c; p's panel to the right of c starts there).
     if let Some(qb) = &s.fields.q_basis {
         s.shear_jump_at_c = qb.eval(s.fields.q.as_slice(), c) - s.mu * s.p(c);
+        // A root of the bounded-shear condition whose shear still jumps at c
+        // is not the physical free boundary. This happens at very small
+        // stick zones (measured at ν = 0: c ≲ 4e-4, μ ≲ 0.065), where the
+        // condition degenerates (∂B/∂μ changes sign); refuse it.
+        let mup = (s.mu * s.p(c)).abs();
+        if s.shear_jump_at_c.is_nan() || s.shear_jump_at_c.abs() > 0.1 * mup {
+            return Err(HertzError::NoConvergence(format!(
+                "spurious free boundary at c = {c:.4e}, μ = {:.4e}: q(c⁻) - μp(c) = {:.3e} (μp(c) = {mup:.3e}); \
+                 stick zones this small are outside the solver's reliable range",
+                s.mu, s.shear_jump_at_c
+            )));
+        }
     }
     let samples = s.sample(&profile_points(c, 200))?;
     s.stick_ok = samples.iter().filter(|v| v.x < c).all(|v| v.q < v.mu_p);
