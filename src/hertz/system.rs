@@ -1,11 +1,15 @@
 //! One discretisation of the closed Hertz problem for fixed `(γ, μ, c)`:
-//! `p = (1-t)^{-α} φ_p` on `[0,1]` and the stick shear `q` on `[0,c)` as
-//! piecewise polynomials on meshes graded geometrically toward `c` (both
-//! sides) and toward `1`; `q = μp` on `[c,1]`; E1 collocated at the nodes
-//! of `p`, E2 at the nodes of `q`; the coupled block system solved by a
-//! checked LU. Also the free-boundary residual `R(c)` of the solution.
+//! `p = (1-t)^{-α} φ_p` on `[0,1]` (the edge exponent factored out) and
+//! the stick shear `q = q_b + B·t/√(c²-t²)` on `[0,c)` with `q_b` bounded;
+//! `φ_p`, `q_b` are piecewise polynomials on meshes graded geometrically
+//! toward `c` (both sides, with extra layers when `c` or `1-c` is small)
+//! and toward `1`, degrees rising away from those points; `q = μp` on
+//! `[c,1]`. E1 is collocated at the nodes of `p`, E2 at the nodes of `q_b`
+//! and, as the extra equation for `B`, at `x → c⁻`. The free boundary is
+//! where `B = (2/π) R(c)` vanishes; `B` is a smooth function of `μ` and `c`
+//! because the singular part is represented exactly for every parameter.
 //! Owns this discretisation; it must not do root finding or refinement
-//! control (see `free_boundary.rs`, `solve.rs`).
+//! control (see `solve.rs`).
 use nalgebra::{DMatrix, DVector};
 
 use super::error::HertzError;
