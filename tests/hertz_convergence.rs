@@ -97,3 +97,27 @@ fn shear_becomes_continuous_at_c() {
     assert!(fine.shear_jump_at_c.abs() < 0.1 * coarse.shear_jump_at_c.abs());
     assert!(fine.shear_jump_at_c.abs() < 1e-4 * fine.mu);
 }
+
+#[test]
+fn equations_hold_between_the_nodes() {
+    // E1 and E2 evaluated at 199 points that are not collocation nodes;
+    // includes (ν=0.25, c=0.5), the entry that differs from Spence by 1e-3.
+    let xs: Vec<f64> = (1..200).map(|i| (i as f64 + 0.37) / 201.0).collect();
+    for (nu, c) in [(0.0, 0.5), (0.25, 0.5)] {
+        let coarse = solve_given_c(
+            nu,
+            c,
+            &HertzOptions {
+                tol: 1e-6,
+                max_level: 8,
+            },
+        )
+        .unwrap();
+        let fine = solve_given_c(nu, c, &HertzOptions::default()).unwrap();
+        let (c1, c2) = coarse.residuals(&xs).unwrap();
+        let (f1, f2) = fine.residuals(&xs).unwrap();
+        eprintln!("ν={nu} c={c}: residuals E1 {c1:.1e} → {f1:.1e}, E2 {c2:.1e} → {f2:.1e}");
+        assert!(f1 < 0.1 * c1 && f2 < 0.1 * c2);
+        assert!(f1 <= 1e-8 && f2 <= 1e-8);
+    }
+}

@@ -8,7 +8,7 @@ use nalgebra::DVector;
 use serde::Serialize;
 
 use super::error::HertzError;
-use super::operators::{kappa3, kappa4};
+use super::operators::{kappa1, kappa2, kappa3, kappa4};
 use crate::numeric::{Assembler, Mesh, Operator, PanelBasis};
 
 /// `p`, `q`, `μp` and `u` at one point.
@@ -170,6 +170,54 @@ impl HertzSolution {
             .map(|(a, b)| a * b)
             .sum();
         Ok(FRAC_2_PI / x * v)
+    }
+
+    /// A posteriori check: the largest absolute residuals of E1 on the
+    /// points `xs ∩ (0,1)` and of E2 on `xs ∩ (0,c)`, evaluated with the
+    /// product rules at points that are not collocation nodes.
+    pub fn residuals(&self, xs: &[f64]) -> Result<(f64, f64), HertzError> {
+        let (g, mu, c) = (self.gamma, self.mu, self.c);
+        let f = &self.fields;
+        let pa = Assembler::new(&f.p_basis)?;
+        let qa = match &f.q_basis {
+            Some(b) => Some((b, Assembler::new(b)?)),
+            None => None,
+        };
+        let dot =
+            |r: &[f64], v: &DVector<f64>| r.iter().zip(v.iter()).map(|(a, b)| a * b).sum::<f64>();
+        let row = |asm: &Assembler,
+                   op: &Operator,
+                   x: f64,
+                   w: (f64, f64)|
+         -> Result<Vec<f64>, HertzError> {
+            let mut r = vec![0.0; asm.basis().dim()];
+            asm.row_into(op, x, w, &mut r)?;
+            Ok(r)
+        };
+        let (k1, k2, k3, k4) = (kappa1(), kappa2(g), kappa3(g), kappa4());
+        let slip = (c.max(0.0), 1.0);
+        let (mut e1, mut e2) = (0.0f64, 0.0f64);
+        for &x in xs.iter().filter(|x| **x > 0.0 && **x < 1.0) {
+            let mut r = dot(&row(&pa, &k1, x, (0.0, 1.0))?, &f.p) - 1.0;
+            if mu > 0.0 && c < 1.0 {
+                r += mu * dot(&row(&pa, &k2, x, slip)?, &f.p);
+            }
+            if let Some((b, qasm)) = &qa {
+                r += dot(&row(qasm, &k2, x, b.support())?, &f.q);
+                r += f.q_singular * (-g * c + g * x * 0.5 * ((x + c) / (x - c).abs()).ln());
+            }
+            e1 = e1.max(r.abs());
+            if x < c
+                && let Some((b, qasm)) = &qa
+            {
+                let mut r = dot(&row(&pa, &k3, x, (0.0, 1.0))?, &f.p);
+                r += mu * dot(&row(&pa, &k4, x, slip)?, &f.p);
+                r += dot(&row(qasm, &k4, x, b.support())?, &f.q);
+                r -= f.q_singular * std::f64::consts::FRAC_PI_2 * x;
+                e2 = e2.max(r.abs());
+            }
+        }
+        Ok((e1, e2))
     }
 
     /// `p, q, μp, u` at the points `xs` (each in `[0, 1)`).
