@@ -2,7 +2,7 @@
 //! sequence and the refusal of singular systems, all through the public
 //! numeric layer.
 use lambdamat::numeric::elimination::{
-    System2, commutator_defect, solve_commutative, solve_coupled, solve_ordered,
+    System2, commutator_defect, solve_blocks, solve_commutative, solve_coupled, solve_ordered,
 };
 use lambdamat::numeric::solve::{CheckedLu, solve};
 use lambdamat::numeric::{Assembler, Factor, Mesh, NumericError, Operator, PanelBasis};
@@ -71,6 +71,13 @@ fn manufactured_system_coupled_ordered_and_commutative() {
         let c = solve_coupled(&s, 1e13).unwrap();
         assert!(max_dev(&c.p, |_| 1.0) <= 1e-10, "coupled p");
         assert!(max_dev(&c.q, |i| x[i]) <= 1e-10, "coupled q");
+        let (b, _) = solve_blocks(
+            &[vec![&m.k[0], &m.k[1]], vec![&m.k[2], &m.k[3]]],
+            &[&m.g1, &m.g2],
+            1e13,
+        )
+        .unwrap();
+        assert!((&b[0] - &c.p).amax() < 1e-14 && (&b[1] - &c.q).amax() < 1e-14);
         let o = solve_ordered(&s, 1e13).unwrap();
         assert!(max_dev(&o.p, |_| 1.0) <= 1e-10, "ordered p");
         assert!(max_dev(&o.q, |i| x[i]) <= 1e-10, "ordered q");

@@ -58,6 +58,49 @@ pub fn solve_coupled(s: &System2, max_cond: f64) -> Result<Solution2, NumericErr
     })
 }
 
+/// The coupled solve of an `n × n` block system `Σ_j K_ij u_j = g_i`
+/// (blocks as in [`System2`]); returns the coefficient vector of each
+/// unknown and the condition estimate.
+pub fn solve_blocks(
+    blocks: &[Vec<&DMatrix<f64>>],
+    rhs: &[&DVector<f64>],
+    max_cond: f64,
+) -> Result<(Vec<DVector<f64>>, f64), NumericError> {
+    if blocks.len() != rhs.len() {
+        return Err(NumericError::Dimension(format!(
+            "{} block rows, {} right sides",
+            blocks.len(),
+            rhs.len()
+        )));
+    }
+    let a = block_matrix(blocks)?;
+    let mut g = DVector::zeros(a.nrows());
+    let mut r0 = 0;
+    for r in rhs {
+        if r0 + r.len() > g.len() {
+            return Err(NumericError::Dimension(
+                "right sides longer than the system".into(),
+            ));
+        }
+        g.rows_mut(r0, r.len()).copy_from(r);
+        r0 += r.len();
+    }
+    if r0 != g.len() {
+        return Err(NumericError::Dimension(
+            "right sides shorter than the system".into(),
+        ));
+    }
+    let lu = CheckedLu::new(&a, max_cond)?;
+    let x = lu.solve(&g)?;
+    let mut out = Vec::new();
+    let mut c0 = 0;
+    for b in &blocks[0] {
+        out.push(x.rows(c0, b.ncols()).into_owned());
+        c0 += b.ncols();
+    }
+    Ok((out, lu.cond()))
+}
+
 /// The ordered elimination (exact for non-commuting operators):
 /// `(K11 - K12 K22⁻¹ K21) p = g1 - K12 K22⁻¹ g2`, then
 /// `q = K22⁻¹ (g2 - K21 p)`.
