@@ -57,6 +57,7 @@ fn bases() -> Vec<PanelBasis> {
 fn kappa1_of_one() {
     for b in bases() {
         let e = max_error(&kappa(1), |_| 1.0, |x| (1.0 - x * x).sqrt(), &b);
+        eprintln!("κ1[1] max error {e:.2e}");
         assert!(e <= 1e-13, "κ1[1]: {e:e}");
     }
 }
@@ -70,6 +71,7 @@ fn kappa4_of_one() {
             |x| x * x.ln() - x * (1.0 + (1.0 - x * x).sqrt()).ln(),
             &b,
         );
+        eprintln!("κ4[1] max error {e:.2e}");
         assert!(e <= 1e-13, "κ4[1]: {e:e}");
     }
 }
@@ -78,6 +80,7 @@ fn kappa4_of_one() {
 fn kappa3_of_one() {
     for b in bases() {
         let e = max_error(&kappa(3), |_| 1.0, |x| GAMMA * x, &b);
+        eprintln!("κ3[1] max error {e:.2e}");
         assert!(e <= 1e-13, "κ3[1]: {e:e}");
     }
 }
@@ -86,6 +89,7 @@ fn kappa3_of_one() {
 fn kappa4_of_x() {
     for b in bases() {
         let e = max_error(&kappa(4), |t| t, |x| -x * (1.0 - x * x).sqrt(), &b);
+        eprintln!("κ4[x] max error {e:.2e}");
         assert!(e <= 1e-13, "κ4[x]: {e:e}");
     }
 }
@@ -94,6 +98,7 @@ fn kappa4_of_x() {
 fn kappa2_of_x() {
     for b in bases() {
         let e = max_error(&kappa(2), |t| t, |x| GAMMA * (x * x - 0.5), &b);
+        eprintln!("κ2[x] max error {e:.2e}");
         assert!(e <= 1e-13, "κ2[x]: {e:e}");
     }
 }

@@ -84,10 +84,18 @@ fn manufactured_system_coupled_ordered_and_commutative() {
         // The commutative model is visibly wrong ...
         let w = solve_commutative(&s, &m.basis, 1e13).unwrap();
         let err = max_dev(&w.p, |_| 1.0);
+        eprintln!(
+            "γ={g:.4}: coupled p {:.1e} q {:.1e}; ordered p {:.1e} q {:.1e}; commutative p error {err:.2e}",
+            max_dev(&c.p, |_| 1.0),
+            max_dev(&c.q, |i| x[i]),
+            max_dev(&o.p, |_| 1.0),
+            max_dev(&o.q, |i| x[i])
+        );
         assert!(err > 0.5, "commutative model error {err}");
         // ... because κ4 and κ2 do not commute: O(1) defect.
         let f = DVector::from_vec(m.basis.interpolate(|t| t));
         let d = commutator_defect(&m.k[3], &m.k[1], &m.basis, &f).unwrap();
+        eprintln!("γ={g:.4}: defect ‖K4K2 f - K2K4 f‖/‖K4K2 f‖ = {d:.3} (f = x)");
         assert!(d > 0.5, "defect {d}");
     }
 }
@@ -121,6 +129,7 @@ fn punch(panels: usize, nodes: usize) -> (f64, f64) {
 #[test]
 fn frictionless_punch() {
     let (err, dp) = punch(3, 12);
+    eprintln!("punch: relative error of p {err:.1e}, |P* - 1| = {dp:.1e}");
     assert!(err <= 1e-12, "relative error of p {err:e}");
     assert!(dp <= 1e-12, "P* - 1 = {dp:e}");
 }
@@ -128,6 +137,7 @@ fn frictionless_punch() {
 #[test]
 fn punch_converges_under_refinement() {
     let errs: Vec<(f64, f64)> = [2, 3, 4, 6, 8].iter().map(|&n| punch(1, n)).collect();
+    eprintln!("punch (p error, P* error) for 2,3,4,6,8 nodes: {errs:?}");
     for w in errs.windows(2) {
         assert!(w[1].0 < 0.5 * w[0].0, "p errors do not decrease: {errs:?}");
         assert!(w[1].1 < 0.5 * w[0].1, "P* errors do not decrease: {errs:?}");
