@@ -210,7 +210,8 @@ pub fn solve_given_mu(nu: f64, mu: f64, opts: &HertzOptions) -> Result<HertzSolu
         let search = Search {
             start: (2.0 * (-gamma / mu).exp()).clamp(2e-3, 0.9),
             increasing: true,
-            range: (0.0, 1.0),
+            // Stick zones below 1e-7 are far outside the reliable range.
+            range: (1e-7, 1.0),
             relative: true,
         };
         let (c, slope) = find_root(&mut f, &levels, &search, opts.tol)?;

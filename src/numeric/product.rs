@@ -60,7 +60,7 @@ pub fn pow_fast(d: f64, e: f64) -> f64 {
 }
 
 fn same_point(z: f64, e: f64) -> bool {
-    (z - e).abs() <= 4.0 * f64::EPSILON * e.abs().max(1.0)
+    (z - e).abs() <= 4.0 * f64::EPSILON * e.abs().max(z.abs())
 }
 
 /// Appends nodes `t` and weights `w` such that
