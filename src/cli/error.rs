@@ -19,9 +19,16 @@ pub enum CliError {
     /// The source text is invalid (syntax or meaning), with positions.
     #[error(transparent)]
     Lang(#[from] Box<LangErrors>),
-    /// A command-line value does not fit the file (e.g. an unknown symbol).
+    /// A command-line value does not fit the file (e.g. an unknown symbol)
+    /// or a parameter is outside its range.
     #[error("{0}")]
     Invalid(String),
+    /// The command line is incomplete or contradictory.
+    #[error("{0}")]
+    Usage(String),
+    /// A numerical computation refused or failed (singular, no convergence).
+    #[error("numerical failure: {0}")]
+    Numeric(String),
     /// The Smith computation refused or failed.
     #[error(transparent)]
     Smith(#[from] SmithError),
@@ -36,7 +43,8 @@ impl CliError {
         match self {
             CliError::Io { .. } | CliError::Lang(_) | CliError::Invalid(_) => 2,
             CliError::Smith(SmithError::TooManyMinors(_)) => 2,
-            CliError::Smith(_) | CliError::Output(_) => 3,
+            CliError::Usage(_) => 1,
+            CliError::Smith(_) | CliError::Numeric(_) | CliError::Output(_) => 3,
         }
     }
 

@@ -5,10 +5,14 @@
 //!
 //! * [`error`]: the top-level error and its exit codes;
 //! * [`render`]: matrices, certificates and reports as text and LaTeX;
+//! * [`hertz`]: the flagship Hertz problem (solve, table, sweep);
+//! * [`plot`]: SVG plots;
 //! * [`smith`]: the `smith` command and the Smith part of `run`;
 //! * [`run`]: the `run` command (everything a file asks for).
 
 pub mod error;
+pub mod hertz;
+pub mod plot;
 pub mod render;
 pub mod run;
 pub mod smith;
@@ -32,7 +36,7 @@ pub struct Cli {
 
 #[derive(Subcommand, Debug)]
 enum Command {
-    /// Do everything the file asks for (its `smith` and `check smith` directives, in order).
+    /// Do everything the file asks for (its directives, in order).
     Run(RunArgs),
     /// Certified Smith normal form (U, D, V) of the file's matrices.
     ///
@@ -42,6 +46,12 @@ enum Command {
     /// Several symbols and no principal one: invariant factors over Q[all]
     /// from determinantal divisors (no U, V claimed: Q[all] is not a PID).
     Smith(SmithArgs),
+    /// The Hertz contact problem with finite friction, solved exactly (docs/hertz.md).
+    ///
+    /// `hertz --nu 0.25 --mu 0.1801` finds the stick radius c; `--c 0.5`
+    /// finds μ instead. `hertz table` reproduces the seed paper's tables
+    /// beside our values; `hertz sweep` solves a ν × μ grid in parallel.
+    Hertz(hertz::HertzArgs),
 }
 
 /// Output options shared by the commands.
@@ -102,6 +112,7 @@ pub fn main() -> i32 {
     let result = match cli.command {
         Command::Run(a) => run::run(&a.file, &a.out, &mut stdout),
         Command::Smith(a) => smith::smith_command(&a, &mut stdout),
+        Command::Hertz(a) => hertz::hertz_command(&a, &mut stdout),
     };
     let _ = stdout.flush();
     match result {

@@ -1,0 +1,576 @@
+//! `lambdamat hertz`: the flagship Hertz contact problem with finite
+//! friction. One solve from (ν, c) or (ν, μ) with text/JSON/CSV/SVG output,
+//! `hertz table` (the seed paper's Tables 1 and 2 beside our values and the
+//! seed's literal algorithm) and `hertz sweep` (a ν × μ grid in parallel).
+//! All numerics come from [`crate::hertz`]; this file only formats.
+
+use super::error::CliError;
+use crate::hertz::seed::seed_literal;
+use crate::hertz::{HertzOptions, HertzSolution, solve_given_c, solve_given_mu};
+use clap::{Args, Subcommand};
+use indicatif::{ProgressBar, ProgressStyle};
+use rayon::prelude::*;
+use std::fmt::Write as _;
+use std::io::Write;
+use std::path::PathBuf;
+
+/// Arguments of `lambdamat hertz`.
+#[derive(Args, Debug)]
+#[command(args_conflicts_with_subcommands = true)]
+pub struct HertzArgs {
+    #[command(subcommand)]
+    sub: Option<HertzSub>,
+    /// Poisson's ratio ν in [0, 1/2).
+    #[arg(long)]
+    nu: Option<f64>,
+    /// Stick radius c in (0, 1): find μ.
+    #[arg(long, conflicts_with = "mu")]
+    c: Option<f64>,
+    /// Friction coefficient μ ≥ 0: find c.
+    #[arg(long)]
+    mu: Option<f64>,
+    /// Target accuracy: refine until successive levels agree to this.
+    #[arg(long, default_value_t = 1e-10)]
+    tol: f64,
+    /// Print one JSON object instead of text.
+    #[arg(long)]
+    json: bool,
+    /// Write x, p, q, mu_p, u on a fine grid to this CSV file.
+    #[arg(long, value_name = "FILE")]
+    csv: Option<PathBuf>,
+    /// Draw p, q, μp and u against x (c marked) into this SVG file.
+    #[arg(long, value_name = "FILE.svg")]
+    plot: Option<PathBuf>,
+}
+
+#[derive(Subcommand, Debug)]
+enum HertzSub {
+    /// The seed paper's Tables 1 and 2 beside our values (Markdown, or CSV with --csv).
+    Table {
+        /// Print CSV instead of Markdown.
+        #[arg(long)]
+        csv: bool,
+        /// Target accuracy of our solves.
+        #[arg(long, default_value_t = 1e-10)]
+        tol: f64,
+    },
+    /// Solve on a ν × μ grid in parallel; CSV (default) or JSON lines.
+    Sweep {
+        /// ν range as START:END:COUNT, e.g. 0:0.45:10.
+        #[arg(long, value_name = "START:END:COUNT")]
+        nu: String,
+        /// μ range as START:END:COUNT, e.g. 0.1:1:10.
+        #[arg(long, value_name = "START:END:COUNT")]
+        mu: String,
+        /// Target accuracy of each solve.
+        #[arg(long, default_value_t = 1e-8)]
+        tol: f64,
+        /// Print JSON lines instead of CSV.
+        #[arg(long)]
+        jsonl: bool,
+        /// Write to this file instead of standard output.
+        #[arg(long, short, value_name = "FILE")]
+        out: Option<PathBuf>,
+    },
+}
+
+fn hertz_err(e: crate::hertz::HertzError) -> CliError {
+    match e {
+        crate::hertz::HertzError::InvalidParameter(m) => CliError::Invalid(m),
+        other => CliError::Numeric(other.to_string()),
+    }
+}
+
+/// `lambdamat hertz …`.
+pub fn hertz_command(a: &HertzArgs, w: &mut dyn Write) -> Result<(), CliError> {
+    match &a.sub {
+        Some(HertzSub::Table { csv, tol }) => return table(*csv, *tol, w),
+        Some(HertzSub::Sweep {
+            nu,
+            mu,
+            tol,
+            jsonl,
+            out,
+        }) => return sweep(nu, mu, *tol, *jsonl, out.as_ref(), w),
+        None => {}
+    }
+    let nu = a.nu.ok_or_else(|| {
+        CliError::Usage(
+            "hertz needs --nu N and one of --c C or --mu M (or a subcommand: table, sweep)".into(),
+        )
+    })?;
+    if !(a.tol > 0.0 && a.tol.is_finite()) {
+        return Err(CliError::Invalid(format!(
+            "--tol must be positive, got {}",
+            a.tol
+        )));
+    }
+    let opts = HertzOptions {
+        tol: a.tol,
+        ..HertzOptions::default()
+    };
+    let s = match (a.c, a.mu) {
+        (Some(c), None) => solve_given_c(nu, c, &opts),
+        (None, Some(mu)) => solve_given_mu(nu, mu, &opts),
+        _ => {
+            return Err(CliError::Usage(
+                "give exactly one of --c C or --mu M".into(),
+            ));
+        }
+    }
+    .map_err(hertz_err)?;
+    if let Some(path) = &a.csv {
+        write_csv(&s, path)?;
+    }
+    if let Some(path) = &a.plot {
+        super::plot::hertz_plot(&s, path)?;
+    }
+    if a.json {
+        writeln!(
+            w,
+            "{}",
+            serde_json::to_string_pretty(&s).map_err(|e| CliError::Invalid(e.to_string()))?
+        )?;
+    } else {
+        write!(w, "{}", text(&s, a.c.is_some()))?;
+        if let Some(p) = &a.csv {
+            writeln!(w, "wrote {}", p.display())?;
+        }
+        if let Some(p) = &a.plot {
+            writeln!(w, "wrote {}", p.display())?;
+        }
+    }
+    if !s.converged {
+        eprintln!(
+            "warning: tolerance {} not reached; the error estimate {:.1e} is the honest one",
+            s.tol, s.error_estimate
+        );
+    }
+    Ok(())
+}
+
+fn ok(b: bool) -> &'static str {
+    if b { "ok" } else { "VIOLATED" }
+}
+
+fn text(s: &HertzSolution, given_c: bool) -> String {
+    let mut o = String::new();
+    let _ = writeln!(
+        o,
+        "Hertz contact with finite friction: ν = {}, γ = (1-2ν)/(2-2ν) = {:.15}",
+        s.nu, s.gamma
+    );
+    if given_c {
+        let _ = writeln!(o, "  given c = {}  →  μ = {:.13}", s.c, s.mu);
+    } else {
+        let _ = writeln!(o, "  given μ = {}  →  c = {:.13}", s.mu, s.c);
+    }
+    let _ = writeln!(o, "  edge exponent α = arccot(γμ)/π = {:.15}", s.alpha);
+    let _ = writeln!(
+        o,
+        "  compliance P* = (π/2)∫x p dx       = {:.15}",
+        s.compliance
+    );
+    let _ = writeln!(
+        o,
+        "  P* = 1 + γ∫q(1-√(1-t²))dt          = {:.15}",
+        s.compliance_via_shear
+    );
+    let _ = writeln!(
+        o,
+        "  difference of the two formulas     = {:.1e}",
+        s.compliance_difference
+    );
+    let _ = writeln!(
+        o,
+        "  error estimate {:.1e} (successive refinement levels, {} levels, {} unknowns; tolerance {:.0e} {})",
+        s.error_estimate,
+        s.levels,
+        s.unknowns,
+        s.tol,
+        if s.converged {
+            "reached"
+        } else {
+            "NOT reached"
+        }
+    );
+    let _ = writeln!(
+        o,
+        "  checks: stick q < μp on [0,c): {}; slip u < 0 on (c,1]: {}",
+        ok(s.stick_ok),
+        ok(s.slip_ok)
+    );
+    let _ = writeln!(
+        o,
+        "          shear jump q(c⁻) - μp(c) = {:.1e}, E2 residual at c = {:.1e}",
+        s.shear_jump_at_c, s.residual_c
+    );
+    o
+}
+
+fn write_csv(s: &HertzSolution, path: &PathBuf) -> Result<(), CliError> {
+    let samples = s.profile(400).map_err(hertz_err)?;
+    let mut out = String::from("x,p,q,mu_p,u\n");
+    for p in samples {
+        let _ = writeln!(
+            out,
+            "{:.16e},{:.16e},{:.16e},{:.16e},{:.16e}",
+            p.x, p.p, p.q, p.mu_p, p.u
+        );
+    }
+    std::fs::write(path, out)?;
+    Ok(())
+}
+
+/// One row of the seed's Table 1: μ, ν and the published c1 (Spence), c2, c3.
+const TABLE1: [(f64, f64, Option<f64>, f64, f64); 14] = [
+    (0.1387, 0.0, None, 0.0750, 0.0913),
+    (0.1387, 0.25, Some(0.3000), 0.3083, 0.3028),
+    (0.1801, 0.0, None, 0.1750, 0.2041),
+    (0.1801, 0.25, Some(0.5000), 0.5083, 0.5083),
+    (0.2063, 0.0, Some(0.2400), 0.2417, 0.2739),
+    (0.2063, 0.25, None, 0.6083, 0.6124),
+    (0.2843, 0.0, None, 0.4750, 0.4743),
+    (0.2843, 0.25, Some(0.8000), 0.8083, 0.8010),
+    (0.2986, 0.0, Some(0.5000), 0.5083, 0.5083),
+    (0.2986, 0.25, None, 0.8250, 0.8317),
+    (0.4013, 0.0, Some(0.7000), 0.7083, 0.7072),
+    (0.4013, 0.25, None, 0.9250, 0.9265),
+    (0.4862, 0.0, Some(0.8000), 0.8083, 0.8010),
+    (0.4862, 0.25, None, 0.9750, 0.9618),
+];
+
+/// The seed's Table 2: (c, μ) pairs used for every ν.
+const TABLE2_PAIRS: [(f64, f64); 3] = [(0.24, 0.2063), (0.5, 0.2986), (0.7, 0.4013)];
+const TABLE2_NU: [f64; 4] = [0.0, 0.125, 0.25, 0.375];
+
+fn fmt_opt(v: Option<f64>, digits: usize) -> String {
+    v.map_or("-".to_string(), |x| format!("{x:.digits$}"))
+}
+
+fn seed_cell(nu: f64, mu: f64, c: f64, tol: f64) -> String {
+    match seed_literal(nu, mu, c, 4, tol) {
+        Ok(r) => {
+            let seq: Vec<String> = r
+                .levels
+                .iter()
+                .map(|l| {
+                    l.compliance
+                        .map_or("refused".to_string(), |p| format!("{p:.4}"))
+                })
+                .collect();
+            if r.converged {
+                format!("{}", fmt_opt(r.compliance, 6))
+            } else {
+                format!("no convergence: {}", seq.join(" → "))
+            }
+        }
+        Err(e) => format!("refused: {e}"),
+    }
+}
+
+fn table(csv: bool, tol: f64, w: &mut dyn Write) -> Result<(), CliError> {
+    let opts = HertzOptions {
+        tol,
+        ..HertzOptions::default()
+    };
+    // Table 1: our c for the published μ; our μ for Spence's c1.
+    let rows1: Vec<Vec<String>> = TABLE1
+        .par_iter()
+        .map(|&(mu, nu, c1, c2, c3)| {
+            let by_mu = solve_given_mu(nu, mu, &opts);
+            let by_c = c1.map(|c| solve_given_c(nu, c, &opts));
+            let (c_ours, pstar, est) = match &by_mu {
+                Ok(s) => (
+                    format!("{:.6}", s.c),
+                    format!("{:.10}", s.compliance),
+                    format!("{:.0e}", s.error_estimate),
+                ),
+                Err(e) => (format!("error: {e}"), "-".into(), "-".into()),
+            };
+            let mu_c1 = match &by_c {
+                Some(Ok(s)) => format!("{:.6} ({:+.1e})", s.mu, s.mu - mu),
+                Some(Err(e)) => format!("error: {e}"),
+                None => "-".into(),
+            };
+            let seed = match &by_mu {
+                Ok(s) => seed_cell(nu, mu, s.c, tol),
+                Err(_) => "-".into(),
+            };
+            vec![
+                format!("{mu}"),
+                format!("{nu}"),
+                fmt_opt(c1, 4),
+                format!("{c2:.4}"),
+                format!("{c3:.4}"),
+                c_ours,
+                mu_c1,
+                pstar,
+                est,
+                seed,
+            ]
+        })
+        .collect();
+    let head1 = [
+        "μ",
+        "ν",
+        "seed c1 (Spence)",
+        "seed c2",
+        "seed c3",
+        "our c(μ)",
+        "our μ(c1) (ours − μ)",
+        "our P*",
+        "error est.",
+        "seed's literal algorithm: P*",
+    ];
+    let rows2: Vec<Vec<String>> = TABLE2_NU
+        .iter()
+        .flat_map(|&nu| TABLE2_PAIRS.iter().map(move |&(c, mu)| (nu, c, mu)))
+        .collect::<Vec<_>>()
+        .par_iter()
+        .map(|&(nu, c, mu)| match solve_given_c(nu, c, &opts) {
+            Ok(s) => vec![
+                format!("{nu}"),
+                format!("{c}"),
+                format!("{mu}"),
+                format!("{:.6}", s.mu),
+                format!("{:.10}", s.compliance),
+                format!("{:.0e}", s.error_estimate),
+            ],
+            Err(e) => vec![
+                format!("{nu}"),
+                format!("{c}"),
+                format!("{mu}"),
+                format!("error: {e}"),
+                "-".into(),
+                "-".into(),
+            ],
+        })
+        .collect();
+    let head2 = ["ν", "c", "seed μ", "our μ(c)", "our P*", "error est."];
+    if csv {
+        writeln!(w, "# table 1")?;
+        write_csv_rows(w, &head1, &rows1)?;
+        writeln!(w, "# table 2")?;
+        write_csv_rows(w, &head2, &rows2)?;
+        return Ok(());
+    }
+    writeln!(
+        w,
+        "Table 1 of the seed paper (c for given μ; ν = 0 and 0.25) beside lambdamat\n"
+    )?;
+    write_md(w, &head1, &rows1)?;
+    writeln!(
+        w,
+        "\nc1: Spence (1975); c2, c3: Gauthier et al. (LCP), as printed in the seed. Ours: the exact stick/slip problem of\n\
+         docs/hertz.md; the error estimate is the change between the last two refinement levels. The last column runs the\n\
+         seed's own algorithm (eq. 2.4 on [c,1], eq. 3.3 on [0,c)) at our c with the same numerics, levels 0..4.\n"
+    )?;
+    writeln!(
+        w,
+        "Table 2 of the seed paper (the same (c, μ) pairs for every ν) beside lambdamat\n"
+    )?;
+    write_md(w, &head2, &rows2)?;
+    writeln!(
+        w,
+        "\nThe seed uses ν = 0 pairs (c, μ) for every ν; in the exact problem μ(c) depends on ν, as the fourth column shows."
+    )?;
+    Ok(())
+}
+
+fn write_md(w: &mut dyn Write, head: &[&str], rows: &[Vec<String>]) -> Result<(), CliError> {
+    writeln!(w, "| {} |", head.join(" | "))?;
+    writeln!(w, "|{}", "---|".repeat(head.len()))?;
+    for r in rows {
+        writeln!(w, "| {} |", r.join(" | "))?;
+    }
+    Ok(())
+}
+
+fn csv_field(s: &str) -> String {
+    if s.contains(',') || s.contains('"') {
+        format!("\"{}\"", s.replace('"', "\"\""))
+    } else {
+        s.to_string()
+    }
+}
+
+fn write_csv_rows(w: &mut dyn Write, head: &[&str], rows: &[Vec<String>]) -> Result<(), CliError> {
+    writeln!(
+        w,
+        "{}",
+        head.iter()
+            .map(|h| csv_field(h))
+            .collect::<Vec<_>>()
+            .join(",")
+    )?;
+    for r in rows {
+        writeln!(
+            w,
+            "{}",
+            r.iter().map(|h| csv_field(h)).collect::<Vec<_>>().join(",")
+        )?;
+    }
+    Ok(())
+}
+
+/// Parses `START:END:COUNT` into `COUNT` evenly spaced values.
+pub fn parse_range(flag: &str, s: &str) -> Result<Vec<f64>, CliError> {
+    let bad = || {
+        CliError::Usage(format!(
+            "--{flag} {s}: expected START:END:COUNT, e.g. 0:0.45:10"
+        ))
+    };
+    let parts: Vec<&str> = s.split(':').collect();
+    let [a, b, n] = parts.as_slice() else {
+        return Err(bad());
+    };
+    let (a, b): (f64, f64) = (
+        a.trim().parse().map_err(|_| bad())?,
+        b.trim().parse().map_err(|_| bad())?,
+    );
+    let n: usize = n.trim().parse().map_err(|_| bad())?;
+    if n == 0 || !a.is_finite() || !b.is_finite() {
+        return Err(bad());
+    }
+    Ok(if n == 1 {
+        vec![a]
+    } else {
+        (0..n)
+            .map(|k| a + (b - a) * k as f64 / (n - 1) as f64)
+            .collect()
+    })
+}
+
+#[derive(serde::Serialize)]
+struct SweepRow {
+    nu: f64,
+    mu: f64,
+    c: Option<f64>,
+    alpha: Option<f64>,
+    compliance: Option<f64>,
+    compliance_via_shear: Option<f64>,
+    error_estimate: Option<f64>,
+    stick_ok: Option<bool>,
+    slip_ok: Option<bool>,
+    error: Option<String>,
+}
+
+fn sweep(
+    nu: &str,
+    mu: &str,
+    tol: f64,
+    jsonl: bool,
+    out: Option<&PathBuf>,
+    w: &mut dyn Write,
+) -> Result<(), CliError> {
+    let nus = parse_range("nu", nu)?;
+    let mus = parse_range("mu", mu)?;
+    let grid: Vec<(f64, f64)> = nus
+        .iter()
+        .flat_map(|&n| mus.iter().map(move |&m| (n, m)))
+        .collect();
+    let bar = ProgressBar::new(grid.len() as u64);
+    bar.set_style(
+        ProgressStyle::with_template("{bar:40} {pos}/{len} solves, {elapsed} elapsed, eta {eta}")
+            .unwrap_or_else(|_| ProgressStyle::default_bar()),
+    );
+    let opts = HertzOptions {
+        tol,
+        ..HertzOptions::default()
+    };
+    let rows: Vec<SweepRow> = grid
+        .par_iter()
+        .map(|&(nu, mu)| {
+            let r = solve_given_mu(nu, mu, &opts);
+            bar.inc(1);
+            match r {
+                Ok(s) => SweepRow {
+                    nu,
+                    mu,
+                    c: Some(s.c),
+                    alpha: Some(s.alpha),
+                    compliance: Some(s.compliance),
+                    compliance_via_shear: Some(s.compliance_via_shear),
+                    error_estimate: Some(s.error_estimate),
+                    stick_ok: Some(s.stick_ok),
+                    slip_ok: Some(s.slip_ok),
+                    error: None,
+                },
+                Err(e) => SweepRow {
+                    nu,
+                    mu,
+                    c: None,
+                    alpha: None,
+                    compliance: None,
+                    compliance_via_shear: None,
+                    error_estimate: None,
+                    stick_ok: None,
+                    slip_ok: None,
+                    error: Some(e.to_string()),
+                },
+            }
+        })
+        .collect();
+    bar.finish_and_clear();
+    let mut text = String::new();
+    if jsonl {
+        for r in &rows {
+            let _ = writeln!(
+                text,
+                "{}",
+                serde_json::to_string(r).map_err(|e| CliError::Invalid(e.to_string()))?
+            );
+        }
+    } else {
+        text.push_str(
+            "nu,mu,c,alpha,compliance,compliance_via_shear,error_estimate,stick_ok,slip_ok,error\n",
+        );
+        let f = |v: Option<f64>| v.map_or(String::new(), |x| format!("{x:.15e}"));
+        let b = |v: Option<bool>| v.map_or(String::new(), |x| x.to_string());
+        for r in &rows {
+            let _ = writeln!(
+                text,
+                "{},{},{},{},{},{},{},{},{},{}",
+                r.nu,
+                r.mu,
+                f(r.c),
+                f(r.alpha),
+                f(r.compliance),
+                f(r.compliance_via_shear),
+                f(r.error_estimate),
+                b(r.stick_ok),
+                b(r.slip_ok),
+                r.error.as_deref().map(csv_field).unwrap_or_default()
+            );
+        }
+    }
+    match out {
+        Some(p) => std::fs::write(p, text)?,
+        None => w.write_all(text.as_bytes())?,
+    }
+    // Physical checks over the whole sweep, on standard error.
+    let solved: Vec<&SweepRow> = rows.iter().filter(|r| r.c.is_some()).collect();
+    let failed = rows.len() - solved.len();
+    let phys = solved.iter().filter(|r| r.mu > 0.0).all(|r| {
+        r.stick_ok == Some(true)
+            && r.slip_ok == Some(true)
+            && r.c.is_some_and(|c| c > 0.0 && c < 1.0)
+    });
+    let monotone = nus.iter().all(|&n| {
+        let cs: Vec<f64> = solved
+            .iter()
+            .filter(|r| r.nu == n)
+            .filter_map(|r| r.c)
+            .collect();
+        cs.windows(2).all(|p| p[1] >= p[0])
+    });
+    eprintln!(
+        "sweep: {} solves, {} refused; physical checks (stick, slip, 0 < c < 1): {}; c non-decreasing in μ: {}",
+        rows.len(),
+        failed,
+        if phys { "all hold" } else { "SOME FAIL" },
+        if monotone { "yes" } else { "NO" }
+    );
+    Ok(())
+}

@@ -1,0 +1,179 @@
+//! End-to-end tests of `lambdamat hertz`: JSON keys and values of a solve,
+//! the frictionless limit, Spence's published pair, CSV/SVG files, the
+//! seed-table reproduction, a small sweep, and bad input.
+
+use assert_cmd::Command;
+use predicates::prelude::*;
+use serde_json::Value;
+
+fn lambdamat() -> Command {
+    Command::cargo_bin("lambdamat").expect("binary builds")
+}
+
+fn solve(args: &[&str]) -> Value {
+    let out = lambdamat()
+        .arg("hertz")
+        .args(args)
+        .arg("--json")
+        .output()
+        .expect("runs");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).expect("JSON")
+}
+
+fn num(v: &Value, k: &str) -> f64 {
+    v[k].as_f64()
+        .unwrap_or_else(|| panic!("{k} missing or not a number in {v}"))
+}
+
+#[test]
+fn solve_given_c_reports_all_keys_and_agrees_with_spence() {
+    let v = solve(&["--nu", "0", "--c", "0.5"]);
+    for k in [
+        "nu",
+        "gamma",
+        "mu",
+        "c",
+        "alpha",
+        "compliance",
+        "compliance_via_shear",
+        "error_estimate",
+        "stick_ok",
+        "slip_ok",
+    ] {
+        assert!(v.get(k).is_some(), "key {k} missing");
+    }
+    // Spence (seed Table 1): c = 0.50 at μ = 0.2986 for ν = 0 (four digits).
+    assert!((num(&v, "mu") - 0.2986).abs() < 1e-3, "{v}");
+    assert!(num(&v, "error_estimate") <= 1e-9);
+    assert!((num(&v, "compliance") - num(&v, "compliance_via_shear")).abs() < 1e-11);
+    assert_eq!(v["stick_ok"], true);
+    assert_eq!(v["slip_ok"], true);
+    // α = arccot(γμ)/π with γ = 1/2 at ν = 0.
+    let alpha = (1.0 / (0.5 * num(&v, "mu"))).atan() / std::f64::consts::PI;
+    assert!((num(&v, "alpha") - alpha).abs() < 1e-14);
+}
+
+#[test]
+fn frictionless_limit_gives_unit_compliance() {
+    let v = solve(&["--nu", "0.3", "--mu", "0"]);
+    assert!((num(&v, "compliance") - 1.0).abs() < 1e-12, "{v}");
+    assert!((num(&v, "alpha") - 0.5).abs() < 1e-15);
+}
+
+#[test]
+fn given_mu_inverts_given_c() {
+    let by_c = solve(&["--nu", "0.25", "--c", "0.3"]);
+    let mu = format!("{}", num(&by_c, "mu"));
+    let by_mu = solve(&["--nu", "0.25", "--mu", &mu]);
+    assert!((num(&by_mu, "c") - 0.3).abs() < 1e-8, "{by_mu}");
+    assert!((num(&by_mu, "compliance") - num(&by_c, "compliance")).abs() < 1e-9);
+}
+
+#[test]
+fn csv_and_svg_files_are_written() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let csv = dir.path().join("h.csv");
+    let svg = dir.path().join("h.svg");
+    lambdamat()
+        .args([
+            "hertz", "--nu", "0", "--mu", "0.3", "--tol", "1e-8", "--csv",
+        ])
+        .arg(&csv)
+        .arg("--plot")
+        .arg(&svg)
+        .assert()
+        .success()
+        .stdout(predicate::str::contains("compliance P*"));
+    let text = std::fs::read_to_string(&csv).expect("csv");
+    let mut lines = text.lines();
+    assert_eq!(lines.next(), Some("x,p,q,mu_p,u"));
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|x| x.parse().expect("number")).collect())
+        .collect();
+    assert!(rows.len() > 300);
+    // u = 0 in the stick zone, u < 0 in the slip zone near the edge.
+    assert!(rows.iter().any(|r| r[4] < 0.0));
+    let svg = std::fs::read_to_string(&svg).expect("svg");
+    assert!(svg.starts_with("<svg") && svg.contains("stick | slip"));
+}
+
+#[test]
+fn table_reproduces_spence_and_shows_the_seed_algorithm_failing() {
+    let out = lambdamat()
+        .args(["hertz", "table", "--csv", "--tol", "1e-9"])
+        .output()
+        .expect("runs");
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).expect("utf-8");
+    let table1: Vec<&str> = text
+        .lines()
+        .skip(2)
+        .take_while(|l| !l.starts_with('#'))
+        .collect();
+    assert_eq!(table1.len(), 14);
+    let mut spence_rows = 0;
+    for row in &table1 {
+        // "our μ(c1)" column: "0.298715 (+1.1e-4)" when Spence's c1 exists.
+        if let Some(start) = row.find(" (") {
+            let diff: f64 = row[start + 2..]
+                .split(')')
+                .next()
+                .expect("diff")
+                .parse()
+                .expect("number");
+            assert!(diff.abs() < 1.1e-3, "{row}");
+            spence_rows += 1;
+        }
+        assert!(
+            row.contains("no convergence"),
+            "the seed's literal algorithm converged? {row}"
+        );
+    }
+    assert_eq!(spence_rows, 7);
+}
+
+#[test]
+fn sweep_writes_a_grid_and_checks_physics() {
+    lambdamat()
+        .args([
+            "hertz",
+            "sweep",
+            "--nu",
+            "0:0.4:2",
+            "--mu",
+            "0.15:0.45:3",
+            "--tol",
+            "1e-7",
+        ])
+        .assert()
+        .success()
+        .stdout(predicate::function(|s: &str| s.lines().count() == 7))
+        .stderr(predicate::str::contains("all hold"))
+        .stderr(predicate::str::contains("c non-decreasing in μ: yes"));
+}
+
+#[test]
+fn bad_parameters_and_usage() {
+    lambdamat()
+        .args(["hertz", "--nu", "0.7", "--mu", "0.2"])
+        .assert()
+        .code(2);
+    lambdamat()
+        .args(["hertz", "--nu", "0.2", "--c", "1.5"])
+        .assert()
+        .code(2);
+    lambdamat().args(["hertz", "--nu", "0.2"]).assert().code(1);
+    lambdamat()
+        .args(["hertz", "--nu", "0.2", "--c", "0.3", "--mu", "0.2"])
+        .assert()
+        .code(1);
+    lambdamat()
+        .args(["hertz", "sweep", "--nu", "0:1", "--mu", "1:2:3"])
+        .assert()
+        .code(1);
+}
