@@ -260,7 +260,7 @@ fn seed_cell(nu: f64, mu: f64, c: f64, tol: f64) -> String {
                 })
                 .collect();
             if r.converged {
-                format!("{}", fmt_opt(r.compliance, 6))
+                fmt_opt(r.compliance, 6)
             } else {
                 format!("no convergence: {}", seq.join(" → "))
             }

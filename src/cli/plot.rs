@@ -7,6 +7,14 @@ use crate::hertz::HertzSolution;
 use plotters::prelude::*;
 use std::path::Path;
 
+/// A curve: legend, colour, stroke width and the field it draws.
+type Series = (
+    &'static str,
+    RGBColor,
+    u32,
+    fn(&crate::hertz::Sample) -> f64,
+);
+
 fn plot_err(e: impl std::fmt::Display) -> CliError {
     CliError::Output(std::io::Error::other(format!("plot: {e}")))
 }
@@ -49,7 +57,7 @@ pub fn hertz_plot(s: &HertzSolution, path: &Path) -> Result<(), CliError> {
         .draw()
         .map_err(plot_err)?;
     // μp before q: in the slip zone q = μp and q is drawn on top.
-    let series: [(&str, RGBColor, u32, fn(&crate::hertz::Sample) -> f64); 4] = [
+    let series: [Series; 4] = [
         ("p (normal stress)", BLUE, 2, |p| p.p),
         ("μp", GREEN, 4, |p| p.mu_p),
         ("q (shear stress; = μp for x > c)", RED, 2, |p| p.q),
