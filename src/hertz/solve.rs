@@ -152,23 +152,8 @@ pub fn solve_given_c(nu: f64, c: f64, opts: &HertzOptions) -> Result<HertzSoluti
             pstar,
             pstar_shear,
         };
-        let est = levels
-            .last()
-            .map(|l| this.distance(l) + 2.0 * root_tolerance(opts.tol));
-        levels.push(this);
-        let converged = est.is_some_and(|e| e <= opts.tol);
-        if converged || k == opts.max_level {
-            return finish(
-                nu,
-                gamma,
-                c,
-                &frame,
-                d,
-                &levels,
-                est.unwrap_or(f64::INFINITY),
-                converged,
-                opts.tol,
-            );
+        if let Some(done) = close_level(&mut levels, this, k, opts, (nu, gamma, c), &frame, d) {
+            return done;
         }
     }
     Err(HertzError::NoConvergence("empty level ladder".into()))
@@ -230,23 +215,8 @@ pub fn solve_given_mu(nu: f64, mu: f64, opts: &HertzOptions) -> Result<HertzSolu
             pstar,
             pstar_shear,
         };
-        let est = levels
-            .last()
-            .map(|l| this.distance(l) + 2.0 * root_tolerance(opts.tol));
-        levels.push(this);
-        let converged = est.is_some_and(|e| e <= opts.tol);
-        if converged || k == opts.max_level {
-            return finish(
-                nu,
-                gamma,
-                c,
-                &frame,
-                d,
-                &levels,
-                est.unwrap_or(f64::INFINITY),
-                converged,
-                opts.tol,
-            );
+        if let Some(done) = close_level(&mut levels, this, k, opts, (nu, gamma, c), &frame, d) {
+            return done;
         }
     }
     Err(HertzError::NoConvergence("empty level ladder".into()))
@@ -346,6 +316,37 @@ where
             "the free-boundary residual changes sign across a pole near {x:.6e} (value {fx:.3e}), not a root"
         )))
     }
+}
+
+/// Records one refinement level; once successive levels agree to the
+/// tolerance (or the ladder ends) returns the finished solution.
+fn close_level(
+    levels: &mut Vec<Level>,
+    this: Level,
+    k: usize,
+    opts: &HertzOptions,
+    (nu, gamma, c): (f64, f64, f64),
+    frame: &Frame,
+    d: Discrete,
+) -> Option<Result<HertzSolution, HertzError>> {
+    let est = levels
+        .last()
+        .map(|l| this.distance(l) + 2.0 * root_tolerance(opts.tol));
+    levels.push(this);
+    let converged = est.is_some_and(|e| e <= opts.tol);
+    (converged || k == opts.max_level).then(|| {
+        finish(
+            nu,
+            gamma,
+            c,
+            frame,
+            d,
+            levels,
+            est.unwrap_or(f64::INFINITY),
+            converged,
+            opts.tol,
+        )
+    })
 }
 
 #[allow(clippy::too_many_arguments)]
