@@ -6,10 +6,63 @@
 //!
 //! * `grammar/lambdamat.pest`: the syntax, the single reference;
 //! * [`parser`]: text → spanned [`ast`] (pest + a Pratt parser);
-//! * [`validate`]: every meaning error at once, each with a span;
+//! * [`validate`], [`validate_system`]: every meaning error at once, each
+//!   with a span, and the [`scope`] (name table, parameter values);
 //! * [`diagnostics`]: [`LangErrors`], the only place that formats line:column;
-//! * [`lower`]: validated AST → span-free [`Program`];
+//! * [`lower`]: validated AST → span-free [`Program`] (see [`crate::system`]);
 //! * [`pretty`]: [`Program`] → source text that parses back to it.
+//!
+//! # The language
+//!
+//! A file is a sequence of statements, each led by a keyword; newlines are
+//! ordinary blanks and `#` comments run to the end of the line.
+//!
+//! ```text
+//! var x                      # polynomial symbols, in order
+//! var k1, k2, k3, k4
+//! principal k4               # the symbol playing λ in the Smith form
+//! matrix A = [ k1, k2;       # rows end with `;` (a trailing one is fine),
+//!              k3, k4 ]      # entries are separated by `,`; `[]` is 0×0
+//! smith A                    # Smith normal form of A
+//! check smith A with U, D, V # check a given decomposition U·A·V = D
+//!
+//! param nu = 1/4             # exact rationals, from earlier parameters
+//! param gamma = (1 - 2*nu)/(2 - 2*nu)
+//! operator k1 = int(x..1) t/sqrt(t^2 - x^2) dt      # ∫ₓ¹ t f(t)/√(t²−x²) dt
+//! operator k2 = -gamma*int(0..1) dt + gamma*int(0..x) x/sqrt(x^2 - t^2) dt
+//! operator m  = 2*id + x^2*id                       # 2f(x) + x² f(x)
+//! unknown p, q               # unknown functions of x
+//! equation k1 p + k2 q = 1   # operator polynomial applied to each unknown
+//! equation k4*k1 p - (k2 + 1/2*k3) q = x*sqrt(1 - x^2)
+//! solve for p
+//! output P = pi/2 * int(0..1) x*p(x) dx             # a number from the solution
+//! ```
+//!
+//! * Numbers are integers or exact decimals (`0.25` is 1/4); `a/b` is a
+//!   rational. Operators `+ - * / ^` and unary minus have the usual
+//!   precedence, `^` binding tightest and grouping to the right.
+//! * In matrix entries and in the operator part of equations, names are
+//!   symbols (`var`, `operator`) or parameters; division only by nonzero
+//!   constants, exponents non-negative integer literals (so every entry is a
+//!   polynomial).
+//! * `int(a..b) K dt` integrates over `t`; the integrand `K` may use `x`
+//!   and `t`, the function the operator is applied to is implied, and `K`
+//!   may be left out when it is 1. Limits are constants or `x`. Outside
+//!   integrals an operator may multiply its terms by functions of `x`; `id`
+//!   is the identity. Functions: `sqrt`, `ln`, `abs`, `exp`; constant `pi`.
+//! * In an equation a term is an operator product followed by the unknown it
+//!   is applied to (`k4*k1 p`, or `k4*k1*p`); the right side is a function of
+//!   `x`. There must be as many equations as unknowns.
+//! * An output is a constant plus constant multiples of `int(a..b) w*p(x) dx`
+//!   (or `… p(t) dt`), linear in the unknowns, with constant limits.
+//! * Reserved words: `var principal matrix smith check with param unknown
+//!   operator equation solve for output int id pi sqrt ln abs exp dt dx`;
+//!   `x` and `t` cannot name parameters, unknowns, operators or outputs.
+//! * Limits that keep every pass safe: brackets nest at most
+//!   [`parser::MAX_NESTING`] deep, expression trees at most
+//!   [`parser::MAX_DEPTH`] deep (a sum of that many terms in one entry),
+//!   exponents at most [`validate::MAX_EXPONENT`], entries of degree at most
+//!   [`validate::MAX_DEGREE`].
 
 pub mod ast;
 pub mod diagnostics;

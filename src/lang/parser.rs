@@ -1,4 +1,4 @@
-//! Source text → spanned AST ([`ast::File`]). Owns the pest parser generated
+//! Source text → spanned AST ([`super::ast::File`]). Owns the pest parser generated
 //! from `grammar/lambdamat.pest`, the Pratt parser that gives expressions
 //! their precedence, and the translation of pest's failures into a
 //! [`LangError`] that speaks about tokens in human words (never pest rule

@@ -765,3 +765,49 @@ fn too_large(span: Span) -> LangError {
         "too large",
     )
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::lang::parser::parse_file;
+
+    fn kinds(src: &str) -> Vec<ErrorKind> {
+        let file = parse_file(src).expect("parses");
+        match validate(&file) {
+            Ok(_) => Vec::new(),
+            Err(errs) => errs.iter().map(|e| e.kind).collect(),
+        }
+    }
+
+    #[test]
+    fn parameters_are_evaluated_exactly_in_order() {
+        let file =
+            parse_file("param a = 2^-2\nparam b = (a + 1/4)*4\nparam c = -b^3").expect("parses");
+        let v = validate(&file).expect("valid");
+        let vals: Vec<String> = v
+            .scope
+            .params
+            .iter()
+            .map(|(n, q)| format!("{n}={}", q.as_ref().map_or("?".into(), |q| q.to_string())))
+            .collect();
+        assert_eq!(vals, ["a=1/4", "b=2", "c=-8"]);
+    }
+
+    #[test]
+    fn errors_do_not_cascade() {
+        // `a` is broken; using it later must not add a second error.
+        assert_eq!(
+            kinds("param a = 1/0\nparam b = a + 1\nvar x\nmatrix M = [x/a]"),
+            [ErrorKind::DivisionByZero]
+        );
+    }
+
+    #[test]
+    fn huge_constants_are_refused() {
+        assert_eq!(
+            kinds("param a = 1000^1000\nparam b = a^1000"),
+            [ErrorKind::BadExponent]
+        );
+        assert_eq!(kinds("param a = 0^-1"), [ErrorKind::DivisionByZero]);
+    }
+}
