@@ -577,3 +577,31 @@ fn system_syntax_errors_say_what_was_expected() {
     assert_eq!(m, "expected a term such as `k1 p`, found `=`");
     assert_eq!((l, c), (2, 17));
 }
+
+#[test]
+fn generic_and_singular_examples() {
+    let p = ok(include_str!("../examples/generic3.lmx"));
+    assert_eq!(p.symbols.len(), 9);
+    assert!(p.operators.is_empty());
+    let a = p.lambda_matrix();
+    let shown: Vec<String> = a
+        .entries
+        .iter()
+        .map(|e| e.to_string_with(&p.symbols))
+        .collect();
+    assert_eq!(
+        shown,
+        [
+            "a11", "a12", "a13", "a21", "a22", "a23", "a31", "a32", "a33"
+        ]
+    );
+    assert_eq!(p.directives, [Directive::Solve { unknown: 0 }]);
+    let p = ok(include_str!("../examples/singular.lmx"));
+    let a = p.lambda_matrix();
+    let shown: Vec<String> = a
+        .entries
+        .iter()
+        .map(|e| e.to_string_with(&p.symbols))
+        .collect();
+    assert_eq!(shown, ["k1", "k2", "2*k1", "2*k2"]);
+}
