@@ -183,6 +183,16 @@ fn syntax_error_unclosed_bracket_at_end_of_file() {
 }
 
 #[test]
+fn syntax_error_labels_are_short() {
+    let r = errs("var x y\n").render();
+    assert!(r.contains("found `y`\n --> t.lmx:1:7\n"), "{r}");
+    assert!(
+        r.contains("  |       ^ expected a statement or `,`\n"),
+        "{r}"
+    );
+}
+
+#[test]
 fn syntax_error_check_without_with() {
     let (k, m, l, c) = single("check smith A U, D, V");
     assert_eq!(k, ErrorKind::Syntax);
@@ -269,7 +279,9 @@ fn huge_exponent_is_refused_not_computed() {
 fn ragged_rows() {
     let (k, m, l, c) = single("var x\nmatrix A = [\n  1, 2;\n  3, 4, 5\n]\n");
     assert_eq!(k, ErrorKind::RaggedRows);
-    assert_eq!(m, "row 2 has 3 entries, but row 1 has 2");
+    assert_eq!(m, "row 2 has 3 entries, but row 1 has 2 entries");
+    let (_, m, _, _) = single("matrix A = [1, 2; 3]");
+    assert_eq!(m, "row 2 has 1 entry, but row 1 has 2 entries");
     assert_eq!((l, c), (4, 3));
 }
 
@@ -332,9 +344,16 @@ fn keyword_used_as_a_name() {
     let (k, _, l, c) = single("var x\nmatrix var = [x]\n");
     assert_eq!(k, ErrorKind::KeywordAsName);
     assert_eq!((l, c), (2, 8));
-    let (k, _, l, c) = single("var x\nmatrix A = [x*pi + int]\n");
+    let (k, m, l, c) = single("var x\nmatrix A = [x*pi + int]\n");
     assert_eq!(k, ErrorKind::KeywordAsName);
+    assert_eq!(
+        m,
+        "expected an expression, found the keyword `int` (keywords cannot be used as names)"
+    );
     assert_eq!((l, c), (2, 20));
+    // A missing operand before the next statement is caught at its keyword.
+    let (k, _, l, c) = single("param a = 1 +\nvar x\n");
+    assert_eq!((k, l, c), (ErrorKind::KeywordAsName, 2, 1));
 }
 
 #[test]

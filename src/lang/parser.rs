@@ -531,28 +531,52 @@ fn syntax_error(e: &pest::error::Error<Rule>, src: &str) -> LangError {
     expected.retain(|s| !covered.contains(&s.as_str()));
     let (found, keyword, len) = found_at(src, pos);
     let span = Span::new(pos, pos + len);
-    if let Some(word) = keyword.filter(|_| {
-        expected
-            .iter()
-            .any(|s| s == "a name" || s == "an expression")
-    }) {
-        return LangError::new(
-            ErrorKind::KeywordAsName,
-            format!("`{word}` is a reserved keyword and cannot be used as a name"),
-            span,
-            "reserved keyword",
-        )
-        .with_help(format!(
-            "choose another name; the reserved words are {}",
+    let help = |word: &str| {
+        format!(
+            "`{word}` is reserved; choose another name. The reserved words are {}",
             KEYWORDS.join(", ")
-        ));
+        )
+    };
+    if let Some(word) = &keyword {
+        if expected.iter().any(|s| s == "a name") {
+            return LangError::new(
+                ErrorKind::KeywordAsName,
+                format!("`{word}` is a reserved keyword and cannot be used as a name"),
+                span,
+                "reserved keyword",
+            )
+            .with_help(help(word));
+        }
+        if expected.iter().any(|s| s == "an expression") {
+            return LangError::new(
+                ErrorKind::KeywordAsName,
+                format!(
+                    "expected an expression, found the keyword `{word}` (keywords cannot be used as names)"
+                ),
+                span,
+                "reserved keyword",
+            )
+            .with_help(help(word));
+        }
     }
     let what = join_or(&expected);
+    let short: Vec<String> = expected
+        .iter()
+        .map(|s| {
+            if s == STATEMENT {
+                "a statement".to_string()
+            } else if s.starts_with("an operator") {
+                "an operator".to_string()
+            } else {
+                s.clone()
+            }
+        })
+        .collect();
     LangError::new(
         ErrorKind::Syntax,
         format!("expected {what}, found {found}"),
         span,
-        format!("expected {what}"),
+        format!("expected {}", join_or(&short)),
     )
 }
 

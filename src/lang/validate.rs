@@ -227,15 +227,15 @@ impl Validator {
                                 LangError::new(
                                     ErrorKind::RaggedRows,
                                     format!(
-                                        "row {} has {} entries, but row 1 has {}",
+                                        "row {} has {}, but row 1 has {}",
                                         i + 1,
-                                        row.entries.len(),
-                                        n
+                                        entries(row.entries.len()),
+                                        entries(n)
                                     ),
                                     row.span,
-                                    format!("{} entries", row.entries.len()),
+                                    entries(row.entries.len()),
                                 )
-                                .with_related(first.span, format!("{n} entries"))
+                                .with_related(first.span, entries(n))
                                 .with_help(
                                     "every row of a matrix needs the same number of entries",
                                 ),
@@ -745,6 +745,15 @@ impl PolyCtx {
             PolyCtx::Entry => "matrix entries",
             PolyCtx::Operator => "operator polynomials in equations",
         }
+    }
+}
+
+/// "1 entry", "3 entries".
+fn entries(n: usize) -> String {
+    if n == 1 {
+        "1 entry".to_string()
+    } else {
+        format!("{n} entries")
     }
 }
 
