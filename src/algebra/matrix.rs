@@ -7,13 +7,20 @@
 use super::ring::{GcdDomain, Ring};
 
 /// A `rows × cols` matrix over the ring object `ring`, row-major.
-#[derive(Clone, Debug, PartialEq)]
+/// Equality compares shapes and entries.
+#[derive(Clone, Debug)]
 pub struct Matrix<R: Ring> {
     /// The ring the entries live in.
     pub ring: R,
     rows: usize,
     cols: usize,
     data: Vec<R::Elem>,
+}
+
+impl<R: Ring> PartialEq for Matrix<R> {
+    fn eq(&self, other: &Self) -> bool {
+        self.rows == other.rows && self.cols == other.cols && self.data == other.data
+    }
 }
 
 impl<R: Ring> Matrix<R> {
@@ -94,25 +101,14 @@ impl<R: Ring> Matrix<R> {
             return None;
         }
         let r = &self.ring;
-        let mut out = Matrix::zeros(r.clone(), self.rows, other.cols);
+        let mut data = Vec::with_capacity(self.rows * other.cols);
         for i in 0..self.rows {
-            for k in 0..self.cols {
-                let a = self.get(i, k);
-                if r.is_zero(a) {
-                    continue;
-                }
-                for j in 0..other.cols {
-                    let b = other.get(k, j);
-                    if r.is_zero(b) {
-                        continue;
-                    }
-                    let t = r.mul(a, b);
-                    let e = out.get_mut(i, j);
-                    *e = r.add(e, &t);
-                }
+            for j in 0..other.cols {
+                let mut terms = (0..self.cols).map(|k| (self.get(i, k), other.get(k, j)));
+                data.push(r.dot(&mut terms));
             }
         }
-        Some(out)
+        Some(Matrix::new(r.clone(), self.rows, other.cols, data))
     }
 
     /// The transpose.
@@ -135,10 +131,7 @@ impl<R: Ring> Matrix<R> {
     pub fn is_identity(&self) -> bool {
         self.rows == self.cols
             && self.is_diagonal()
-            && (0..self.rows).all(|i| {
-                self.ring
-                    .is_zero(&self.ring.sub(self.get(i, i), &self.ring.one()))
-            })
+            && (0..self.rows).all(|i| self.ring.is_one(self.get(i, i)))
     }
 
     /// The diagonal entries.

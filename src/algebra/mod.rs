@@ -14,10 +14,13 @@
 //! * [`smith`]: the three honest Smith modes and their certificates.
 
 pub mod gcd;
+pub mod intgcd;
 pub mod matrix;
 pub mod mpoly;
 pub mod polyring;
+pub mod qx;
 pub mod ratfunc;
 pub mod rational;
 pub mod ring;
+pub mod smith;
 pub mod upoly;

@@ -90,6 +90,9 @@ impl Ring for Rationals {
     fn is_unit(&self, a: &Q) -> bool {
         !a.is_zero()
     }
+    fn is_one(&self, a: &Q) -> bool {
+        a.is_one()
+    }
     fn format(&self, a: &Q) -> String {
         fmt_q(a)
     }

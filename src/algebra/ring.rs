@@ -25,6 +25,26 @@ pub trait Ring: Clone + Debug {
     fn neg(&self, a: &Self::Elem) -> Self::Elem;
     /// Whether `a == 0`.
     fn is_zero(&self, a: &Self::Elem) -> bool;
+    /// Whether `a == 1`.
+    fn is_one(&self, a: &Self::Elem) -> bool {
+        self.is_zero(&self.sub(a, &self.one()))
+    }
+    /// `Σ a_k·b_k`; rings may override it to normalise once per sum.
+    fn dot<'a>(
+        &self,
+        terms: &mut dyn Iterator<Item = (&'a Self::Elem, &'a Self::Elem)>,
+    ) -> Self::Elem
+    where
+        Self::Elem: 'a,
+    {
+        let mut acc = self.zero();
+        for (a, b) in terms {
+            if !self.is_zero(a) && !self.is_zero(b) {
+                acc = self.add(&acc, &self.mul(a, b));
+            }
+        }
+        acc
+    }
     /// Whether `a` is invertible in this ring.
     fn is_unit(&self, a: &Self::Elem) -> bool;
     /// Human-readable form of an element (expanded, highest degree first).

@@ -44,6 +44,11 @@ impl<K: Field> UPolyRing<K> {
         UPoly(c)
     }
 
+    /// The zero polynomial (a convenience for doc examples).
+    pub fn zero_of(&self) -> UPoly<K::Elem> {
+        UPoly(Vec::new())
+    }
+
     /// The constant `c`.
     pub fn constant(&self, c: K::Elem) -> UPoly<K::Elem> {
         self.trim(vec![c])
@@ -83,7 +88,7 @@ impl<K: Field> UPolyRing<K> {
         };
         let body = if power.is_empty() {
             s
-        } else if self.k.is_zero(&self.k.sub(&c, &self.k.one())) {
+        } else if self.k.is_one(&c) {
             power
         } else if latex {
             if s.contains(' ') {

@@ -1,0 +1,296 @@
+//! The fast path for a square nonsingular A over Q[x] whose first n-1
+//! invariant factors are 1 (the generic case, e.g. random matrices).
+//!
+//! det A and adj A are computed exactly by evaluation at N+1 consecutive
+//! integers (N a degree bound), fraction-free Gauss–Jordan over Z at each
+//! point, and integer Newton interpolation. With f = det/lc(det) and `a` the
+//! last row of adj A, if some `a_j` is invertible mod f then
+//! `h_i = -adj_ij · a_j⁻¹ mod f` gives the Hermite structure
+//! `W·A = H = [[I, h], [0, f]]` with `W = H·adj(A)/det(A)` (checked by exact
+//! division), so `U = W`, `V = [[I, -h], [0, 1]]`, `D = diag(1, …, 1, f)`,
+//! and deg U ≤ deg adj A. Anything unexpected returns `None` and the caller
+//! falls back to the general elimination; the result is certified by the
+//! caller like any other. This module must not certify or print.
+
+use super::SmithDecomposition;
+use crate::algebra::matrix::Matrix;
+use crate::algebra::qx::{QPoly, QxRing};
+use crate::algebra::rational::Q;
+use crate::algebra::ring::{GcdDomain, Ring};
+use num_bigint::BigInt;
+use num_traits::{One, Zero};
+
+fn eval_int(p: &[BigInt], x: &BigInt) -> BigInt {
+    let mut acc = BigInt::zero();
+    for c in p.iter().rev() {
+        acc = acc * x + c;
+    }
+    acc
+}
+
+/// Fraction-free Gauss–Jordan on `[M | I]`: returns `(det M, adj M)`, or
+/// `None` when M is singular.
+pub fn det_adj_int(m: &[Vec<BigInt>]) -> Option<(BigInt, Vec<Vec<BigInt>>)> {
+    let n = m.len();
+    let mut w: Vec<Vec<BigInt>> = m
+        .iter()
+        .enumerate()
+        .map(|(i, row)| {
+            let mut r = row.clone();
+            r.extend((0..n).map(|j| {
+                if i == j {
+                    BigInt::one()
+                } else {
+                    BigInt::zero()
+                }
+            }));
+            r
+        })
+        .collect();
+    let mut prev = BigInt::one();
+    let mut negative = false;
+    for k in 0..n {
+        let p = (k..n).find(|&i| !w[i][k].is_zero())?;
+        if p != k {
+            w.swap(p, k);
+            negative = !negative;
+        }
+        let pivot_row = w[k].clone();
+        let pk = pivot_row[k].clone();
+        for (i, row) in w.iter_mut().enumerate() {
+            if i == k {
+                continue;
+            }
+            let f = row[k].clone();
+            for j in 0..2 * n {
+                if j == k {
+                    continue;
+                }
+                let t = &pk * &row[j] - &f * &pivot_row[j];
+                row[j] = t / &prev;
+            }
+            row[k] = BigInt::zero();
+        }
+        // Every earlier diagonal entry is now pk as well (Bareiss–Jordan).
+        prev = pk;
+    }
+    // Now w = [det'·I | X] with X = det'·M⁻¹ (det' = ±det).
+    let d = w[0][0].clone();
+    let sign = if negative {
+        -BigInt::one()
+    } else {
+        BigInt::one()
+    };
+    let adj = w
+        .iter()
+        .map(|row| row[n..].iter().map(|x| x * &sign).collect())
+        .collect();
+    Some((d * sign, adj))
+}
+
+/// The integer polynomial of degree ≤ `values.len()-1` taking `values[k]` at
+/// `s + k`, by forward differences (exact: Δ^k f(s) is divisible by k!).
+pub fn interpolate_int(values: &[BigInt], s: i64) -> Vec<BigInt> {
+    let n = values.len();
+    let mut diff = values.to_vec();
+    let mut newton = Vec::with_capacity(n);
+    let mut fact = BigInt::one();
+    for k in 0..n {
+        if k > 0 {
+            fact *= BigInt::from(k);
+        }
+        newton.push(&diff[0] / &fact);
+        for i in 0..n - 1 - k {
+            diff[i] = &diff[i + 1] - &diff[i];
+        }
+    }
+    // f(x) = Σ c_k (x-s)(x-s-1)…(x-s-k+1): Horner from the top.
+    let mut p: Vec<BigInt> = Vec::new();
+    for k in (0..n).rev() {
+        // p ← p·(x - (s+k)) + c_k
+        let root = BigInt::from(s + k as i64);
+        let mut q = vec![BigInt::zero(); p.len() + 1];
+        for (i, c) in p.iter().enumerate() {
+            q[i + 1] += c;
+            q[i] -= c * &root;
+        }
+        if q.is_empty() {
+            q.push(BigInt::zero());
+        }
+        q[0] += &newton[k];
+        p = q;
+    }
+    while p.last().is_some_and(|c| c.is_zero()) {
+        p.pop();
+    }
+    p
+}
+
+/// Tries the fast path; `None` means "use the general elimination".
+pub fn try_nonsingular(a: &Matrix<QxRing>) -> Option<SmithDecomposition<QxRing>> {
+    let n = a.rows();
+    if n < 2 || a.cols() != n {
+        return None;
+    }
+    let r = a.ring.clone();
+    // Ã = diag(δ)·A with integer coefficients.
+    let mut delta = Vec::with_capacity(n);
+    let mut at: Vec<Vec<Vec<BigInt>>> = Vec::with_capacity(n);
+    let mut bound = 0usize;
+    for i in 0..n {
+        let l = a.row(i).iter().fold(BigInt::one(), |l, p| {
+            crate::algebra::intgcd::lcm(&l, p.den())
+        });
+        let row: Vec<Vec<BigInt>> = a
+            .row(i)
+            .iter()
+            .map(|p| p.num().iter().map(|c| c * (&l / p.den())).collect())
+            .collect();
+        bound += row
+            .iter()
+            .map(|p| p.len().saturating_sub(1))
+            .max()
+            .unwrap_or(0);
+        delta.push(l);
+        at.push(row);
+    }
+    let (det_t, adj_t) = det_adj_poly(&at, bound)?;
+    let det_q = QPoly::from_ints(det_t);
+    if det_q.is_zero() {
+        return None;
+    }
+    let f = r.normalize(&det_q);
+    let last: Vec<QPoly> = adj_t[n - 1]
+        .iter()
+        .map(|p| QPoly::from_ints(p.clone()))
+        .collect();
+    // Pick the column of least degree whose entry is invertible mod f.
+    let mut order: Vec<usize> = (0..n).filter(|&j| !last[j].is_zero()).collect();
+    order.sort_by_key(|&j| last[j].degree());
+    let (j, inv) = order.into_iter().find_map(|j| {
+        let (g, s) = r.ext_gcd_mod(&last[j], &f);
+        r.is_unit(&g).then_some((j, s))
+    })?;
+    let mut h = Vec::with_capacity(n - 1);
+    let mut w = Matrix::zeros(r.clone(), n, n);
+    for i in 0..n - 1 {
+        let bij = QPoly::from_ints(adj_t[i][j].clone());
+        let hi = r.neg(&r.rem(&r.mul(&bij, &inv), &f));
+        for k in 0..n {
+            let b = QPoly::from_ints(adj_t[i][k].clone());
+            let num = r.add(&b, &r.mul(&hi, &last[k]));
+            w.set(i, k, r.div_exact(&num, &det_q)?);
+        }
+        h.push(hi);
+    }
+    let lc_inv = det_q.lc().recip();
+    for k in 0..n {
+        w.set(n - 1, k, last[k].scale(&lc_inv));
+    }
+    // U = W·diag(δ).
+    let mut u = w;
+    for (k, d) in delta.iter().enumerate() {
+        u.scale_col(k, &QPoly::constant(&Q::from_integer(d.clone())));
+    }
+    let mut v = Matrix::identity(r.clone(), n);
+    let mut v_inv = Matrix::identity(r.clone(), n);
+    for (i, hi) in h.iter().enumerate() {
+        v.set(i, n - 1, r.neg(hi));
+        v_inv.set(i, n - 1, hi.clone());
+    }
+    let mut d = Matrix::identity(r.clone(), n);
+    d.set(n - 1, n - 1, f.clone());
+    // U⁻¹ = A·V·D⁻¹: A's first n-1 columns, then (A·v_n)/f.
+    let mut u_inv = a.clone();
+    for i in 0..n {
+        let mut acc = a.get(i, n - 1).clone();
+        for (k, hk) in h.iter().enumerate() {
+            acc = r.sub(&acc, &r.mul(a.get(i, k), hk));
+        }
+        u_inv.set(i, n - 1, r.div_exact(&acc, &f)?);
+    }
+    Some(SmithDecomposition {
+        d,
+        u,
+        v,
+        u_inv,
+        v_inv,
+    })
+}
+
+/// det and adj of an integer polynomial matrix (entries as coefficient
+/// vectors) with det degree ≤ `bound`, by evaluation/interpolation.
+fn det_adj_poly(
+    m: &[Vec<Vec<BigInt>>],
+    bound: usize,
+) -> Option<(Vec<BigInt>, Vec<Vec<Vec<BigInt>>>)> {
+    let n = m.len();
+    // Consecutive nodes s..=s+bound avoiding singular points (a nonzero det
+    // has at most `bound` roots, so a few shifts always suffice).
+    'shift: for attempt in 0..=bound + 1 {
+        let s = -(bound as i64) / 2 + (attempt as i64) * (bound as i64 + 1);
+        let mut dets = Vec::with_capacity(bound + 1);
+        let mut adjs = Vec::with_capacity(bound + 1);
+        for k in 0..=bound {
+            let x = BigInt::from(s + k as i64);
+            let mx: Vec<Vec<BigInt>> = m
+                .iter()
+                .map(|row| row.iter().map(|p| eval_int(p, &x)).collect())
+                .collect();
+            match det_adj_int(&mx) {
+                Some((d, adj)) => {
+                    dets.push(d);
+                    adjs.push(adj);
+                }
+                None => continue 'shift,
+            }
+        }
+        let det = interpolate_int(&dets, s);
+        let adj = (0..n)
+            .map(|i| {
+                (0..n)
+                    .map(|j| {
+                        let vals: Vec<BigInt> = adjs.iter().map(|a| a[i][j].clone()).collect();
+                        interpolate_int(&vals, s)
+                    })
+                    .collect()
+            })
+            .collect();
+        return Some((det, adj));
+    }
+    None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn bi(v: &[i64]) -> Vec<BigInt> {
+        v.iter().map(|&x| BigInt::from(x)).collect()
+    }
+
+    #[test]
+    fn gauss_jordan_gives_det_and_adjugate() {
+        let m = vec![bi(&[0, 2, 1]), bi(&[3, -1, 4]), bi(&[5, 2, -2])];
+        let (d, adj) = det_adj_int(&m).unwrap();
+        // det by cofactor expansion
+        let det = 0 * (-1 * -2 - 4 * 2) - 2 * (3 * -2 - 4 * 5) + 1 * (3 * 2 - (-1) * 5);
+        assert_eq!(d, BigInt::from(det));
+        for i in 0..3 {
+            for j in 0..3 {
+                let s: BigInt = (0..3).map(|k| &m[i][k] * &adj[k][j]).sum();
+                assert_eq!(s, if i == j { d.clone() } else { BigInt::zero() });
+            }
+        }
+        assert!(det_adj_int(&[bi(&[1, 2]), bi(&[2, 4])]).is_none());
+    }
+
+    #[test]
+    fn interpolation_recovers_integer_polynomials() {
+        let p = bi(&[7, -3, 0, 2, 5]);
+        for s in [-3i64, 0, 4] {
+            let vals: Vec<BigInt> = (0..7).map(|k| eval_int(&p, &BigInt::from(s + k))).collect();
+            assert_eq!(interpolate_int(&vals, s), p);
+        }
+    }
+}

@@ -1,0 +1,76 @@
+//! The `run` command: performs every directive of a file in order (Smith
+//! forms and checks of claimed decompositions) and prints the results as
+//! text, LaTeX or one JSON object.
+
+use super::OutputArgs;
+use super::error::CliError;
+use super::render;
+use super::smith::{check, load, principal, print_report, report};
+use crate::lang::Directive;
+use serde_json::json;
+use std::io::Write;
+use std::path::PathBuf;
+
+/// `lambdamat run FILE`.
+pub fn run(file: &PathBuf, out: &OutputArgs, w: &mut dyn Write) -> Result<(), CliError> {
+    let p = load(file)?;
+    let principal = principal(&p, None)?;
+    let mut results = Vec::new();
+    let mut first = true;
+    for d in &p.directives {
+        let sep = |w: &mut dyn Write, first: &mut bool| -> Result<(), CliError> {
+            if !*first && !out.json {
+                writeln!(w, "\n{}\n", "─".repeat(60))?;
+            }
+            *first = false;
+            Ok(())
+        };
+        match d {
+            Directive::Smith { matrix } => {
+                let r = report(&p, *matrix, principal, out.latex)?;
+                if out.json {
+                    results.push(json!({"kind": "smith", "result": r}));
+                } else {
+                    sep(w, &mut first)?;
+                    print_report(&r, out, w)?;
+                }
+            }
+            Directive::CheckSmith { matrix, u, d, v } => {
+                let c = check(&p, [*matrix, *u, *d, *v], principal);
+                if out.json {
+                    results.push(json!({"kind": "check", "result": c}));
+                } else {
+                    sep(w, &mut first)?;
+                    write!(w, "{}", render::check_text(&c))?;
+                }
+            }
+            Directive::Solve { unknown } => {
+                let msg = format!(
+                    "solve for {}: the elimination and the numerical solvers are not part of this build yet",
+                    p.unknowns[*unknown]
+                );
+                if out.json {
+                    results.push(json!({"kind": "solve", "skipped": msg}));
+                } else {
+                    sep(w, &mut first)?;
+                    writeln!(w, "{msg}")?;
+                }
+            }
+        }
+    }
+    if out.json {
+        let v = json!({"file": file.display().to_string(), "results": results});
+        writeln!(
+            w,
+            "{}",
+            serde_json::to_string_pretty(&v).map_err(|e| CliError::Invalid(e.to_string()))?
+        )?;
+    } else if first {
+        writeln!(
+            w,
+            "{}: no directives (add `smith A`, `check smith A with U, D, V`, …)",
+            file.display()
+        )?;
+    }
+    Ok(())
+}

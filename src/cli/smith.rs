@@ -1,0 +1,152 @@
+//! The `smith` command: picks the matrices to decompose, resolves the
+//! principal symbol, asks [`crate::algebra::smith::modes`] for certified
+//! reports and prints them. Also runs `check smith` directives for `run`.
+
+use super::error::CliError;
+use super::{OutputArgs, SmithArgs, read_source, render};
+use crate::algebra::matrix::Matrix;
+use crate::algebra::polyring::PolyRing;
+use crate::algebra::smith::modes::{
+    CheckReport, SmithOptions, SmithReport, check_decomposition, smith_report,
+};
+use crate::lang::{Directive, MatrixDef, Program, parse_program};
+use std::io::Write;
+
+/// A matrix definition as a matrix over Q[symbols].
+pub fn to_matrix(symbols: &[String], m: &MatrixDef) -> Matrix<PolyRing> {
+    Matrix::new(
+        PolyRing::new(symbols.to_vec()),
+        m.rows,
+        m.cols,
+        m.entries.clone(),
+    )
+}
+
+/// Parses a file, mapping errors to [`CliError::Lang`].
+pub fn load(path: &std::path::PathBuf) -> Result<Program, CliError> {
+    let (text, name) = read_source(path)?;
+    parse_program(&text, &name).map_err(|e| CliError::Lang(Box::new(e)))
+}
+
+/// Resolves `--principal` against the file's symbols (the flag wins).
+pub fn principal(p: &Program, flag: Option<&str>) -> Result<Option<usize>, CliError> {
+    match flag {
+        None => Ok(p.principal),
+        Some(s) => p
+            .symbols
+            .iter()
+            .position(|n| n == s)
+            .map(Some)
+            .ok_or_else(|| {
+                CliError::Invalid(format!(
+                    "--principal {s}: no such symbol in the file (declared: {})",
+                    if p.symbols.is_empty() {
+                        "none".to_string()
+                    } else {
+                        p.symbols.join(", ")
+                    }
+                ))
+            }),
+    }
+}
+
+/// The Smith report of matrix number `idx`.
+pub fn report(
+    p: &Program,
+    idx: usize,
+    principal: Option<usize>,
+    latex: bool,
+) -> Result<SmithReport, CliError> {
+    let m = &p.matrices[idx];
+    let opts = SmithOptions { principal, latex };
+    Ok(smith_report(&m.name, &to_matrix(&p.symbols, m), &opts)?)
+}
+
+/// The report of a `check smith A with U, D, V` directive.
+pub fn check(p: &Program, ids: [usize; 4], principal: Option<usize>) -> CheckReport {
+    let mats: Vec<Matrix<PolyRing>> = ids
+        .iter()
+        .map(|&i| to_matrix(&p.symbols, &p.matrices[i]))
+        .collect();
+    let names = ids.map(|i| p.matrices[i].name.clone());
+    check_decomposition(names, [&mats[0], &mats[1], &mats[2], &mats[3]], principal)
+}
+
+/// Prints one Smith report in the requested form.
+pub fn print_report(r: &SmithReport, out: &OutputArgs, w: &mut dyn Write) -> Result<(), CliError> {
+    if out.latex {
+        write!(w, "{}", render::smith_latex(r))?;
+    } else {
+        write!(w, "{}", render::smith_text(r))?;
+    }
+    Ok(())
+}
+
+/// `lambdamat smith FILE`.
+pub fn smith_command(a: &SmithArgs, w: &mut dyn Write) -> Result<(), CliError> {
+    let p = load(&a.file)?;
+    let principal = principal(&p, a.principal.as_deref())?;
+    let targets: Vec<usize> = match &a.matrix {
+        Some(name) => vec![
+            p.matrices
+                .iter()
+                .position(|m| &m.name == name)
+                .ok_or_else(|| {
+                    CliError::Invalid(format!(
+                        "--matrix {name}: no such matrix in the file (defined: {})",
+                        p.matrices
+                            .iter()
+                            .map(|m| m.name.as_str())
+                            .collect::<Vec<_>>()
+                            .join(", ")
+                    ))
+                })?,
+        ],
+        None => {
+            let from_directives: Vec<usize> = p
+                .directives
+                .iter()
+                .filter_map(|d| match d {
+                    Directive::Smith { matrix } => Some(*matrix),
+                    _ => None,
+                })
+                .collect();
+            if from_directives.is_empty() {
+                (0..p.matrices.len()).collect()
+            } else {
+                from_directives
+            }
+        }
+    };
+    if targets.is_empty() {
+        return Err(CliError::Invalid(format!(
+            "{}: the file defines no matrix",
+            a.file.display()
+        )));
+    }
+    let reports = targets
+        .iter()
+        .map(|&i| report(&p, i, principal, a.out.latex))
+        .collect::<Result<Vec<_>, _>>()?;
+    if a.out.json {
+        let v = if reports.len() == 1 {
+            serde_json::to_value(&reports[0])
+        } else {
+            serde_json::to_value(&reports)
+        }
+        .map_err(|e| CliError::Invalid(e.to_string()))?;
+        writeln!(
+            w,
+            "{}",
+            serde_json::to_string_pretty(&v).map_err(|e| CliError::Invalid(e.to_string()))?
+        )?;
+        return Ok(());
+    }
+    for (k, r) in reports.iter().enumerate() {
+        if k > 0 {
+            writeln!(w, "\n{}\n", "─".repeat(60))?;
+        }
+        print_report(r, &a.out, w)?;
+    }
+    Ok(())
+}
