@@ -421,7 +421,7 @@ fn long_but_reasonable_entries_are_fine() {
 
 #[test]
 fn seed_example_checks_the_papers_decomposition() {
-    let p = ok(include_str!("../examples/seed_smith.lmx"));
+    let p = ok(include_str!("../examples/seed_lambda.lmx"));
     let names: Vec<&str> = p.matrices.iter().map(|m| m.name.as_str()).collect();
     assert_eq!(names, ["A", "U", "D", "V"]);
     assert_eq!(entries(&p, 2), ["k4^2", "0", "0", "k1*k4^2 - k2*k3*k4"]);
@@ -437,7 +437,7 @@ fn seed_example_checks_the_papers_decomposition() {
             }
         ]
     );
-    let p = ok(include_str!("../examples/poly_x.lmx"));
+    let p = ok(include_str!("../examples/matrix_qx.lmx"));
     assert_eq!(
         entries(&p, 0),
         ["9*x - 5", "x^2 - 1/3*x", "3/4", "x^2 + 2*x + 1"]

@@ -28,8 +28,8 @@ fn round_trip(src: &str) {
 fn examples_round_trip() {
     round_trip(include_str!("../examples/hertz_stick.lmx"));
     round_trip(include_str!("data/peers_3x3.lmx"));
-    round_trip(include_str!("../examples/seed_smith.lmx"));
-    round_trip(include_str!("../examples/poly_x.lmx"));
+    round_trip(include_str!("../examples/seed_lambda.lmx"));
+    round_trip(include_str!("../examples/matrix_qx.lmx"));
     round_trip(include_str!("../examples/generic3.lmx"));
     round_trip(include_str!("../examples/singular.lmx"));
     round_trip(
