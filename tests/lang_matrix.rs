@@ -443,3 +443,32 @@ fn seed_example_checks_the_papers_decomposition() {
         ["9*x - 5", "x^2 - 1/3*x", "3/4", "x^2 + 2*x + 1"]
     );
 }
+
+#[test]
+fn check_smith_shapes_must_fit() {
+    let all = summary(
+        "matrix A = [1, 2, 3; 4, 5, 6]\nmatrix U = [1, 0; 0, 1]\nmatrix D = [1, 0; 0, 1]\n\
+         matrix V = [1, 0; 0, 1]\ncheck smith A with U, D, V\n",
+    );
+    let got: Vec<_> = all
+        .iter()
+        .map(|(k, m, l, c)| (*k, m.as_str(), *l, *c))
+        .collect();
+    assert_eq!(
+        got,
+        [
+            (
+                ErrorKind::Shape,
+                "`D` is 2×2, but it must be 2×3: D = U·A·V has the shape of A and A is 2×3",
+                5,
+                23
+            ),
+            (
+                ErrorKind::Shape,
+                "`V` is 2×2, but it must be 3×3: V multiplies A on the right and A is 2×3",
+                5,
+                26
+            ),
+        ]
+    );
+}

@@ -33,6 +33,7 @@ pub fn validate(file: &File) -> Result<Validated, Vec<LangError>> {
         scope: Scope::default(),
         errors: Vec::new(),
         processed_params: Vec::new(),
+        matrix_shapes: Vec::new(),
     };
     v.declarations(file);
     v.parameters(file);
@@ -66,6 +67,8 @@ pub(super) struct Validator {
     pub(super) errors: Vec<LangError>,
     /// `processed_params[i]`: parameter `i`'s definition has been evaluated.
     processed_params: Vec<bool>,
+    /// `matrix_shapes[i]`: rows and columns (of the first row) of matrix `i`.
+    matrix_shapes: Vec<(usize, usize)>,
 }
 
 fn duplicate(what: &str, id: &Ident, first: Entry) -> LangError {
@@ -103,9 +106,12 @@ impl Validator {
                         }
                     }
                 }
-                Stmt::Matrix { name, .. } => {
-                    if let Err(first) = self.scope.declare_matrix(&name.name, name.span) {
-                        self.err(duplicate("matrix", name, first));
+                Stmt::Matrix { name, rows, .. } => {
+                    match self.scope.declare_matrix(&name.name, name.span) {
+                        Ok(_) => self
+                            .matrix_shapes
+                            .push((rows.len(), rows.first().map_or(0, |r| r.entries.len()))),
+                        Err(first) => self.err(duplicate("matrix", name, first)),
                     }
                 }
                 Stmt::Param { name, .. } => {
@@ -264,10 +270,16 @@ impl Validator {
                         }
                     }
                 }
-                Stmt::Smith(id) => self.matrix_ref(id),
+                Stmt::Smith(id) => {
+                    self.matrix_ref(id);
+                }
                 Stmt::CheckSmith { a, u, d, v } => {
-                    for id in [a, u, d, v] {
-                        self.matrix_ref(id);
+                    let shapes: Vec<_> = [a, u, d, v]
+                        .into_iter()
+                        .filter_map(|id| self.matrix_ref(id))
+                        .collect();
+                    if let [a_shape, u_shape, d_shape, v_shape] = shapes[..] {
+                        self.check_shapes(a_shape, [(u, u_shape), (d, d_shape), (v, v_shape)]);
                     }
                 }
                 Stmt::Operator { body, .. } => self.operator_body(body),
@@ -288,12 +300,39 @@ impl Validator {
         }
     }
 
-    fn matrix_ref(&mut self, id: &Ident) {
+    /// Checks that U, D, V have the shapes U·A·V = D needs, given A's.
+    fn check_shapes(&mut self, (m, n): (usize, usize), others: [(&Ident, (usize, usize)); 3]) {
+        let want = [(m, m), (m, n), (n, n)];
+        let role = [
+            "U multiplies A on the left",
+            "D = U·A·V has the shape of A",
+            "V multiplies A on the right",
+        ];
+        for (((id, got), want), role) in others.into_iter().zip(want).zip(role) {
+            if got != want {
+                self.err(
+                    LangError::new(
+                        ErrorKind::Shape,
+                        format!(
+                            "`{}` is {}×{}, but it must be {}×{}: {role} and A is {m}×{n}",
+                            id.name, got.0, got.1, want.0, want.1
+                        ),
+                        id.span,
+                        format!("{}×{}", got.0, got.1),
+                    )
+                    .with_help("write `check smith A with U, D, V` for U·A·V = D"),
+                );
+            }
+        }
+    }
+
+    /// Checks that `id` names a matrix; returns its shape.
+    fn matrix_ref(&mut self, id: &Ident) -> Option<(usize, usize)> {
         match self.scope.get(&id.name) {
             Some(Entry {
-                sort: Sort::Matrix(_),
+                sort: Sort::Matrix(i),
                 ..
-            }) => {}
+            }) => self.matrix_shapes.get(i).copied(),
             other => {
                 let mut e = LangError::new(
                     ErrorKind::UnknownMatrix,
@@ -313,6 +352,7 @@ impl Validator {
                     e = e.with_related(en.span, "declared here");
                 }
                 self.err(e);
+                None
             }
         }
     }
