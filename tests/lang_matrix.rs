@@ -398,25 +398,37 @@ fn render_is_plain_text_with_caret() {
 
 #[test]
 fn deep_nesting_is_an_error_not_a_crash() {
-    let src = format!(
-        "var x\nmatrix A = [{}x{}]",
-        "(".repeat(5000),
-        ")".repeat(5000)
-    );
-    let (k, _, l, _) = single(&src);
+    let open = "(".repeat(50_000);
+    let close = ")".repeat(50_000);
+    let (k, _, l, _) = single(&format!("var x\nmatrix A = [{open}x{close}]"));
     assert_eq!((k, l), (ErrorKind::TooDeep, 2));
-    let src = format!("var x\nmatrix A = [{}x]", "-".repeat(100000));
+    let src = format!("var x\nmatrix A = [{}x]", "-".repeat(100_000));
     assert_eq!(single(&src).0, ErrorKind::TooDeep);
-    let long_sum = vec!["x"; 5000].join("+");
+    let src = format!("var x\nmatrix A = [x{}]", "^1".repeat(100_000));
+    assert_eq!(single(&src).0, ErrorKind::TooDeep);
+    let long_sum = vec!["x"; 50_000].join("+");
     let src = format!("var x\nmatrix A = [{long_sum}]");
     assert_eq!(single(&src).0, ErrorKind::TooDeep);
 }
 
 #[test]
-fn long_but_reasonable_entries_are_fine() {
-    let long_sum = vec!["x"; 900].join("+");
-    let p = ok(&format!("var x\nmatrix A = [{long_sum}]"));
-    assert_eq!(entries(&p, 0), ["900*x"]);
+fn deep_but_allowed_input_is_fine_on_any_thread() {
+    // Run on a small stack: the front end must not depend on the caller's.
+    let worker = std::thread::Builder::new()
+        .stack_size(256 << 10)
+        .spawn(|| {
+            let long_sum = vec!["x"; 15_000].join("+");
+            let p = ok(&format!("var x\nmatrix A = [{long_sum}]"));
+            assert_eq!(entries(&p, 0), ["15000*x"]);
+            let nested = format!("{}x{}", "(".repeat(450), ")".repeat(450));
+            let p = ok(&format!("var x\nmatrix A = [{nested}^2]"));
+            assert_eq!(entries(&p, 0), ["x^2"]);
+            let negs = format!("{}x", "-".repeat(4000));
+            let p = ok(&format!("var x\nmatrix A = [{negs}]"));
+            assert_eq!(entries(&p, 0), ["x"]);
+        })
+        .expect("spawn");
+    assert!(worker.join().is_ok());
 }
 
 #[test]

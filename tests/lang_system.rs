@@ -683,3 +683,30 @@ fn hertz_operators_satisfy_the_abel_identities() {
         }
     }
 }
+
+#[test]
+fn manufactured_system_has_residual_zero_at_the_exact_solution() {
+    let p = ok(include_str!("../examples/hertz_manufactured.lmx"));
+    let exact: [&dyn Fn(f64) -> f64; 2] = [&|_| 1.0, &|t| t];
+    for x in [0.2f64, 0.5, 0.9] {
+        for (i, eq) in p.equations.iter().enumerate() {
+            let mut lhs = 0.0;
+            for (j, poly) in eq.lhs.iter().enumerate() {
+                // Here every entry is a single operator symbol or zero.
+                for (mono, coeff) in poly.terms() {
+                    let sym = mono.iter().position(|&e| e == 1).expect("one symbol");
+                    let c = num_traits::ToPrimitive::to_f64(coeff).unwrap_or(f64::NAN);
+                    let terms = &p.operator(sym).expect("defined").terms;
+                    lhs += c * apply(terms, exact[j], x);
+                }
+            }
+            let rhs = eq.rhs.eval(x, f64::NAN);
+            assert!(
+                (lhs - rhs).abs() < 1e-9,
+                "equation {i} at x={x}: {lhs} vs {rhs}"
+            );
+        }
+    }
+    let names: Vec<&str> = p.outputs.iter().map(|o| o.name.as_str()).collect();
+    assert_eq!(names, ["P", "Q"]);
+}

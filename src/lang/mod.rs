@@ -94,13 +94,49 @@ pub use error::{ErrorKind, LangError};
 /// let err = lambdamat::lang::parse_program("var x\nmatrix A = [y]", "a.lmx").unwrap_err();
 /// assert!(err.render().contains("a.lmx:2:13"));
 /// ```
+///
+/// The work runs on a helper thread with a [`STACK_SIZE`] stack (as rustc
+/// does), so that the recursive passes over deeply nested input stay far
+/// from the end of the caller's stack, whatever thread the caller is on.
 pub fn parse_program(src: &str, filename: &str) -> Result<Program, LangErrors> {
+    std::thread::scope(|s| {
+        let worker = std::thread::Builder::new()
+            .name("lambdamat-front-end".into())
+            .stack_size(STACK_SIZE)
+            .spawn_scoped(s, || parse_program_here(src, filename));
+        match worker {
+            Ok(handle) => handle.join().unwrap_or_else(|_| {
+                Err(LangErrors::new(
+                    filename,
+                    src,
+                    vec![LangError::new(
+                        ErrorKind::Syntax,
+                        "internal error in the front end",
+                        ast::Span::default(),
+                        "while reading this file",
+                    )],
+                ))
+            }),
+            // No thread available: do the work here.
+            Err(_) => parse_program_here(src, filename),
+        }
+    })
+}
+
+/// Stack size of the front end's worker thread: ample for
+/// [`parser::MAX_NESTING`] brackets and [`parser::MAX_DEPTH`] levels even in
+/// unoptimised builds (the memory is reserved, not used, until needed).
+pub const STACK_SIZE: usize = 256 << 20;
+
+/// [`parse_program`] on the current thread.
+fn parse_program_here(src: &str, filename: &str) -> Result<Program, LangErrors> {
     let file = parser::parse_file(src).map_err(|e| LangErrors::new(filename, src, vec![e]))?;
     let checked = validate::validate(&file).map_err(|errs| LangErrors::new(filename, src, errs))?;
     lower::lower(&file, &checked).map_err(|e| LangErrors::new(filename, src, vec![e]))
 }
 
-/// Parses `src` into its spanned AST (syntax only, no validation).
+/// Parses `src` into its spanned AST (syntax only, no validation), on the
+/// caller's thread.
 pub fn parse_ast(src: &str, filename: &str) -> Result<ast::File, LangErrors> {
     parser::parse_file(src).map_err(|e| LangErrors::new(filename, src, vec![e]))
 }

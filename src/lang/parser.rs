@@ -29,12 +29,13 @@ use super::keywords::{KEYWORDS, is_keyword};
 struct LmxParser;
 
 /// Deepest bracket nesting accepted (protects the recursive-descent parser).
-pub const MAX_NESTING: usize = 100;
-/// Deepest expression tree accepted (protects every recursive pass).
-pub const MAX_DEPTH: usize = 1000;
+pub const MAX_NESTING: usize = 500;
+/// Deepest expression tree accepted (protects every recursive pass); a sum
+/// of n terms is n levels deep.
+pub const MAX_DEPTH: usize = 20_000;
 /// Most chained unary minus or `^` operators in one expression (these make
 /// the Pratt parser recurse).
-const MAX_RECURSIVE_OPS: usize = 500;
+const MAX_RECURSIVE_OPS: usize = 5_000;
 
 static PRATT: LazyLock<PrattParser<Rule>> = LazyLock::new(|| {
     PrattParser::new()
