@@ -9,8 +9,14 @@
 //! * [`algebra`]: exact rationals, polynomials, rational functions, matrices
 //!   over a ring object and the certified Smith normal form (never `f64`);
 //! * [`system`]: the span-free lowered program shared by algebra and numerics;
+//! * [`numeric`]: f64 numerics (nalgebra): quadrature, graded meshes,
+//!   product integration of Abel kernels, operator matrices, solves;
+//! * [`hertz`]: the flagship Hertz contact problem with finite friction,
+//!   built on [`numeric`];
 //! * [`cli`]: the `lambdamat` command line and its text/LaTeX/JSON reports.
 pub mod algebra;
 pub mod cli;
+pub mod hertz;
 pub mod lang;
+pub mod numeric;
 pub mod system;

@@ -218,7 +218,11 @@ impl<R: EuclideanDomain, S: Sink<R>> Work<'_, R, S> {
                 self.col_op(Op::Swap(t, j));
                 continue;
             }
-            // Row and column are clear; the pivot must divide the block.
+            // Row and column are clear; the pivot must divide the block
+            // (trivially so when it is a unit).
+            if self.size(t, t) == Some(0) {
+                return;
+            }
             let p = self.d.get(t, t).clone();
             let bad = (t + 1..m).find(|&i| {
                 (t + 1..n).any(|j| {

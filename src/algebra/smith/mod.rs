@@ -18,7 +18,7 @@ pub mod nonsingular;
 
 use crate::algebra::matrix::Matrix;
 use crate::algebra::ring::EuclideanDomain;
-use certify::{Certificate, Unimodular, certify};
+use certify::{Certificate, ProductCheck, Unimodular, certify, certify_with};
 use elimination::{NoTransforms, Recorder, eliminate};
 
 /// A Smith decomposition `U·A·V = D` with the inverses of U and V.
@@ -69,6 +69,19 @@ impl<R: EuclideanDomain> SmithDecomposition<R> {
             &self.v,
             Unimodular::Inverse(&self.u_inv),
             Unimodular::Inverse(&self.v_inv),
+        )
+    }
+
+    /// Like [`Self::certify`], evaluating the identities with `check`.
+    pub fn certify_with(&self, a: &Matrix<R>, check: &dyn ProductCheck<R>) -> Certificate {
+        certify_with(
+            a,
+            &self.u,
+            &self.d,
+            &self.v,
+            Unimodular::Inverse(&self.u_inv),
+            Unimodular::Inverse(&self.v_inv),
+            check,
         )
     }
 

@@ -5,7 +5,7 @@
 //! Q[all], Q[λ] and Q(others)[λ]; it must not print or know about files.
 
 use super::SmithDecomposition;
-use super::certify::{Certificate, Check, Unimodular, certify};
+use super::certify::{Certificate, Check, Direct, ProductCheck, Unimodular, certify};
 use super::divisors::{certify_divisors, determinantal_divisors};
 use crate::algebra::gcd::{content_in, gcd, lcm};
 use crate::algebra::matrix::Matrix;
@@ -220,8 +220,9 @@ fn generic_report<R: crate::algebra::ring::EuclideanDomain>(
     ring_name: String,
     note: String,
     opts: &SmithOptions,
+    check: &dyn ProductCheck<R>,
 ) -> Result<(SmithReport, SmithDecomposition<R>), SmithError> {
-    let cert = dec.certify(a);
+    let cert = dec.certify_with(a, check);
     fail_if_unverified(&cert)?;
     let inv = dec.invariant_factors();
     let r = &a.ring;
@@ -273,7 +274,19 @@ fn one_symbol(
         )
     };
     let (dec, alg) = decompose_qx(&au);
-    Ok(generic_report(name, a, &au, dec, alg, Mode::OneSymbol, ring, note, opts)?.0)
+    Ok(generic_report(
+        name,
+        a,
+        &au,
+        dec,
+        alg,
+        Mode::OneSymbol,
+        ring,
+        note,
+        opts,
+        &Direct,
+    )?
+    .0)
 }
 
 fn coefficient_field(a: &PolyRing, p: usize) -> RatFuncField {
@@ -319,6 +332,10 @@ fn principal(
     );
     let dec = SmithDecomposition::new(&ap);
     let alg = "elimination over K[λ]: least-degree pivot, division with remainder";
+    let check = ClearedDenominators {
+        p,
+        nvars: a.ring.nvars(),
+    };
     let (mut report, dec) = generic_report(
         name,
         a,
@@ -329,9 +346,74 @@ fn principal(
         ring_name,
         note,
         opts,
+        &check,
     )?;
     report.denominator_free = Some(denominator_free(a, &dec, p)?);
     Ok(report)
+}
+
+/// Evaluates identities over Q(others)[λ] by clearing denominators: with
+/// `F̃ = δ_F·F` polynomial, `F1·…·Fk = R` ⇔ `δ_R·F̃1·…·F̃k = (Πδ_i)·R̃` over
+/// Q[all]. The same statement, checked without rational-function gcds.
+struct ClearedDenominators {
+    p: usize,
+    nvars: usize,
+}
+
+impl ClearedDenominators {
+    fn clear(&self, m: &Matrix<UPolyRing<RatFuncField>>) -> (Matrix<PolyRing>, MPoly) {
+        let mut dens: Vec<&MPoly> = Vec::new();
+        for e in m.entries() {
+            for c in &e.0 {
+                if !dens.contains(&c.den()) {
+                    dens.push(c.den());
+                }
+            }
+        }
+        let delta = dens.iter().fold(MPoly::one(self.nvars), |l, d| lcm(&l, d));
+        let ring = PolyRing::new(m.ring.k.names.clone());
+        let cleared = m.map(ring, |e| {
+            let cs: Vec<MPoly> =
+                e.0.iter()
+                    .map(|c| c.num() * &delta.div_exact(c.den()).expect("lcm"))
+                    .collect();
+            MPoly::from_coeffs_in(self.p, &cs, self.nvars)
+        });
+        (cleared, delta)
+    }
+}
+
+impl ProductCheck<UPolyRing<RatFuncField>> for ClearedDenominators {
+    fn product_equals(
+        &self,
+        factors: &[&Matrix<UPolyRing<RatFuncField>>],
+        rhs: &Matrix<UPolyRing<RatFuncField>>,
+    ) -> bool {
+        let mut scale = MPoly::one(self.nvars);
+        let mut acc: Option<Matrix<PolyRing>> = None;
+        for f in factors {
+            let (c, d) = self.clear(f);
+            scale = &scale * &d;
+            acc = match acc {
+                None => Some(c),
+                Some(m) => match m.mul(&c) {
+                    Some(x) => Some(x),
+                    None => return false,
+                },
+            };
+        }
+        let Some(lhs) = acc else {
+            return false;
+        };
+        let (r, dr) = self.clear(rhs);
+        if lhs.rows() != r.rows() || lhs.cols() != r.cols() {
+            return false;
+        }
+        lhs.entries()
+            .iter()
+            .zip(r.entries())
+            .all(|(x, y)| &dr * x == &scale * y)
+    }
 }
 
 /// Scale that clears the denominators of, and removes the Q[others]

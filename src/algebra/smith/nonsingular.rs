@@ -173,19 +173,19 @@ pub fn try_nonsingular(a: &Matrix<QxRing>) -> Option<SmithDecomposition<QxRing>>
     })?;
     let mut h = Vec::with_capacity(n - 1);
     let mut w = Matrix::zeros(r.clone(), n, n);
-    for i in 0..n - 1 {
-        let bij = QPoly::from_ints(adj_t[i][j].clone());
+    for (i, adj_row) in adj_t.iter().enumerate().take(n - 1) {
+        let bij = QPoly::from_ints(adj_row[j].clone());
         let hi = r.neg(&r.rem(&r.mul(&bij, &inv), &f));
-        for k in 0..n {
-            let b = QPoly::from_ints(adj_t[i][k].clone());
-            let num = r.add(&b, &r.mul(&hi, &last[k]));
+        for (k, (bk, lk)) in adj_row.iter().zip(&last).enumerate() {
+            let b = QPoly::from_ints(bk.clone());
+            let num = r.add(&b, &r.mul(&hi, lk));
             w.set(i, k, r.div_exact(&num, &det_q)?);
         }
         h.push(hi);
     }
     let lc_inv = det_q.lc().recip();
-    for k in 0..n {
-        w.set(n - 1, k, last[k].scale(&lc_inv));
+    for (k, lk) in last.iter().enumerate() {
+        w.set(n - 1, k, lk.scale(&lc_inv));
     }
     // U = W·diag(δ).
     let mut u = w;
@@ -218,12 +218,12 @@ pub fn try_nonsingular(a: &Matrix<QxRing>) -> Option<SmithDecomposition<QxRing>>
     })
 }
 
+/// An integer polynomial (coefficients, low degree first).
+type IntPoly = Vec<BigInt>;
+
 /// det and adj of an integer polynomial matrix (entries as coefficient
 /// vectors) with det degree ≤ `bound`, by evaluation/interpolation.
-fn det_adj_poly(
-    m: &[Vec<Vec<BigInt>>],
-    bound: usize,
-) -> Option<(Vec<BigInt>, Vec<Vec<Vec<BigInt>>>)> {
+fn det_adj_poly(m: &[Vec<IntPoly>], bound: usize) -> Option<(IntPoly, Vec<Vec<IntPoly>>)> {
     let n = m.len();
     // Consecutive nodes s..=s+bound avoiding singular points (a nonzero det
     // has at most `bound` roots, so a few shifts always suffice).
@@ -274,11 +274,12 @@ mod tests {
         let m = vec![bi(&[0, 2, 1]), bi(&[3, -1, 4]), bi(&[5, 2, -2])];
         let (d, adj) = det_adj_int(&m).unwrap();
         // det by cofactor expansion
-        let det = 0 * (-1 * -2 - 4 * 2) - 2 * (3 * -2 - 4 * 5) + 1 * (3 * 2 - (-1) * 5);
+        // det by cofactor expansion along the first row (its first entry is 0).
+        let det = -2 * (3 * -2 - 4 * 5) + (3 * 2 + 5);
         assert_eq!(d, BigInt::from(det));
-        for i in 0..3 {
+        for (i, row) in m.iter().enumerate() {
             for j in 0..3 {
-                let s: BigInt = (0..3).map(|k| &m[i][k] * &adj[k][j]).sum();
+                let s: BigInt = row.iter().zip(&adj).map(|(x, a)| x * &a[j]).sum();
                 assert_eq!(s, if i == j { d.clone() } else { BigInt::zero() });
             }
         }

@@ -1,0 +1,257 @@
+//! Panel meshes on an interval, graded geometrically toward chosen points
+//! from chosen sides (the hp-style meshes that resolve endpoint and
+//! stick/slip singularities). Owns breakpoints and the "layer" of every
+//! panel (its distance, in grading layers, from the nearest graded point);
+//! it must not know about polynomial degrees, kernels or operators.
+use super::error::NumericError;
+
+/// From which side(s) of a point the mesh is graded.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Side {
+    /// Panels shrink toward the point from below (`t < at`).
+    Left,
+    /// Panels shrink toward the point from above (`t > at`).
+    Right,
+    /// Both sides.
+    Both,
+}
+
+/// One point toward which panels shrink geometrically.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Grading {
+    /// The point (becomes a breakpoint).
+    pub at: f64,
+    /// Side(s) graded.
+    pub side: Side,
+    /// Number of geometric layers (panels) on each graded side.
+    pub layers: usize,
+}
+
+/// Sorted breakpoints `lo = b_0 < … < b_P = hi` and, per panel, its layer
+/// index (0 = touching a graded point; larger = farther away).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Mesh {
+    /// Breakpoints, strictly increasing.
+    pub breaks: Vec<f64>,
+    /// Layer index of each panel (`breaks.len() - 1` entries).
+    pub levels: Vec<usize>,
+}
+
+impl Mesh {
+    /// A mesh from explicit breakpoints (all panels at layer 0).
+    pub fn from_breaks(breaks: Vec<f64>) -> Result<Mesh, NumericError> {
+        check_breaks(&breaks)?;
+        let levels = vec![0; breaks.len() - 1];
+        Ok(Mesh { breaks, levels })
+    }
+
+    /// `n` equal panels on `[lo, hi]`.
+    pub fn uniform(lo: f64, hi: f64, n: usize) -> Result<Mesh, NumericError> {
+        if n == 0 {
+            return Err(NumericError::InvalidMesh("zero panels".into()));
+        }
+        let breaks = (0..=n)
+            .map(|i| {
+                if i == n {
+                    hi
+                } else {
+                    lo + (hi - lo) * i as f64 / n as f64
+                }
+            })
+            .collect();
+        Mesh::from_breaks(breaks)
+    }
+
+    /// A mesh on `[lo, hi]` graded geometrically with ratio `sigma ∈ (0,1)`
+    /// toward every point of `gradings` (each becomes a breakpoint; the same
+    /// point may be listed once per side with different layer counts).
+    /// Between two consecutive special points, a side that is graded gets
+    /// `layers` panels of sizes `∝ σ^k`; two graded sides meet in the middle; an
+    /// interval with no graded side becomes one panel. Layer indices count
+    /// outward from the graded point.
+    ///
+    /// ```
+    /// use lambdamat::numeric::mesh::{Grading, Mesh, Side};
+    /// let m = Mesh::graded(0.0, 1.0, &[Grading { at: 1.0, side: Side::Left, layers: 4 }], 0.2).unwrap();
+    /// assert_eq!(m.breaks.len(), 5);
+    /// assert!((m.breaks[3] - 0.992).abs() < 1e-15);
+    /// ```
+    pub fn graded(
+        lo: f64,
+        hi: f64,
+        gradings: &[Grading],
+        sigma: f64,
+    ) -> Result<Mesh, NumericError> {
+        if lo.partial_cmp(&hi) != Some(std::cmp::Ordering::Less)
+            || !lo.is_finite()
+            || !hi.is_finite()
+        {
+            return Err(NumericError::InvalidMesh(format!(
+                "bad interval [{lo}, {hi}]"
+            )));
+        }
+        if !(sigma > 0.0 && sigma < 1.0) {
+            return Err(NumericError::InvalidMesh(format!(
+                "grading ratio {sigma} not in (0,1)"
+            )));
+        }
+        // Special points with the layer counts of their left and right sides.
+        let mut pts: Vec<(f64, usize, usize)> = vec![(lo, 0, 0), (hi, 0, 0)];
+        for g in gradings {
+            if !(g.at >= lo && g.at <= hi) {
+                return Err(NumericError::InvalidMesh(format!(
+                    "grading point {} outside [{lo}, {hi}]",
+                    g.at
+                )));
+            }
+            let (l, r) = match g.side {
+                Side::Left => (g.layers, 0),
+                Side::Right => (0, g.layers),
+                Side::Both => (g.layers, g.layers),
+            };
+            if let Some(p) = pts.iter_mut().find(|p| p.0 == g.at) {
+                p.1 = p.1.max(l);
+                p.2 = p.2.max(r);
+            } else {
+                pts.push((g.at, l, r));
+            }
+        }
+        pts.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let mut breaks = vec![lo];
+        let mut levels = Vec::new();
+        for w in pts.windows(2) {
+            let (a, _, la) = w[0];
+            let (b, lb, _) = w[1];
+            let (ga, gb) = (la > 0, lb > 0);
+            let mid = match (ga, gb) {
+                (true, true) => 0.5 * (a + b),
+                (true, false) => b,
+                _ => a,
+            };
+            if ga {
+                // Panels [a + (mid-a)σ^{k}, a + (mid-a)σ^{k-1}] for k = la..1.
+                for k in (0..la).rev() {
+                    breaks.push(a + (mid - a) * sigma.powi(k as i32));
+                    levels.push(la - 1 - k);
+                }
+                if !gb {
+                    continue;
+                }
+            }
+            if gb {
+                for k in 1..=lb {
+                    let t = if k == lb {
+                        b
+                    } else {
+                        b - (b - mid) * sigma.powi(k as i32)
+                    };
+                    breaks.push(t);
+                    levels.push(lb - k);
+                }
+            } else if !ga {
+                breaks.push(b);
+                levels.push(la.max(lb).max(1));
+            }
+        }
+        check_breaks(&breaks)?;
+        Ok(Mesh { breaks, levels })
+    }
+
+    /// Number of panels.
+    pub fn panels(&self) -> usize {
+        self.breaks.len() - 1
+    }
+
+    /// Panel `k` as `(left, right)`.
+    pub fn panel(&self, k: usize) -> (f64, f64) {
+        (self.breaks[k], self.breaks[k + 1])
+    }
+}
+
+fn check_breaks(b: &[f64]) -> Result<(), NumericError> {
+    if b.len() < 2 {
+        return Err(NumericError::InvalidMesh(
+            "fewer than two breakpoints".into(),
+        ));
+    }
+    for w in b.windows(2) {
+        if w[0].partial_cmp(&w[1]) != Some(std::cmp::Ordering::Less)
+            || !w[0].is_finite()
+            || !w[1].is_finite()
+        {
+            return Err(NumericError::InvalidMesh(format!(
+                "breakpoints not strictly increasing: {} then {}",
+                w[0], w[1]
+            )));
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn graded_both_sides_of_interior_point() {
+        let g = [Grading {
+            at: 0.5,
+            side: Side::Both,
+            layers: 3,
+        }];
+        let m = Mesh::graded(0.0, 1.0, &g, 0.5).unwrap();
+        assert_eq!(m.breaks, vec![0.0, 0.25, 0.375, 0.5, 0.625, 0.75, 1.0]);
+        assert_eq!(m.levels, vec![2, 1, 0, 0, 1, 2]);
+    }
+
+    #[test]
+    fn graded_meeting_in_the_middle() {
+        let g = [
+            Grading {
+                at: 0.0,
+                side: Side::Right,
+                layers: 2,
+            },
+            Grading {
+                at: 1.0,
+                side: Side::Left,
+                layers: 2,
+            },
+        ];
+        let m = Mesh::graded(0.0, 1.0, &g, 0.5).unwrap();
+        assert_eq!(m.breaks, vec![0.0, 0.25, 0.5, 0.75, 1.0]);
+        assert_eq!(m.levels, vec![0, 1, 1, 0]);
+    }
+
+    #[test]
+    fn sides_may_have_different_layer_counts() {
+        let g = [
+            Grading {
+                at: 0.5,
+                side: Side::Left,
+                layers: 1,
+            },
+            Grading {
+                at: 0.5,
+                side: Side::Right,
+                layers: 2,
+            },
+        ];
+        let m = Mesh::graded(0.0, 1.0, &g, 0.5).unwrap();
+        assert_eq!(m.breaks, vec![0.0, 0.5, 0.75, 1.0]);
+        assert_eq!(m.levels, vec![0, 0, 1]);
+    }
+
+    #[test]
+    fn bad_meshes_are_rejected() {
+        assert!(Mesh::from_breaks(vec![0.0, 0.0]).is_err());
+        assert!(Mesh::graded(0.0, 1.0, &[], 1.5).is_err());
+        let g = [Grading {
+            at: 2.0,
+            side: Side::Both,
+            layers: 2,
+        }];
+        assert!(Mesh::graded(0.0, 1.0, &g, 0.3).is_err());
+        assert!(Mesh::uniform(0.0, 1.0, 0).is_err());
+    }
+}

@@ -1,0 +1,198 @@
+//! Linear operators as data: linear combinations of integral terms of Abel
+//! type (`∫_x^b`, `∫_a^x`, `∫_a^b` with kernel `a(x,t)|t²-x²|^{-1/2}`),
+//! smooth integral terms (`∫_a^b a(x,t) f(t) dt`) and multiplication by a
+//! function of `x` (the identity is multiplication by 1). Kernels are
+//! closures compiled once by the caller (for example from the language's
+//! kernel expressions) and shared by `Arc`. This file owns the description
+//! only; discretisation lives in `assemble.rs`.
+use std::fmt;
+use std::ops::{Add, Mul, Neg, Sub};
+use std::sync::Arc;
+
+/// A smooth kernel factor `a(x, t)`.
+pub type Kernel = Arc<dyn Fn(f64, f64) -> f64 + Send + Sync>;
+/// A multiplier `m(x)`.
+pub type Multiplier = Arc<dyn Fn(f64) -> f64 + Send + Sync>;
+
+/// The integration range of an integral term as a function of `x`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Limits {
+    /// `∫_x^b` (empty when `x ≥ b`).
+    Upper {
+        /// Upper end.
+        b: f64,
+    },
+    /// `∫_a^x` (empty when `x ≤ a`).
+    Lower {
+        /// Lower end.
+        a: f64,
+    },
+    /// `∫_a^b`, independent of `x`.
+    Fixed {
+        /// Lower end.
+        a: f64,
+        /// Upper end.
+        b: f64,
+    },
+}
+
+impl Limits {
+    /// The range `[lo, hi]` at `x` (may be empty: `lo >= hi`).
+    pub fn at(&self, x: f64) -> (f64, f64) {
+        match *self {
+            Limits::Upper { b } => (x, b),
+            Limits::Lower { a } => (a, x),
+            Limits::Fixed { a, b } => (a, b),
+        }
+    }
+}
+
+/// The singular factor of an integral term's kernel.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Singularity {
+    /// Kernel `a(x,t) |t² - x²|^{-1/2}`.
+    AbelSqrt,
+    /// Kernel `a(x,t)` (smooth).
+    Smooth,
+}
+
+/// One term of an [`Operator`].
+#[derive(Clone)]
+pub enum Term {
+    /// `f ↦ ∫_{limits(x)} a(x,t) S(x,t) f(t) dt`.
+    Integral {
+        /// Integration range.
+        limits: Limits,
+        /// The singular factor `S`.
+        singularity: Singularity,
+        /// The smooth factor `a`.
+        kernel: Kernel,
+    },
+    /// `f ↦ m(x) f(x)`.
+    Multiply(Multiplier),
+}
+
+impl fmt::Debug for Term {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Term::Integral {
+                limits,
+                singularity,
+                ..
+            } => {
+                write!(f, "Integral({limits:?}, {singularity:?}, <kernel>)")
+            }
+            Term::Multiply(_) => write!(f, "Multiply(<m>)"),
+        }
+    }
+}
+
+/// A linear combination `Σ c_k T_k` of terms.
+///
+/// ```
+/// use lambdamat::numeric::operator::Operator;
+/// // κ1 f(x) = ∫_x^1 t f(t)/√(t²-x²) dt
+/// let k1 = Operator::abel_upper(1.0, |_x, t| t);
+/// assert_eq!(k1.terms.len(), 1);
+/// ```
+#[derive(Clone, Debug, Default)]
+pub struct Operator {
+    /// Coefficients and terms.
+    pub terms: Vec<(f64, Term)>,
+}
+
+impl Operator {
+    /// The zero operator.
+    pub fn zero() -> Operator {
+        Operator::default()
+    }
+
+    /// The identity.
+    pub fn identity() -> Operator {
+        Operator::multiply(|_| 1.0)
+    }
+
+    /// Multiplication by `m(x)`.
+    pub fn multiply(m: impl Fn(f64) -> f64 + Send + Sync + 'static) -> Operator {
+        Operator {
+            terms: vec![(1.0, Term::Multiply(Arc::new(m)))],
+        }
+    }
+
+    /// A single integral term.
+    pub fn integral(
+        limits: Limits,
+        singularity: Singularity,
+        kernel: impl Fn(f64, f64) -> f64 + Send + Sync + 'static,
+    ) -> Operator {
+        Operator {
+            terms: vec![(
+                1.0,
+                Term::Integral {
+                    limits,
+                    singularity,
+                    kernel: Arc::new(kernel),
+                },
+            )],
+        }
+    }
+
+    /// `∫_x^b a(x,t) f(t) / √(t²-x²) dt`.
+    pub fn abel_upper(b: f64, a: impl Fn(f64, f64) -> f64 + Send + Sync + 'static) -> Operator {
+        Operator::integral(Limits::Upper { b }, Singularity::AbelSqrt, a)
+    }
+
+    /// `∫_a^x k(x,t) f(t) / √(x²-t²) dt`.
+    pub fn abel_lower(a: f64, k: impl Fn(f64, f64) -> f64 + Send + Sync + 'static) -> Operator {
+        Operator::integral(Limits::Lower { a }, Singularity::AbelSqrt, k)
+    }
+
+    /// `∫_a^b k(x,t) f(t) / √|t²-x²| dt`.
+    pub fn abel_fixed(
+        a: f64,
+        b: f64,
+        k: impl Fn(f64, f64) -> f64 + Send + Sync + 'static,
+    ) -> Operator {
+        Operator::integral(Limits::Fixed { a, b }, Singularity::AbelSqrt, k)
+    }
+
+    /// `∫_a^b k(x,t) f(t) dt` with smooth `k`.
+    pub fn smooth(a: f64, b: f64, k: impl Fn(f64, f64) -> f64 + Send + Sync + 'static) -> Operator {
+        Operator::integral(Limits::Fixed { a, b }, Singularity::Smooth, k)
+    }
+
+    /// `c · self`.
+    pub fn scaled(mut self, c: f64) -> Operator {
+        self.terms.iter_mut().for_each(|t| t.0 *= c);
+        self
+    }
+}
+
+impl Add for Operator {
+    type Output = Operator;
+    fn add(mut self, rhs: Operator) -> Operator {
+        self.terms.extend(rhs.terms);
+        self
+    }
+}
+
+impl Sub for Operator {
+    type Output = Operator;
+    fn sub(self, rhs: Operator) -> Operator {
+        self + rhs.scaled(-1.0)
+    }
+}
+
+impl Neg for Operator {
+    type Output = Operator;
+    fn neg(self) -> Operator {
+        self.scaled(-1.0)
+    }
+}
+
+impl Mul<Operator> for f64 {
+    type Output = Operator;
+    fn mul(self, rhs: Operator) -> Operator {
+        rhs.scaled(self)
+    }
+}

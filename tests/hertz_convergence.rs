@@ -1,0 +1,123 @@
+//! Self-convergence of the Hertz solver: the free parameter and the
+//! compliance are stable under refinement, the two compliance formulas
+//! agree, and the successive differences of a refinement sequence fall.
+use lambdamat::hertz::operators::gamma_of_nu;
+use lambdamat::hertz::roots::{bracket, brent};
+use lambdamat::hertz::system::{Frame, Resolution};
+use lambdamat::hertz::{HertzError, HertzOptions, solve_given_c, solve_given_mu};
+
+#[test]
+fn given_c_is_stable_to_1e_10() {
+    for (nu, c) in [(0.0, 0.5), (0.25, 0.3)] {
+        let s = solve_given_c(nu, c, &HertzOptions::default()).unwrap();
+        assert!(
+            s.converged && s.error_estimate <= 1e-10,
+            "estimate {:e}",
+            s.error_estimate
+        );
+        assert!(
+            s.compliance_difference.abs() <= 1e-11,
+            "P* formulas differ by {:e}",
+            s.compliance_difference
+        );
+        assert!(s.stick_ok && s.slip_ok);
+        // A finer, independent run agrees within the claimed estimate.
+        let fine = solve_given_c(
+            nu,
+            c,
+            &HertzOptions {
+                tol: 1e-12,
+                max_level: 8,
+            },
+        )
+        .unwrap();
+        assert!(fine.levels > s.levels);
+        assert!(
+            (fine.mu - s.mu).abs() <= 1e-10,
+            "μ moved by {:e}",
+            fine.mu - s.mu
+        );
+        assert!(
+            (fine.compliance - s.compliance).abs() <= 1e-10,
+            "P* moved by {:e}",
+            fine.compliance - s.compliance
+        );
+    }
+}
+
+/// μ(c) on one fixed level by Brent.
+fn mu_on_level(nu: f64, c: f64, k: usize) -> Result<f64, HertzError> {
+    let frame = Frame::new(gamma_of_nu(nu), c, &Resolution::level(k))?;
+    let mut f = |mu: f64| frame.solve(mu).map(|d| d.residual_c);
+    let (a, fa, b, fb) = bracket(&mut f, 0.1, 0.4, 0.0, 10.0)?;
+    brent(&mut f, a, fa, b, fb, 1e-15)
+}
+
+#[test]
+fn refinement_sequence_converges() {
+    let mus: Vec<f64> = (0..6).map(|k| mu_on_level(0.0, 0.5, k).unwrap()).collect();
+    let diffs: Vec<f64> = mus.windows(2).map(|w| (w[1] - w[0]).abs()).collect();
+    for w in diffs.windows(2) {
+        assert!(w[1] < 0.5 * w[0], "differences do not fall: {diffs:?}");
+    }
+    assert!(diffs[diffs.len() - 1] < 1e-9, "{diffs:?}");
+}
+
+#[test]
+fn given_mu_inverts_given_c() {
+    let s = solve_given_c(0.0, 0.6, &HertzOptions::default()).unwrap();
+    let t = solve_given_mu(0.0, s.mu, &HertzOptions::default()).unwrap();
+    assert!((t.c - 0.6).abs() <= 1e-9, "c = {}", t.c);
+    assert!((t.compliance - s.compliance).abs() <= 1e-9);
+    assert!(t.stick_ok && t.slip_ok);
+}
+
+#[test]
+fn shear_becomes_continuous_at_c() {
+    // q(c⁻) - μp(c) → 0 under refinement (q - μp(c) ~ (c-t)^{1/2}, so the
+    // value on the last panel converges like the square root of its size).
+    let coarse = solve_given_c(
+        0.25,
+        0.3,
+        &HertzOptions {
+            tol: 1e-6,
+            max_level: 8,
+        },
+    )
+    .unwrap();
+    let fine = solve_given_c(
+        0.25,
+        0.3,
+        &HertzOptions {
+            tol: 1e-10,
+            max_level: 8,
+        },
+    )
+    .unwrap();
+    assert!(fine.shear_jump_at_c.abs() < 0.1 * coarse.shear_jump_at_c.abs());
+    assert!(fine.shear_jump_at_c.abs() < 1e-4 * fine.mu);
+}
+
+#[test]
+fn equations_hold_between_the_nodes() {
+    // E1 and E2 evaluated at 199 points that are not collocation nodes;
+    // includes (ν=0.25, c=0.5), the entry that differs from Spence by 1e-3.
+    let xs: Vec<f64> = (1..200).map(|i| (i as f64 + 0.37) / 201.0).collect();
+    for (nu, c) in [(0.0, 0.5), (0.25, 0.5)] {
+        let coarse = solve_given_c(
+            nu,
+            c,
+            &HertzOptions {
+                tol: 1e-6,
+                max_level: 8,
+            },
+        )
+        .unwrap();
+        let fine = solve_given_c(nu, c, &HertzOptions::default()).unwrap();
+        let (c1, c2) = coarse.residuals(&xs).unwrap();
+        let (f1, f2) = fine.residuals(&xs).unwrap();
+        eprintln!("ν={nu} c={c}: residuals E1 {c1:.1e} → {f1:.1e}, E2 {c2:.1e} → {f2:.1e}");
+        assert!(f1 < 0.1 * c1 && f2 < 0.1 * c2);
+        assert!(f1 <= 1e-8 && f2 <= 1e-8);
+    }
+}

@@ -1,0 +1,82 @@
+//! Spence's published (μ, c) pairs (seed Table 1, column c1), the physical
+//! checks along a small sweep, and monotonicity of c(μ).
+use lambdamat::hertz::{HertzOptions, solve_given_c, solve_given_mu};
+
+const SPENCE: [(f64, f64, f64); 7] = [
+    (0.0, 0.2063, 0.24),
+    (0.0, 0.2986, 0.50),
+    (0.0, 0.4013, 0.70),
+    (0.0, 0.4862, 0.80),
+    (0.25, 0.1387, 0.30),
+    (0.25, 0.1801, 0.50),
+    (0.25, 0.2843, 0.80),
+];
+
+/// Every entry agrees to 1e-3 in μ except (ν = 0.25, c = 0.5), where we
+/// get μ = 0.181118 against Spence's 0.1801 (difference 1.02e-3). That
+/// value is converged (estimate ≤ 1e-9, checked here, and the inverse
+/// solve from μ = 0.1801 gives c = 0.4956, not 0.5), so the test pins the
+/// difference to [1.0e-3, 1.05e-3] instead of hiding it: if the solver
+/// changes, this entry must be looked at again.
+#[test]
+fn spence_pairs_to_about_1e_3() {
+    let opts = HertzOptions {
+        tol: 1e-9,
+        ..HertzOptions::default()
+    };
+    for (nu, mu, c) in SPENCE {
+        let s = solve_given_c(nu, c, &opts).unwrap();
+        eprintln!(
+            "ν={nu} c={c}: μ = {:.6} (Spence {mu}, difference {:+.2e}), P* = {:.10} ± {:.1e}",
+            s.mu,
+            s.mu - mu,
+            s.compliance,
+            s.error_estimate
+        );
+        assert!(s.converged && s.error_estimate <= 1e-9);
+        if nu == 0.25 && c == 0.5 {
+            let d = s.mu - mu;
+            assert!(
+                (1.0e-3..=1.05e-3).contains(&d),
+                "ν=0.25 c=0.5: difference {d:e}"
+            );
+        } else {
+            assert!(
+                (s.mu - mu).abs() <= 1e-3,
+                "ν={nu} c={c}: μ = {} vs {mu}",
+                s.mu
+            );
+        }
+        assert!(s.stick_ok && s.slip_ok);
+        // Pointwise at the singular point c itself: limited by the smallest panel.
+        assert!(
+            s.shear_jump_at_c.abs() <= 1e-3 * s.mu,
+            "q(c-) - μp(c) = {:e}",
+            s.shear_jump_at_c
+        );
+        assert!(s.compliance > 1.0);
+    }
+}
+
+#[test]
+fn sweep_checks_and_monotone_c() {
+    let opts = HertzOptions {
+        tol: 1e-8,
+        ..HertzOptions::default()
+    };
+    for (nu, mus) in [(0.0, [0.1, 0.2, 0.5, 1.0]), (0.3, [0.1, 0.2, 0.3, 0.5])] {
+        let mut prev = 0.0;
+        for mu in mus {
+            let s = solve_given_mu(nu, mu, &opts).unwrap();
+            assert!(
+                s.c > prev && s.c < 1.0,
+                "ν={nu} μ={mu}: c = {} after {prev}",
+                s.c
+            );
+            assert!(s.stick_ok, "stick inequality fails at ν={nu} μ={mu}");
+            assert!(s.slip_ok, "u < 0 fails at ν={nu} μ={mu}");
+            assert!(s.compliance_difference.abs() < 1e-9);
+            prev = s.c;
+        }
+    }
+}
