@@ -183,6 +183,16 @@ fn syntax_error_unclosed_bracket_at_end_of_file() {
 }
 
 #[test]
+fn syntax_error_labels_are_short() {
+    let r = errs("var x y\n").render();
+    assert!(r.contains("found `y`\n --> t.lmx:1:7\n"), "{r}");
+    assert!(
+        r.contains("  |       ^ expected a statement or `,`\n"),
+        "{r}"
+    );
+}
+
+#[test]
 fn syntax_error_check_without_with() {
     let (k, m, l, c) = single("check smith A U, D, V");
     assert_eq!(k, ErrorKind::Syntax);
@@ -269,7 +279,9 @@ fn huge_exponent_is_refused_not_computed() {
 fn ragged_rows() {
     let (k, m, l, c) = single("var x\nmatrix A = [\n  1, 2;\n  3, 4, 5\n]\n");
     assert_eq!(k, ErrorKind::RaggedRows);
-    assert_eq!(m, "row 2 has 3 entries, but row 1 has 2");
+    assert_eq!(m, "row 2 has 3 entries, but row 1 has 2 entries");
+    let (_, m, _, _) = single("matrix A = [1, 2; 3]");
+    assert_eq!(m, "row 2 has 1 entry, but row 1 has 2 entries");
     assert_eq!((l, c), (4, 3));
 }
 
@@ -332,9 +344,16 @@ fn keyword_used_as_a_name() {
     let (k, _, l, c) = single("var x\nmatrix var = [x]\n");
     assert_eq!(k, ErrorKind::KeywordAsName);
     assert_eq!((l, c), (2, 8));
-    let (k, _, l, c) = single("var x\nmatrix A = [x*pi + int]\n");
+    let (k, m, l, c) = single("var x\nmatrix A = [x*pi + int]\n");
     assert_eq!(k, ErrorKind::KeywordAsName);
+    assert_eq!(
+        m,
+        "expected an expression, found the keyword `int` (keywords cannot be used as names)"
+    );
     assert_eq!((l, c), (2, 20));
+    // A missing operand before the next statement is caught at its keyword.
+    let (k, _, l, c) = single("param a = 1 +\nvar x\n");
+    assert_eq!((k, l, c), (ErrorKind::KeywordAsName, 2, 1));
 }
 
 #[test]
@@ -379,23 +398,89 @@ fn render_is_plain_text_with_caret() {
 
 #[test]
 fn deep_nesting_is_an_error_not_a_crash() {
-    let src = format!(
-        "var x\nmatrix A = [{}x{}]",
-        "(".repeat(5000),
-        ")".repeat(5000)
-    );
-    let (k, _, l, _) = single(&src);
+    let open = "(".repeat(50_000);
+    let close = ")".repeat(50_000);
+    let (k, _, l, _) = single(&format!("var x\nmatrix A = [{open}x{close}]"));
     assert_eq!((k, l), (ErrorKind::TooDeep, 2));
-    let src = format!("var x\nmatrix A = [{}x]", "-".repeat(100000));
+    let src = format!("var x\nmatrix A = [{}x]", "-".repeat(100_000));
     assert_eq!(single(&src).0, ErrorKind::TooDeep);
-    let long_sum = vec!["x"; 5000].join("+");
+    let src = format!("var x\nmatrix A = [x{}]", "^1".repeat(100_000));
+    assert_eq!(single(&src).0, ErrorKind::TooDeep);
+    let long_sum = vec!["x"; 50_000].join("+");
     let src = format!("var x\nmatrix A = [{long_sum}]");
     assert_eq!(single(&src).0, ErrorKind::TooDeep);
 }
 
 #[test]
-fn long_but_reasonable_entries_are_fine() {
-    let long_sum = vec!["x"; 900].join("+");
-    let p = ok(&format!("var x\nmatrix A = [{long_sum}]"));
-    assert_eq!(entries(&p, 0), ["900*x"]);
+fn deep_but_allowed_input_is_fine_on_any_thread() {
+    // Run on a small stack: the front end must not depend on the caller's.
+    let worker = std::thread::Builder::new()
+        .stack_size(256 << 10)
+        .spawn(|| {
+            let long_sum = vec!["x"; 15_000].join("+");
+            let p = ok(&format!("var x\nmatrix A = [{long_sum}]"));
+            assert_eq!(entries(&p, 0), ["15000*x"]);
+            let nested = format!("{}x{}", "(".repeat(450), ")".repeat(450));
+            let p = ok(&format!("var x\nmatrix A = [{nested}^2]"));
+            assert_eq!(entries(&p, 0), ["x^2"]);
+            let negs = format!("{}x", "-".repeat(4000));
+            let p = ok(&format!("var x\nmatrix A = [{negs}]"));
+            assert_eq!(entries(&p, 0), ["x"]);
+        })
+        .expect("spawn");
+    assert!(worker.join().is_ok());
+}
+
+#[test]
+fn seed_example_checks_the_papers_decomposition() {
+    let p = ok(include_str!("../examples/seed_lambda.lmx"));
+    let names: Vec<&str> = p.matrices.iter().map(|m| m.name.as_str()).collect();
+    assert_eq!(names, ["A", "U", "D", "V"]);
+    assert_eq!(entries(&p, 2), ["k4^2", "0", "0", "k1*k4^2 - k2*k3*k4"]);
+    assert_eq!(
+        p.directives,
+        [
+            Directive::Smith { matrix: 0 },
+            Directive::CheckSmith {
+                matrix: 0,
+                u: 1,
+                d: 2,
+                v: 3
+            }
+        ]
+    );
+    let p = ok(include_str!("../examples/matrix_qx.lmx"));
+    assert_eq!(
+        entries(&p, 0),
+        ["9*x - 5", "x^2 - 1/3*x", "3/4", "x^2 + 2*x + 1"]
+    );
+}
+
+#[test]
+fn check_smith_shapes_must_fit() {
+    let all = summary(
+        "matrix A = [1, 2, 3; 4, 5, 6]\nmatrix U = [1, 0; 0, 1]\nmatrix D = [1, 0; 0, 1]\n\
+         matrix V = [1, 0; 0, 1]\ncheck smith A with U, D, V\n",
+    );
+    let got: Vec<_> = all
+        .iter()
+        .map(|(k, m, l, c)| (*k, m.as_str(), *l, *c))
+        .collect();
+    assert_eq!(
+        got,
+        [
+            (
+                ErrorKind::Shape,
+                "`D` is 2×2, but it must be 2×3: D = U·A·V has the shape of A and A is 2×3",
+                5,
+                23
+            ),
+            (
+                ErrorKind::Shape,
+                "`V` is 2×2, but it must be 3×3: V multiplies A on the right and A is 2×3",
+                5,
+                26
+            ),
+        ]
+    );
 }

@@ -28,6 +28,10 @@ fn round_trip(src: &str) {
 fn examples_round_trip() {
     round_trip(include_str!("../examples/hertz_stick.lmx"));
     round_trip(include_str!("data/peers_3x3.lmx"));
+    round_trip(include_str!("../examples/seed_lambda.lmx"));
+    round_trip(include_str!("../examples/matrix_qx.lmx"));
+    round_trip(include_str!("../examples/generic3.lmx"));
+    round_trip(include_str!("../examples/singular.lmx"));
     round_trip(
         "var k1, k2, k3, k4\nprincipal k4\nmatrix A = [k1, k2; k3, k4]\nmatrix E = []\nsmith A\ncheck smith A with A, A, A\n",
     );

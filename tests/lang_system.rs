@@ -577,3 +577,136 @@ fn system_syntax_errors_say_what_was_expected() {
     assert_eq!(m, "expected a term such as `k1 p`, found `=`");
     assert_eq!((l, c), (2, 17));
 }
+
+#[test]
+fn generic_and_singular_examples() {
+    let p = ok(include_str!("../examples/generic3.lmx"));
+    assert_eq!(p.symbols.len(), 9);
+    assert!(p.operators.is_empty());
+    let a = p.lambda_matrix();
+    let shown: Vec<String> = a
+        .entries
+        .iter()
+        .map(|e| e.to_string_with(&p.symbols))
+        .collect();
+    assert_eq!(
+        shown,
+        [
+            "a11", "a12", "a13", "a21", "a22", "a23", "a31", "a32", "a33"
+        ]
+    );
+    assert_eq!(p.directives, [Directive::Solve { unknown: 0 }]);
+    let p = ok(include_str!("../examples/singular.lmx"));
+    let a = p.lambda_matrix();
+    let shown: Vec<String> = a
+        .entries
+        .iter()
+        .map(|e| e.to_string_with(&p.symbols))
+        .collect();
+    assert_eq!(shown, ["k1", "k2", "2*k1", "2*k2"]);
+}
+
+/// Applies one operator of the lowered Hertz system to `f` at `x` by
+/// quadrature, with substitutions that remove the 1/√ singularity of the
+/// Abel kernels: `t = x sin θ` on `0..x`, `t = √(x² + s²)` on `x..1`.
+fn apply(terms: &[Term], f: &dyn Fn(f64) -> f64, x: f64) -> f64 {
+    /// Composite midpoint rule: never evaluates the endpoints, where the
+    /// transformed integrands are 0/0.
+    fn midpoint(g: &dyn Fn(f64) -> f64, a: f64, b: f64) -> f64 {
+        let n = 20000;
+        let h = (b - a) / n as f64;
+        (0..n).map(|i| g(a + (i as f64 + 0.5) * h)).sum::<f64>() * h
+    }
+    let val = |l: &Limit| match l {
+        Limit::X => None,
+        Limit::Const(q) => Some(num_traits::ToPrimitive::to_f64(q).unwrap_or(f64::NAN)),
+    };
+    terms
+        .iter()
+        .map(|term| match term {
+            Term::Integral {
+                lower,
+                upper,
+                kernel,
+            } => match (val(lower), val(upper)) {
+                (Some(0.0), None) => midpoint(
+                    &|th: f64| {
+                        let t = x * th.sin();
+                        kernel.eval(x, t) * f(t) * x * th.cos()
+                    },
+                    0.0,
+                    std::f64::consts::FRAC_PI_2,
+                ),
+                (None, Some(1.0)) => midpoint(
+                    &|s: f64| {
+                        let t = (x * x + s * s).sqrt();
+                        kernel.eval(x, t) * f(t) * s / t
+                    },
+                    0.0,
+                    (1.0 - x * x).sqrt(),
+                ),
+                (Some(a), Some(b)) => midpoint(&|t: f64| kernel.eval(x, t) * f(t), a, b),
+                other => panic!("limits {other:?} not used by the Hertz operators"),
+            },
+            Term::Identity => f(x),
+            Term::Scalar(c) => num_traits::ToPrimitive::to_f64(c).unwrap_or(f64::NAN) * f(x),
+            Term::Multiply(m) => m.eval(x, f64::NAN) * f(x),
+        })
+        .sum()
+}
+
+#[test]
+fn hertz_operators_satisfy_the_abel_identities() {
+    let p = ok(HERTZ);
+    let gamma = 1.0 / 3.0;
+    let k = |i: usize| p.operator(i).expect("defined").terms.clone();
+    let one = |_: f64| 1.0;
+    let id = |t: f64| t;
+    for x in [0.1f64, 0.35, 0.5, 0.8, 0.95] {
+        let r = (1.0 - x * x).sqrt();
+        let checks = [
+            ("k1[1]", apply(&k(0), &one, x), r),
+            (
+                "k4[1]",
+                apply(&k(3), &one, x),
+                x * f64::ln(x) - x * f64::ln(1.0 + r),
+            ),
+            ("k3[1]", apply(&k(2), &one, x), gamma * x),
+            ("k4[x]", apply(&k(3), &id, x), -x * r),
+            ("k2[x]", apply(&k(1), &id, x), gamma * (x * x - 0.5)),
+        ];
+        for (what, got, want) in checks {
+            assert!(
+                (got - want).abs() < 1e-9,
+                "{what} at x={x}: {got} vs {want}"
+            );
+        }
+    }
+}
+
+#[test]
+fn manufactured_system_has_residual_zero_at_the_exact_solution() {
+    let p = ok(include_str!("../examples/hertz_manufactured.lmx"));
+    let exact: [&dyn Fn(f64) -> f64; 2] = [&|_| 1.0, &|t| t];
+    for x in [0.2f64, 0.5, 0.9] {
+        for (i, eq) in p.equations.iter().enumerate() {
+            let mut lhs = 0.0;
+            for (j, poly) in eq.lhs.iter().enumerate() {
+                // Here every entry is a single operator symbol or zero.
+                for (mono, coeff) in poly.terms() {
+                    let sym = mono.iter().position(|&e| e == 1).expect("one symbol");
+                    let c = num_traits::ToPrimitive::to_f64(coeff).unwrap_or(f64::NAN);
+                    let terms = &p.operator(sym).expect("defined").terms;
+                    lhs += c * apply(terms, exact[j], x);
+                }
+            }
+            let rhs = eq.rhs.eval(x, f64::NAN);
+            assert!(
+                (lhs - rhs).abs() < 1e-9,
+                "equation {i} at x={x}: {lhs} vs {rhs}"
+            );
+        }
+    }
+    let names: Vec<&str> = p.outputs.iter().map(|o| o.name.as_str()).collect();
+    assert_eq!(names, ["P", "Q"]);
+}

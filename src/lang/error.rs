@@ -28,6 +28,8 @@ pub enum ErrorKind {
     RaggedRows,
     /// `smith`/`check` names something that is not a matrix.
     UnknownMatrix,
+    /// `check smith A with U, D, V` with shapes that cannot give U·A·V = D.
+    Shape,
     /// `principal` names something that is not a declared symbol, or is
     /// given twice.
     BadPrincipal,

@@ -601,3 +601,39 @@ pub(crate) fn constant(e: &Expr, scope: &Scope) -> Option<BigRational> {
         _ => None,
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use num_bigint::BigInt;
+
+    fn c(n: i64) -> SExpr {
+        SExpr::Const(BigRational::from_integer(BigInt::from(n)))
+    }
+
+    #[test]
+    fn folding_helpers() {
+        assert_eq!(smul(c(2), c(3)), c(6));
+        assert_eq!(smul(c(1), SExpr::X), SExpr::X);
+        assert_eq!(smul(SExpr::X, c(1)), SExpr::X);
+        assert_eq!(smul(c(-1), SExpr::X), SExpr::Neg(Box::new(SExpr::X)));
+        assert_eq!(
+            sdiv(c(3), c(6)),
+            SExpr::Const(BigRational::new(1.into(), 2.into()))
+        );
+        assert_eq!(sdiv(SExpr::X, c(1)), SExpr::X);
+        assert_eq!(sneg(c(4)), c(-4));
+        // Division by zero is never folded (validation rejects it earlier).
+        assert_eq!(sdiv(c(1), c(0)), SExpr::Div(Box::new(c(1)), Box::new(c(0))));
+    }
+
+    #[test]
+    fn t_becomes_x_in_output_weights() {
+        let w = SExpr::Mul(
+            Box::new(SExpr::T),
+            Box::new(SExpr::Call(Func::Sqrt, Box::new(SExpr::T))),
+        );
+        let x = t_to_x(w);
+        assert!(!x.uses_t() && x.uses_x());
+    }
+}

@@ -6,10 +6,63 @@
 //!
 //! * `grammar/lambdamat.pest`: the syntax, the single reference;
 //! * [`parser`]: text → spanned [`ast`] (pest + a Pratt parser);
-//! * [`validate`]: every meaning error at once, each with a span;
+//! * [`validate`], [`validate_system`]: every meaning error at once, each
+//!   with a span, and the [`scope`] (name table, parameter values);
 //! * [`diagnostics`]: [`LangErrors`], the only place that formats line:column;
-//! * [`lower`]: validated AST → span-free [`Program`];
+//! * [`lower`]: validated AST → span-free [`Program`] (see [`crate::system`]);
 //! * [`pretty`]: [`Program`] → source text that parses back to it.
+//!
+//! # The language
+//!
+//! A file is a sequence of statements, each led by a keyword; newlines are
+//! ordinary blanks and `#` comments run to the end of the line.
+//!
+//! ```text
+//! var x                      # polynomial symbols, in order
+//! var k1, k2, k3, k4
+//! principal k4               # the symbol playing λ in the Smith form
+//! matrix A = [ k1, k2;       # rows end with `;` (a trailing one is fine),
+//!              k3, k4 ]      # entries are separated by `,`; `[]` is 0×0
+//! smith A                    # Smith normal form of A
+//! check smith A with U, D, V # check a given decomposition U·A·V = D
+//!
+//! param nu = 1/4             # exact rationals, from earlier parameters
+//! param gamma = (1 - 2*nu)/(2 - 2*nu)
+//! operator k1 = int(x..1) t/sqrt(t^2 - x^2) dt      # ∫ₓ¹ t f(t)/√(t²−x²) dt
+//! operator k2 = -gamma*int(0..1) dt + gamma*int(0..x) x/sqrt(x^2 - t^2) dt
+//! operator m  = 2*id + x^2*id                       # 2f(x) + x² f(x)
+//! unknown p, q               # unknown functions of x
+//! equation k1 p + k2 q = 1   # operator polynomial applied to each unknown
+//! equation k4*k1 p - (k2 + 1/2*k3) q = x*sqrt(1 - x^2)
+//! solve for p
+//! output P = pi/2 * int(0..1) x*p(x) dx             # a number from the solution
+//! ```
+//!
+//! * Numbers are integers or exact decimals (`0.25` is 1/4); `a/b` is a
+//!   rational. Operators `+ - * / ^` and unary minus have the usual
+//!   precedence, `^` binding tightest and grouping to the right.
+//! * In matrix entries and in the operator part of equations, names are
+//!   symbols (`var`, `operator`) or parameters; division only by nonzero
+//!   constants, exponents non-negative integer literals (so every entry is a
+//!   polynomial).
+//! * `int(a..b) K dt` integrates over `t`; the integrand `K` may use `x`
+//!   and `t`, the function the operator is applied to is implied, and `K`
+//!   may be left out when it is 1. Limits are constants or `x`. Outside
+//!   integrals an operator may multiply its terms by functions of `x`; `id`
+//!   is the identity. Functions: `sqrt`, `ln`, `abs`, `exp`; constant `pi`.
+//! * In an equation a term is an operator product followed by the unknown it
+//!   is applied to (`k4*k1 p`, or `k4*k1*p`); the right side is a function of
+//!   `x`. There must be as many equations as unknowns.
+//! * An output is a constant plus constant multiples of `int(a..b) w*p(x) dx`
+//!   (or `… p(t) dt`), linear in the unknowns, with constant limits.
+//! * Reserved words: `var principal matrix smith check with param unknown
+//!   operator equation solve for output int id pi sqrt ln abs exp dt dx`;
+//!   `x` and `t` cannot name parameters, unknowns, operators or outputs.
+//! * Limits that keep every pass safe: brackets nest at most
+//!   [`parser::MAX_NESTING`] deep, expression trees at most
+//!   [`parser::MAX_DEPTH`] deep (a sum of that many terms in one entry),
+//!   exponents at most [`validate::MAX_EXPONENT`], entries of degree at most
+//!   [`validate::MAX_DEGREE`].
 
 pub mod ast;
 pub mod diagnostics;
@@ -41,13 +94,49 @@ pub use error::{ErrorKind, LangError};
 /// let err = lambdamat::lang::parse_program("var x\nmatrix A = [y]", "a.lmx").unwrap_err();
 /// assert!(err.render().contains("a.lmx:2:13"));
 /// ```
+///
+/// The work runs on a helper thread with a [`STACK_SIZE`] stack (as rustc
+/// does), so that the recursive passes over deeply nested input stay far
+/// from the end of the caller's stack, whatever thread the caller is on.
 pub fn parse_program(src: &str, filename: &str) -> Result<Program, LangErrors> {
+    std::thread::scope(|s| {
+        let worker = std::thread::Builder::new()
+            .name("lambdamat-front-end".into())
+            .stack_size(STACK_SIZE)
+            .spawn_scoped(s, || parse_program_here(src, filename));
+        match worker {
+            Ok(handle) => handle.join().unwrap_or_else(|_| {
+                Err(LangErrors::new(
+                    filename,
+                    src,
+                    vec![LangError::new(
+                        ErrorKind::Syntax,
+                        "internal error in the front end",
+                        ast::Span::default(),
+                        "while reading this file",
+                    )],
+                ))
+            }),
+            // No thread available: do the work here.
+            Err(_) => parse_program_here(src, filename),
+        }
+    })
+}
+
+/// Stack size of the front end's worker thread: ample for
+/// [`parser::MAX_NESTING`] brackets and [`parser::MAX_DEPTH`] levels even in
+/// unoptimised builds (the memory is reserved, not used, until needed).
+pub const STACK_SIZE: usize = 256 << 20;
+
+/// [`parse_program`] on the current thread.
+fn parse_program_here(src: &str, filename: &str) -> Result<Program, LangErrors> {
     let file = parser::parse_file(src).map_err(|e| LangErrors::new(filename, src, vec![e]))?;
     let checked = validate::validate(&file).map_err(|errs| LangErrors::new(filename, src, errs))?;
     lower::lower(&file, &checked).map_err(|e| LangErrors::new(filename, src, vec![e]))
 }
 
-/// Parses `src` into its spanned AST (syntax only, no validation).
+/// Parses `src` into its spanned AST (syntax only, no validation), on the
+/// caller's thread.
 pub fn parse_ast(src: &str, filename: &str) -> Result<ast::File, LangErrors> {
     parser::parse_file(src).map_err(|e| LangErrors::new(filename, src, vec![e]))
 }

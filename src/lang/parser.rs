@@ -1,4 +1,4 @@
-//! Source text → spanned AST ([`ast::File`]). Owns the pest parser generated
+//! Source text → spanned AST ([`super::ast::File`]). Owns the pest parser generated
 //! from `grammar/lambdamat.pest`, the Pratt parser that gives expressions
 //! their precedence, and the translation of pest's failures into a
 //! [`LangError`] that speaks about tokens in human words (never pest rule
@@ -29,12 +29,13 @@ use super::keywords::{KEYWORDS, is_keyword};
 struct LmxParser;
 
 /// Deepest bracket nesting accepted (protects the recursive-descent parser).
-pub const MAX_NESTING: usize = 100;
-/// Deepest expression tree accepted (protects every recursive pass).
-pub const MAX_DEPTH: usize = 1000;
+pub const MAX_NESTING: usize = 500;
+/// Deepest expression tree accepted (protects every recursive pass); a sum
+/// of n terms is n levels deep.
+pub const MAX_DEPTH: usize = 20_000;
 /// Most chained unary minus or `^` operators in one expression (these make
 /// the Pratt parser recurse).
-const MAX_RECURSIVE_OPS: usize = 500;
+const MAX_RECURSIVE_OPS: usize = 5_000;
 
 static PRATT: LazyLock<PrattParser<Rule>> = LazyLock::new(|| {
     PrattParser::new()
@@ -531,28 +532,52 @@ fn syntax_error(e: &pest::error::Error<Rule>, src: &str) -> LangError {
     expected.retain(|s| !covered.contains(&s.as_str()));
     let (found, keyword, len) = found_at(src, pos);
     let span = Span::new(pos, pos + len);
-    if let Some(word) = keyword.filter(|_| {
-        expected
-            .iter()
-            .any(|s| s == "a name" || s == "an expression")
-    }) {
-        return LangError::new(
-            ErrorKind::KeywordAsName,
-            format!("`{word}` is a reserved keyword and cannot be used as a name"),
-            span,
-            "reserved keyword",
-        )
-        .with_help(format!(
-            "choose another name; the reserved words are {}",
+    let help = |word: &str| {
+        format!(
+            "`{word}` is reserved; choose another name. The reserved words are {}",
             KEYWORDS.join(", ")
-        ));
+        )
+    };
+    if let Some(word) = &keyword {
+        if expected.iter().any(|s| s == "a name") {
+            return LangError::new(
+                ErrorKind::KeywordAsName,
+                format!("`{word}` is a reserved keyword and cannot be used as a name"),
+                span,
+                "reserved keyword",
+            )
+            .with_help(help(word));
+        }
+        if expected.iter().any(|s| s == "an expression") {
+            return LangError::new(
+                ErrorKind::KeywordAsName,
+                format!(
+                    "expected an expression, found the keyword `{word}` (keywords cannot be used as names)"
+                ),
+                span,
+                "reserved keyword",
+            )
+            .with_help(help(word));
+        }
     }
     let what = join_or(&expected);
+    let short: Vec<String> = expected
+        .iter()
+        .map(|s| {
+            if s == STATEMENT {
+                "a statement".to_string()
+            } else if s.starts_with("an operator") {
+                "an operator".to_string()
+            } else {
+                s.clone()
+            }
+        })
+        .collect();
     LangError::new(
         ErrorKind::Syntax,
         format!("expected {what}, found {found}"),
         span,
-        format!("expected {what}"),
+        format!("expected {}", join_or(&short)),
     )
 }
 

@@ -33,6 +33,7 @@ pub fn validate(file: &File) -> Result<Validated, Vec<LangError>> {
         scope: Scope::default(),
         errors: Vec::new(),
         processed_params: Vec::new(),
+        matrix_shapes: Vec::new(),
     };
     v.declarations(file);
     v.parameters(file);
@@ -66,6 +67,8 @@ pub(super) struct Validator {
     pub(super) errors: Vec<LangError>,
     /// `processed_params[i]`: parameter `i`'s definition has been evaluated.
     processed_params: Vec<bool>,
+    /// `matrix_shapes[i]`: rows and columns (of the first row) of matrix `i`.
+    matrix_shapes: Vec<(usize, usize)>,
 }
 
 fn duplicate(what: &str, id: &Ident, first: Entry) -> LangError {
@@ -103,9 +106,12 @@ impl Validator {
                         }
                     }
                 }
-                Stmt::Matrix { name, .. } => {
-                    if let Err(first) = self.scope.declare_matrix(&name.name, name.span) {
-                        self.err(duplicate("matrix", name, first));
+                Stmt::Matrix { name, rows, .. } => {
+                    match self.scope.declare_matrix(&name.name, name.span) {
+                        Ok(_) => self
+                            .matrix_shapes
+                            .push((rows.len(), rows.first().map_or(0, |r| r.entries.len()))),
+                        Err(first) => self.err(duplicate("matrix", name, first)),
                     }
                 }
                 Stmt::Param { name, .. } => {
@@ -227,15 +233,15 @@ impl Validator {
                                 LangError::new(
                                     ErrorKind::RaggedRows,
                                     format!(
-                                        "row {} has {} entries, but row 1 has {}",
+                                        "row {} has {}, but row 1 has {}",
                                         i + 1,
-                                        row.entries.len(),
-                                        n
+                                        entries(row.entries.len()),
+                                        entries(n)
                                     ),
                                     row.span,
-                                    format!("{} entries", row.entries.len()),
+                                    entries(row.entries.len()),
                                 )
-                                .with_related(first.span, format!("{n} entries"))
+                                .with_related(first.span, entries(n))
                                 .with_help(
                                     "every row of a matrix needs the same number of entries",
                                 ),
@@ -264,10 +270,16 @@ impl Validator {
                         }
                     }
                 }
-                Stmt::Smith(id) => self.matrix_ref(id),
+                Stmt::Smith(id) => {
+                    self.matrix_ref(id);
+                }
                 Stmt::CheckSmith { a, u, d, v } => {
-                    for id in [a, u, d, v] {
-                        self.matrix_ref(id);
+                    let shapes: Vec<_> = [a, u, d, v]
+                        .into_iter()
+                        .filter_map(|id| self.matrix_ref(id))
+                        .collect();
+                    if let [a_shape, u_shape, d_shape, v_shape] = shapes[..] {
+                        self.check_shapes(a_shape, [(u, u_shape), (d, d_shape), (v, v_shape)]);
                     }
                 }
                 Stmt::Operator { body, .. } => self.operator_body(body),
@@ -288,12 +300,39 @@ impl Validator {
         }
     }
 
-    fn matrix_ref(&mut self, id: &Ident) {
+    /// Checks that U, D, V have the shapes U·A·V = D needs, given A's.
+    fn check_shapes(&mut self, (m, n): (usize, usize), others: [(&Ident, (usize, usize)); 3]) {
+        let want = [(m, m), (m, n), (n, n)];
+        let role = [
+            "U multiplies A on the left",
+            "D = U·A·V has the shape of A",
+            "V multiplies A on the right",
+        ];
+        for (((id, got), want), role) in others.into_iter().zip(want).zip(role) {
+            if got != want {
+                self.err(
+                    LangError::new(
+                        ErrorKind::Shape,
+                        format!(
+                            "`{}` is {}×{}, but it must be {}×{}: {role} and A is {m}×{n}",
+                            id.name, got.0, got.1, want.0, want.1
+                        ),
+                        id.span,
+                        format!("{}×{}", got.0, got.1),
+                    )
+                    .with_help("write `check smith A with U, D, V` for U·A·V = D"),
+                );
+            }
+        }
+    }
+
+    /// Checks that `id` names a matrix; returns its shape.
+    fn matrix_ref(&mut self, id: &Ident) -> Option<(usize, usize)> {
         match self.scope.get(&id.name) {
             Some(Entry {
-                sort: Sort::Matrix(_),
+                sort: Sort::Matrix(i),
                 ..
-            }) => {}
+            }) => self.matrix_shapes.get(i).copied(),
             other => {
                 let mut e = LangError::new(
                     ErrorKind::UnknownMatrix,
@@ -313,6 +352,7 @@ impl Validator {
                     e = e.with_related(en.span, "declared here");
                 }
                 self.err(e);
+                None
             }
         }
     }
@@ -748,6 +788,15 @@ impl PolyCtx {
     }
 }
 
+/// "1 entry", "3 entries".
+fn entries(n: usize) -> String {
+    if n == 1 {
+        "1 entry".to_string()
+    } else {
+        format!("{n} entries")
+    }
+}
+
 pub(super) fn division_by_zero(span: Span) -> LangError {
     LangError::new(
         ErrorKind::DivisionByZero,
@@ -764,4 +813,50 @@ fn too_large(span: Span) -> LangError {
         span,
         "too large",
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::lang::parser::parse_file;
+
+    fn kinds(src: &str) -> Vec<ErrorKind> {
+        let file = parse_file(src).expect("parses");
+        match validate(&file) {
+            Ok(_) => Vec::new(),
+            Err(errs) => errs.iter().map(|e| e.kind).collect(),
+        }
+    }
+
+    #[test]
+    fn parameters_are_evaluated_exactly_in_order() {
+        let file =
+            parse_file("param a = 2^-2\nparam b = (a + 1/4)*4\nparam c = -b^3").expect("parses");
+        let v = validate(&file).expect("valid");
+        let vals: Vec<String> = v
+            .scope
+            .params
+            .iter()
+            .map(|(n, q)| format!("{n}={}", q.as_ref().map_or("?".into(), |q| q.to_string())))
+            .collect();
+        assert_eq!(vals, ["a=1/4", "b=2", "c=-8"]);
+    }
+
+    #[test]
+    fn errors_do_not_cascade() {
+        // `a` is broken; using it later must not add a second error.
+        assert_eq!(
+            kinds("param a = 1/0\nparam b = a + 1\nvar x\nmatrix M = [x/a]"),
+            [ErrorKind::DivisionByZero]
+        );
+    }
+
+    #[test]
+    fn huge_constants_are_refused() {
+        assert_eq!(
+            kinds("param a = 1000^1000\nparam b = a^1000"),
+            [ErrorKind::BadExponent]
+        );
+        assert_eq!(kinds("param a = 0^-1"), [ErrorKind::DivisionByZero]);
+    }
 }

@@ -244,3 +244,64 @@ impl fmt::Display for Expr {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use num_bigint::BigInt;
+
+    fn c(n: i64, d: i64) -> Expr {
+        Expr::Const(BigRational::new(BigInt::from(n), BigInt::from(d)))
+    }
+
+    fn b(e: Expr) -> Box<Expr> {
+        Box::new(e)
+    }
+
+    #[test]
+    fn eval_follows_the_tree() {
+        // (1 - x)^(-1/2) * ln(t) + abs(-x) / exp(0)
+        let e = Expr::Add(
+            b(Expr::Mul(
+                b(Expr::Pow(b(Expr::Sub(b(c(1, 1)), b(Expr::X))), b(c(-1, 2)))),
+                b(Expr::Call(Func::Ln, b(Expr::T))),
+            )),
+            b(Expr::Div(
+                b(Expr::Call(Func::Abs, b(Expr::Neg(b(Expr::X))))),
+                b(Expr::Call(Func::Exp, b(c(0, 1)))),
+            )),
+        );
+        let (x, t) = (0.75f64, 2.0f64);
+        let want = (1.0 - x).powf(-0.5) * t.ln() + x;
+        assert!((e.eval(x, t) - want).abs() < 1e-14);
+        assert!(e.uses_x() && e.uses_t());
+        assert!(!c(3, 1).uses_x());
+        assert!(Expr::Pi.eval(0.0, 0.0) == std::f64::consts::PI);
+    }
+
+    #[test]
+    fn display_parenthesises_only_where_needed() {
+        let sum = Expr::Add(b(Expr::X), b(Expr::T));
+        assert_eq!(
+            Expr::Mul(b(sum.clone()), b(Expr::X)).to_string(),
+            "(x + t)*x"
+        );
+        assert_eq!(
+            Expr::Sub(b(Expr::X), b(sum.clone())).to_string(),
+            "x - (x + t)"
+        );
+        assert_eq!(Expr::Pow(b(Expr::X), b(c(-1, 2))).to_string(), "x^(-1/2)");
+        assert_eq!(Expr::Pow(b(c(-2, 1)), b(Expr::X)).to_string(), "(-2)^x");
+        assert_eq!(Expr::Mul(b(c(-1, 2)), b(Expr::X)).to_string(), "-1/2*x");
+        assert_eq!(Expr::Mul(b(Expr::X), b(c(1, 2))).to_string(), "x*(1/2)");
+        assert_eq!(
+            Expr::Neg(b(Expr::Mul(b(Expr::X), b(Expr::T)))).to_string(),
+            "-(x*t)"
+        );
+        assert_eq!(
+            Expr::Neg(b(Expr::Pow(b(Expr::X), b(c(2, 1))))).to_string(),
+            "-x^2"
+        );
+        assert_eq!(Expr::Div(b(Expr::Pi), b(c(2, 1))).to_string(), "pi/2");
+    }
+}

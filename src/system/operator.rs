@@ -28,7 +28,8 @@ pub enum Term {
         /// The kernel in `x` and `t` (any outer factor is folded in).
         kernel: Expr,
     },
-    /// `m(x) f(x)` for a function `m` that depends on `x`.
+    /// `m(x) f(x)` for a function `m` that is not a rational constant
+    /// (usually it depends on `x`; it may also be e.g. `pi`).
     Multiply(Expr),
     /// `f(x)`.
     Identity,
