@@ -14,7 +14,10 @@ use lambdamat::algebra::{
 use std::time::Instant;
 
 fn main() {
-    let args: Vec<usize> = std::env::args().skip(1).filter_map(|s| s.parse().ok()).collect();
+    let args: Vec<usize> = std::env::args()
+        .skip(1)
+        .filter_map(|s| s.parse().ok())
+        .collect();
     let (n, d) = match args.as_slice() {
         [n, d, ..] => (*n, *d),
         _ => (10, 2),
@@ -47,6 +50,9 @@ fn main() {
         .map(|e| e.len())
         .max()
         .unwrap_or(0);
-    println!("printing U and V: {:?} (widest entry {widest} characters)", t.elapsed());
+    println!(
+        "printing U and V: {:?} (widest entry {widest} characters)",
+        t.elapsed()
+    );
     assert_eq!(dd.diagonal(), s.d.diagonal(), "both paths give the same D");
 }
