@@ -235,3 +235,38 @@ proptest! {
         round_trip(&src);
     }
 }
+
+const SEEDS: &[&str] = &[
+    include_str!("../examples/hertz_stick.lmx"),
+    include_str!("../examples/hertz_manufactured.lmx"),
+    include_str!("../examples/seed_lambda.lmx"),
+    include_str!("../examples/generic3.lmx"),
+];
+
+const PIECES: &[&str] = &[
+    "(", ")", "+", "-", "*", "/", "^2", "x", "t", "k1", "0", "1", "1/3", "0.5", "id", "pi",
+    "sqrt(x)", "p(x)", "\n", "-1/2", "^(-1/2)", "2*", "k2 ", "q ",
+];
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(1500))]
+
+    /// Randomly edited examples: whenever the edit is still a valid file,
+    /// it must round-trip too.
+    #[test]
+    fn edited_examples_round_trip_when_valid(
+        which in 0..SEEDS.len(),
+        edits in prop::collection::vec((any::<usize>(), prop::sample::select(PIECES), any::<bool>()), 1..4),
+    ) {
+        let mut s: Vec<char> = SEEDS[which].chars().collect();
+        for (at, piece, replace) in edits {
+            let at = at % s.len().max(1);
+            let end = if replace { (at + 1).min(s.len()) } else { at };
+            s.splice(at..end, piece.chars());
+        }
+        let src: String = s.into_iter().collect();
+        if parse_program(&src, "edit.lmx").is_ok() {
+            round_trip(&src);
+        }
+    }
+}

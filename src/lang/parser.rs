@@ -49,8 +49,20 @@ static PRATT: LazyLock<PrattParser<Rule>> = LazyLock::new(|| {
 /// error (a parser cannot usefully go on after one).
 pub fn parse_file(src: &str) -> Result<File, LangError> {
     check_nesting(src)?;
-    pest::set_error_detail(true);
-    let mut pairs = LmxParser::parse(Rule::program, src).map_err(|e| syntax_error(&e, src))?;
+    let mut pairs = match LmxParser::parse(Rule::program, src) {
+        Ok(pairs) => pairs,
+        Err(_) => {
+            // Parse again with pest's token tracking on, which names the
+            // expected punctuation. It is a process-wide switch that is only
+            // ever turned on, so the second parse always has it; it costs
+            // about twice the parsing time, so valid files do without it.
+            pest::set_error_detail(true);
+            return Err(match LmxParser::parse(Rule::program, src) {
+                Err(e) => syntax_error(&e, src),
+                Ok(_) => internal(Span::default(), "the parser changed its mind"),
+            });
+        }
+    };
     let program = pairs
         .next()
         .ok_or_else(|| LangError::new(ErrorKind::Syntax, "empty parse", Span::default(), ""))?;
@@ -480,6 +492,15 @@ fn syntax_error(e: &pest::error::Error<Rule>, src: &str) -> LangError {
         InputLocation::Pos(p) => p,
         InputLocation::Span((s, _)) => s,
     };
+    if let ErrorVariant::CustomError { message } = &e.variant {
+        // pest reports its own call or stack limits this way.
+        return LangError::new(
+            ErrorKind::TooDeep,
+            format!("the input is nested too deeply to parse ({message})"),
+            Span::new(pos, pos),
+            "here",
+        );
+    }
     let mut expected: Vec<String> = Vec::new();
     let mut push = |s: String| {
         if !expected.contains(&s) {
