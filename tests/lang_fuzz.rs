@@ -15,24 +15,8 @@ const VALID: &[&str] = &[
      output S = 1 + 1/3*int(0..1) q(t)*(1 - sqrt(1 - t^2)) dt - int(0..1/2) p(x) dx\n",
 ];
 
-const TOKENS: &[&str] = &[
-    "var",
-    "principal",
-    "matrix",
-    "smith",
-    "check",
-    "with",
-    "param",
-    "unknown",
-    "operator",
-    "equation",
-    "solve",
-    "for",
-    "output",
-    "int",
-    "id",
-    "pi",
-    "sqrt",
+/// Tokens besides the keywords (which come from the language itself).
+const OTHER_TOKENS: &[&str] = &[
     "x",
     "t",
     "k1",
@@ -53,8 +37,6 @@ const TOKENS: &[&str] = &[
     "^",
     "=",
     "..",
-    "dt",
-    "dx",
     "#",
     "\n",
     " ",
@@ -107,7 +89,7 @@ fn apply(src: &str, edits: &[Edit]) -> String {
 }
 
 fn token() -> impl Strategy<Value = String> {
-    prop::sample::select(TOKENS).prop_map(str::to_string)
+    prop::sample::select(tokens()).prop_map(str::to_string)
 }
 
 fn edit() -> impl Strategy<Value = Edit> {
@@ -146,4 +128,13 @@ fn valid_seeds_are_valid() {
     for src in VALID {
         assert!(parse_program(src, "v.lmx").is_ok(), "{src}");
     }
+}
+
+/// Every keyword of the language plus the other tokens.
+fn tokens() -> Vec<&'static str> {
+    lambdamat::lang::keywords::KEYWORDS
+        .iter()
+        .chain(OTHER_TOKENS)
+        .copied()
+        .collect()
 }

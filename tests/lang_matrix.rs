@@ -2,40 +2,10 @@
 //! the expected polynomials, and every kind of bad input is reported with its
 //! message and its line:column.
 
-use lambdamat::lang::{Directive, ErrorKind, LangErrors, Program, parse_program};
+mod common;
 
-fn ok(src: &str) -> Program {
-    match parse_program(src, "t.lmx") {
-        Ok(p) => p,
-        Err(e) => panic!("unexpected errors:\n{}", e.render()),
-    }
-}
-
-fn errs(src: &str) -> LangErrors {
-    match parse_program(src, "t.lmx") {
-        Ok(p) => panic!("expected errors, got {p:?}"),
-        Err(e) => e,
-    }
-}
-
-/// (kind, message, line, column) of every error.
-fn summary(src: &str) -> Vec<(ErrorKind, String, usize, usize)> {
-    let e = errs(src);
-    e.errors()
-        .iter()
-        .map(|x| {
-            let (l, c) = e.line_col(x.span);
-            (x.kind, x.message.clone(), l, c)
-        })
-        .collect()
-}
-
-/// The single error of `src`: kind, message and line:column.
-fn single(src: &str) -> (ErrorKind, String, usize, usize) {
-    let mut all = summary(src);
-    assert_eq!(all.len(), 1, "{all:?}");
-    all.remove(0)
-}
+use common::{errs, ok, single, summary};
+use lambdamat::lang::{Directive, ErrorKind, Program};
 
 fn entries(p: &Program, m: usize) -> Vec<String> {
     p.matrices[m]

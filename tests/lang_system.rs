@@ -3,45 +3,16 @@
 //! sides and output; every validation error is reported with its message and
 //! line:column.
 
-use lambdamat::lang::{Directive, ErrorKind, LangErrors, Program, parse_program};
+mod common;
+
+use common::{errs, ok, single, summary};
+use lambdamat::lang::{Directive, ErrorKind};
 use lambdamat::system::{Expr, FunctionalTerm, Limit, Term};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 
 fn q(n: i64, d: i64) -> BigRational {
     BigRational::new(BigInt::from(n), BigInt::from(d))
-}
-
-fn ok(src: &str) -> Program {
-    match parse_program(src, "t.lmx") {
-        Ok(p) => p,
-        Err(e) => panic!("unexpected errors:\n{}", e.render()),
-    }
-}
-
-fn errs(src: &str) -> LangErrors {
-    match parse_program(src, "t.lmx") {
-        Ok(p) => panic!("expected errors, got {p:?}"),
-        Err(e) => e,
-    }
-}
-
-/// (kind, message, line, column) of every error.
-fn summary(src: &str) -> Vec<(ErrorKind, String, usize, usize)> {
-    let e = errs(src);
-    e.errors()
-        .iter()
-        .map(|x| {
-            let (l, c) = e.line_col(x.span);
-            (x.kind, x.message.clone(), l, c)
-        })
-        .collect()
-}
-
-fn single(src: &str) -> (ErrorKind, String, usize, usize) {
-    let mut all = summary(src);
-    assert_eq!(all.len(), 1, "{all:?}");
-    all.remove(0)
 }
 
 const HERTZ: &str = include_str!("../examples/hertz_stick.lmx");
