@@ -207,3 +207,21 @@ fn unsupported_kernel_is_exit_2_naming_the_operator() {
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains("operator weird"), "{err}");
 }
+
+#[test]
+fn run_performs_the_solve_directive() {
+    let out = lambdamat()
+        .args(["run", "examples/mms.lmx", "--json"])
+        .output()
+        .expect("runs");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    let r = &v["results"][0];
+    assert_eq!(r["kind"], "solve");
+    assert_eq!(r["result"]["method"], "ordered");
+    assert!(max_error(&r["result"], "p", |_| 1.0) <= 1e-10);
+}

@@ -76,7 +76,8 @@ pub fn to_json(r: &SolveReport) -> Value {
     })
 }
 
-fn write_text(r: &SolveReport, w: &mut dyn Write) -> Result<(), CliError> {
+/// The text report.
+pub fn write_text(r: &SolveReport, w: &mut dyn Write) -> Result<(), CliError> {
     let label = if r.model {
         " (a MODEL: operators treated as commuting)"
     } else {
