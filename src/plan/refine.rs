@@ -166,9 +166,14 @@ fn setup(prog: &Program) -> Result<Setup, PlanError> {
     let mut interior: Vec<f64> = limits.into_iter().filter(|&z| z > lo && z < hi).collect();
     interior.sort_by(f64::total_cmp);
     interior.dedup();
-    // Operators; symbols used in equations must be defined.
+    // Operators of the symbols the equations use; those must be defined.
+    let used = |s: usize| {
+        prog.equations
+            .iter()
+            .any(|eq| eq.lhs.iter().any(|p| p.contains_var(s)))
+    };
     let mut ops: Vec<Option<(String, Operator)>> = vec![None; prog.symbols.len()];
-    for d in &prog.operators {
+    for d in prog.operators.iter().filter(|d| used(d.symbol)) {
         let name = prog.symbols[d.symbol].clone();
         ops[d.symbol] = Some((name.clone(), build_operator(d, &name, (lo, hi))?));
     }
