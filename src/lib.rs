@@ -19,4 +19,5 @@ pub mod cli;
 pub mod hertz;
 pub mod lang;
 pub mod numeric;
+pub mod plan;
 pub mod system;

@@ -4,6 +4,7 @@
 
 use crate::algebra::smith::modes::SmithError;
 use crate::lang::LangErrors;
+use crate::plan::PlanError;
 
 /// Everything that can stop a command.
 #[derive(Debug, thiserror::Error)]
@@ -32,6 +33,10 @@ pub enum CliError {
     /// The Smith computation refused or failed.
     #[error(transparent)]
     Smith(#[from] SmithError),
+    /// Solving a system: unsupported input (exit 2) or failed numerics
+    /// (singular, ill-conditioned: exit 3).
+    #[error(transparent)]
+    Plan(#[from] PlanError),
     /// Writing the output failed.
     #[error("cannot write output: {0}")]
     Output(#[from] std::io::Error),
@@ -44,7 +49,10 @@ impl CliError {
             CliError::Io { .. } | CliError::Lang(_) | CliError::Invalid(_) => 2,
             CliError::Smith(SmithError::TooManyMinors(_)) => 2,
             CliError::Usage(_) => 1,
-            CliError::Smith(_) | CliError::Numeric(_) | CliError::Output(_) => 3,
+            CliError::Plan(e) if e.is_input_error() => 2,
+            CliError::Smith(_) | CliError::Plan(_) | CliError::Numeric(_) | CliError::Output(_) => {
+                3
+            }
         }
     }
 

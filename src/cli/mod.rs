@@ -8,7 +8,8 @@
 //! * [`hertz`]: the flagship Hertz problem (solve, table, sweep);
 //! * [`plot`]: SVG plots;
 //! * [`smith`]: the `smith` command and the Smith part of `run`;
-//! * [`run`]: the `run` command (everything a file asks for).
+//! * [`run`]: the `run` command (everything a file asks for);
+//! * [`solve`]: the `solve` command (numerical solution of the file's system).
 
 pub mod error;
 pub mod hertz;
@@ -16,6 +17,7 @@ pub mod plot;
 pub mod render;
 pub mod run;
 pub mod smith;
+pub mod solve;
 
 use clap::{Args, Parser, Subcommand};
 use error::CliError;
@@ -52,6 +54,35 @@ enum Command {
     /// finds μ instead. `hertz table` reproduces the seed paper's tables
     /// beside our values; `hertz sweep` solves a ν × μ grid in parallel.
     Hertz(hertz::HertzArgs),
+    /// Solve the file's operator system numerically: unknowns on a grid,
+    /// outputs, an error estimate and the commutator defects of the pairs
+    /// an elimination commuted.
+    Solve(SolveArgs),
+}
+
+/// Arguments of `lambdamat solve`.
+#[derive(Args, Debug)]
+pub struct SolveArgs {
+    /// A lambdamat source file (.lmx).
+    pub file: PathBuf,
+    /// coupled (block system), ordered (exact elimination) or commutative (the seed's single equation, a model).
+    #[arg(long, default_value = "ordered", value_parser = ["coupled", "ordered", "commutative"])]
+    pub method: String,
+    /// Refine until two successive answers agree to this (relative).
+    #[arg(long, default_value_t = 1e-10)]
+    pub tol: f64,
+    /// Highest refinement level tried.
+    #[arg(long, default_value_t = 7)]
+    pub max_level: usize,
+    /// Print one JSON object instead of text.
+    #[arg(long)]
+    pub json: bool,
+    /// Write the unknowns on the output grid as CSV (one column per unknown).
+    #[arg(long, value_name = "FILE")]
+    pub csv: Option<PathBuf>,
+    /// Plot the unknowns as SVG.
+    #[arg(long, value_name = "FILE.svg")]
+    pub plot: Option<PathBuf>,
 }
 
 /// Output options shared by the commands.
@@ -112,6 +143,7 @@ pub fn main() -> i32 {
     let result = match cli.command {
         Command::Run(a) => run::run(&a.file, &a.out, &mut stdout),
         Command::Smith(a) => smith::smith_command(&a, &mut stdout),
+        Command::Solve(a) => solve::solve_command(&a, &mut stdout),
         Command::Hertz(a) => hertz::hertz_command(&a, &mut stdout),
     };
     let _ = stdout.flush();

@@ -1,12 +1,15 @@
 //! The `run` command: performs every directive of a file in order (Smith
-//! forms and checks of claimed decompositions) and prints the results as
+//! forms, checks of claimed decompositions, `solve for` with the default
+//! method and tolerance of `lambdamat solve`) and prints the results as
 //! text, LaTeX or one JSON object.
 
 use super::OutputArgs;
 use super::error::CliError;
 use super::render;
 use super::smith::{check, load, principal, print_report, report};
+use super::solve;
 use crate::lang::Directive;
+use crate::plan::{SolveOptions, solve_program};
 use serde_json::json;
 use std::io::Write;
 use std::path::PathBuf;
@@ -44,16 +47,16 @@ pub fn run(file: &PathBuf, out: &OutputArgs, w: &mut dyn Write) -> Result<(), Cl
                     write!(w, "{}", render::check_text(&c))?;
                 }
             }
-            Directive::Solve { unknown } => {
-                let msg = format!(
-                    "solve for {}: the elimination and the numerical solvers are not part of this build yet",
-                    p.unknowns[*unknown]
-                );
+            Directive::Solve { .. } => {
+                let r = solve_program(&p, &SolveOptions::default())?;
                 if out.json {
-                    results.push(json!({"kind": "solve", "skipped": msg}));
+                    results.push(json!({"kind": "solve", "result": solve::to_json(&r)}));
                 } else {
                     sep(w, &mut first)?;
-                    writeln!(w, "{msg}")?;
+                    solve::write_text(&r, w)?;
+                }
+                for warning in &r.warnings {
+                    eprintln!("warning: {warning}");
                 }
             }
         }

@@ -1,0 +1,210 @@
+//! The `solve` command: parses the file, asks [`crate::plan`] to solve its
+//! system and prints the answer as text or one JSON object, optionally
+//! with a CSV table and an SVG plot (plotters) of the unknowns. It does no
+//! numerics itself.
+use std::io::Write;
+use std::path::Path;
+
+use plotters::prelude::*;
+use serde_json::{Map, Value, json};
+
+use super::SolveArgs;
+use super::error::CliError;
+use super::smith::load;
+use crate::plan::{Method, SolveOptions, SolveReport, solve_program};
+
+/// `lambdamat solve FILE …`.
+pub fn solve_command(a: &SolveArgs, w: &mut dyn Write) -> Result<(), CliError> {
+    let prog = load(&a.file)?;
+    let method: Method = a.method.parse().map_err(CliError::Invalid)?;
+    let opts = SolveOptions {
+        method,
+        tol: a.tol,
+        max_level: a.max_level,
+        ..SolveOptions::default()
+    };
+    let r = solve_program(&prog, &opts)?;
+    if let Some(path) = &a.csv {
+        write_csv(&r, path)?;
+    }
+    if let Some(path) = &a.plot {
+        plot(&r, path)?;
+    }
+    if a.json {
+        writeln!(
+            w,
+            "{}",
+            serde_json::to_string_pretty(&to_json(&r))
+                .map_err(|e| CliError::Invalid(e.to_string()))?
+        )?;
+    } else {
+        write_text(&r, w)?;
+    }
+    for warning in &r.warnings {
+        eprintln!("warning: {warning}");
+    }
+    Ok(())
+}
+
+/// The JSON object: `method`, `unknowns`, `outputs`, `error_estimate`,
+/// `commutator_defects` and a few diagnostics.
+pub fn to_json(r: &SolveReport) -> Value {
+    let mut unknowns = Map::new();
+    for u in &r.unknowns {
+        unknowns.insert(
+            u.name.clone(),
+            json!({"x": u.x, "values": u.values, "weight": u.weight}),
+        );
+    }
+    let mut outputs = Map::new();
+    for (name, v) in &r.outputs {
+        outputs.insert(name.clone(), json!(v));
+    }
+    json!({
+        "method": r.method,
+        "model": r.model,
+        "target": r.target,
+        "unknowns": unknowns,
+        "outputs": outputs,
+        "error_estimate": r.error_estimate,
+        "converged": r.converged,
+        "level": r.level,
+        "dim": r.dim,
+        "cond": r.cond,
+        "commutator_defects": r.commutator_defects,
+        "warnings": r.warnings,
+    })
+}
+
+/// The text report.
+pub fn write_text(r: &SolveReport, w: &mut dyn Write) -> Result<(), CliError> {
+    let label = if r.model {
+        " (a MODEL: operators treated as commuting)"
+    } else {
+        ""
+    };
+    writeln!(w, "method: {}{label}", r.method)?;
+    writeln!(
+        w,
+        "level {}: {} coefficients per unknown on [{}, {}], condition ≈ {:.2e}",
+        r.level, r.dim, r.domain.0, r.domain.1, r.cond
+    )?;
+    writeln!(
+        w,
+        "error estimate: {:.2e}{}",
+        r.error_estimate,
+        if r.converged { "" } else { " (not converged)" }
+    )?;
+    for (name, v) in &r.outputs {
+        match v {
+            Some(v) => writeln!(w, "output {name} = {v:.15}")?,
+            None => writeln!(
+                w,
+                "output {name}: needs an unknown this method does not compute"
+            )?,
+        }
+    }
+    if !r.commutator_defects.is_empty() {
+        writeln!(w, "commutator defects (f = 1 + x):")?;
+        for d in &r.commutator_defects {
+            let v = d
+                .defect
+                .map_or("undefined".to_string(), |v| format!("{v:.3e}"));
+            writeln!(w, "  {} {}: {v}", d.pair[0], d.pair[1])?;
+        }
+    }
+    for u in &r.unknowns {
+        writeln!(w, "{} (weight {}):", u.name, u.weight)?;
+        let step = (u.x.len() / 10).max(1);
+        for (x, v) in u.x.iter().zip(&u.values).step_by(step) {
+            writeln!(w, "  x = {x:<6} {v:.12}")?;
+        }
+    }
+    Ok(())
+}
+
+fn write_csv(r: &SolveReport, path: &Path) -> Result<(), CliError> {
+    let mut s = String::from("x");
+    for u in &r.unknowns {
+        s.push(',');
+        s.push_str(&u.name);
+    }
+    s.push('\n');
+    // The union of the unknowns' grids (weighted unknowns skip a singular end).
+    let mut xs: Vec<f64> = r.unknowns.iter().flat_map(|u| u.x.clone()).collect();
+    xs.sort_by(f64::total_cmp);
+    xs.dedup();
+    for x in xs {
+        s.push_str(&format!("{x}"));
+        for u in &r.unknowns {
+            s.push(',');
+            if let Some(i) = u.x.iter().position(|&y| y == x) {
+                s.push_str(&format!("{:e}", u.values[i]));
+            }
+        }
+        s.push('\n');
+    }
+    std::fs::write(path, s).map_err(CliError::Output)
+}
+
+fn plot(r: &SolveReport, path: &Path) -> Result<(), CliError> {
+    let err = |e: String| CliError::Invalid(format!("cannot plot to {}: {e}", path.display()));
+    let finite = |v: &f64| v.is_finite();
+    let ys: Vec<f64> = r
+        .unknowns
+        .iter()
+        .flat_map(|u| u.values.iter().copied().filter(finite))
+        .collect();
+    let (mut y0, mut y1) = ys
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| {
+            (a.min(v), b.max(v))
+        });
+    if !(y0.is_finite() && y1.is_finite()) {
+        return Err(err("no finite values".into()));
+    }
+    if y1 - y0 < 1e-12 {
+        y0 -= 0.5;
+        y1 += 0.5;
+    }
+    let pad = 0.05 * (y1 - y0);
+    let root = SVGBackend::new(path, (800, 500)).into_drawing_area();
+    root.fill(&WHITE).map_err(|e| err(e.to_string()))?;
+    let mut chart = ChartBuilder::on(&root)
+        .caption(
+            format!("lambdamat solve ({})", r.method),
+            ("sans-serif", 20),
+        )
+        .margin(10)
+        .x_label_area_size(30)
+        .y_label_area_size(50)
+        .build_cartesian_2d(r.domain.0..r.domain.1, (y0 - pad)..(y1 + pad))
+        .map_err(|e| err(e.to_string()))?;
+    chart
+        .configure_mesh()
+        .x_desc("x")
+        .draw()
+        .map_err(|e| err(e.to_string()))?;
+    for (k, u) in r.unknowns.iter().enumerate() {
+        let color = Palette99::pick(k).to_rgba();
+        let pts: Vec<(f64, f64)> =
+            u.x.iter()
+                .copied()
+                .zip(u.values.iter().copied())
+                .filter(|(_, v)| v.is_finite())
+                .collect();
+        chart
+            .draw_series(LineSeries::new(pts, color))
+            .map_err(|e| err(e.to_string()))?
+            .label(u.name.clone())
+            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color));
+    }
+    chart
+        .configure_series_labels()
+        .background_style(WHITE.mix(0.8))
+        .border_style(BLACK)
+        .draw()
+        .map_err(|e| err(e.to_string()))?;
+    root.present().map_err(|e| err(e.to_string()))?;
+    Ok(())
+}

@@ -1,0 +1,318 @@
+//! Compiling the language's expression trees ([`Expr`]) once into closures,
+//! and recognising the Abel factor `|t²-x²|^(-1/2)` in a kernel. Constant
+//! subtrees are folded to one number at compile time, so the hot loops of
+//! assembly call a small tree of closures and never walk the `Expr` again.
+//! This file owns expression handling only; it must not know about
+//! operators, limits or bases.
+use std::sync::Arc;
+
+use num_traits::ToPrimitive;
+
+use crate::system::expr::{Expr, Func};
+
+/// A compiled function of `(x, t)`.
+pub type Fn2 = Arc<dyn Fn(f64, f64) -> f64 + Send + Sync>;
+
+/// Compiles `e` into a closure of `(x, t)`.
+///
+/// ```
+/// use lambdamat::plan::compile::compile;
+/// use lambdamat::system::expr::Expr;
+/// let f = compile(&Expr::Mul(Box::new(Expr::X), Box::new(Expr::T)));
+/// assert_eq!(f(2.0, 3.0), 6.0);
+/// ```
+pub fn compile(e: &Expr) -> Fn2 {
+    if !e.uses_x() && !e.uses_t() {
+        let v = e.eval(0.0, 0.0);
+        return Arc::new(move |_, _| v);
+    }
+    match e {
+        Expr::X => Arc::new(|x, _| x),
+        Expr::T => Arc::new(|_, t| t),
+        Expr::Neg(a) => {
+            let a = compile(a);
+            Arc::new(move |x, t| -a(x, t))
+        }
+        Expr::Add(a, b) => bin(a, b, |u, v| u + v),
+        Expr::Sub(a, b) => bin(a, b, |u, v| u - v),
+        Expr::Mul(a, b) => bin(a, b, |u, v| u * v),
+        Expr::Div(a, b) => bin(a, b, |u, v| u / v),
+        Expr::Pow(a, b) => match const_exponent(b) {
+            Some(p) => power(compile(a), p),
+            None => bin(a, b, f64::powf),
+        },
+        Expr::Call(f, a) => {
+            let a = compile(a);
+            match f {
+                Func::Sqrt => Arc::new(move |x, t| a(x, t).sqrt()),
+                Func::Ln => Arc::new(move |x, t| a(x, t).ln()),
+                Func::Abs => Arc::new(move |x, t| a(x, t).abs()),
+                Func::Exp => Arc::new(move |x, t| a(x, t).exp()),
+            }
+        }
+        // Constants and π are folded above.
+        Expr::Const(_) | Expr::Pi => {
+            let v = e.eval(0.0, 0.0);
+            Arc::new(move |_, _| v)
+        }
+    }
+}
+
+/// Compiles a function of `x` alone (right sides, multipliers, weights).
+pub fn compile_x(e: &Expr) -> Arc<dyn Fn(f64) -> f64 + Send + Sync> {
+    let f = compile(e);
+    Arc::new(move |x| f(x, 0.0))
+}
+
+fn bin(a: &Expr, b: &Expr, op: fn(f64, f64) -> f64) -> Fn2 {
+    let (a, b) = (compile(a), compile(b));
+    Arc::new(move |x, t| op(a(x, t), b(x, t)))
+}
+
+fn const_exponent(b: &Expr) -> Option<f64> {
+    if b.uses_x() || b.uses_t() {
+        return None;
+    }
+    let v = b.eval(0.0, 0.0);
+    v.is_finite().then_some(v)
+}
+
+/// `f^p` with the common exponents done without `powf`.
+fn power(f: Fn2, p: f64) -> Fn2 {
+    if p == 1.0 {
+        f
+    } else if p == 0.5 {
+        Arc::new(move |x, t| f(x, t).sqrt())
+    } else if p == -0.5 {
+        Arc::new(move |x, t| 1.0 / f(x, t).sqrt())
+    } else if p.fract() == 0.0 && p.abs() < 64.0 {
+        let n = p as i32;
+        Arc::new(move |x, t| f(x, t).powi(n))
+    } else {
+        Arc::new(move |x, t| f(x, t).powf(p))
+    }
+}
+
+/// How the recognised Abel base was written.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum AbelBase {
+    /// `c (t² - x²)` with `c > 0` (real for `t > x`).
+    TMinusX,
+    /// `c (x² - t²)` with `c > 0` (real for `t < x`).
+    XMinusT,
+    /// `|c (t² - x²)|` (real everywhere).
+    Abs,
+}
+
+/// A kernel split as `a(x,t) · |t² - x²|^(-1/2)`.
+pub struct AbelSplit {
+    /// The smooth factor `a` (the base's constant is folded in).
+    pub smooth: Fn2,
+    /// How the base was written (decides where the kernel is real).
+    pub base: AbelBase,
+}
+
+/// Recognises a kernel of the form `a(x,t) · (c(t²-x²))^(-1/2)` (also
+/// `(c(x²-t²))^(-1/2)`, `|c(t²-x²)|^(-1/2)`, `sqrt`, division, powers) and
+/// returns the smooth factor `a`, or `None` if the kernel has no such
+/// factor. The base is recognised by value (so `(t-x)*(t+x)` counts too);
+/// the rest of the kernel is not checked for smoothness here.
+///
+/// ```
+/// use lambdamat::plan::compile::{split_abel, AbelBase};
+/// let p = lambdamat::lang::parse_program(
+///     "operator k = int(x..1) 2*t/sqrt(t^2 - x^2) dt\nunknown p\nequation k p = 1",
+///     "a.lmx").unwrap();
+/// let lambdamat::system::Term::Integral { kernel, .. } = &p.operators[0].terms[0] else { panic!() };
+/// let s = split_abel(kernel).unwrap();
+/// assert_eq!(s.base, AbelBase::TMinusX);
+/// assert!(((s.smooth)(0.3, 0.5) - 1.0).abs() < 1e-15);
+/// ```
+pub fn split_abel(e: &Expr) -> Option<AbelSplit> {
+    let mut factors: Vec<(Fn2, f64)> = Vec::new();
+    let mut found: Option<(f64, AbelBase)> = None;
+    let mut sign = 1.0;
+    flatten(e, 1.0, &mut factors, &mut found, &mut sign);
+    let (c, base) = found?;
+    let scale = sign / c.abs().sqrt();
+    let smooth: Fn2 = Arc::new(move |x, t| {
+        let mut v = scale;
+        for (f, p) in &factors {
+            v *= pow_f(f(x, t), *p);
+        }
+        v
+    });
+    Some(AbelSplit { smooth, base })
+}
+
+fn pow_f(v: f64, p: f64) -> f64 {
+    if p == 1.0 {
+        v
+    } else if p == -1.0 {
+        1.0 / v
+    } else if p == 0.5 {
+        v.sqrt()
+    } else if p == -0.5 {
+        1.0 / v.sqrt()
+    } else if p.fract() == 0.0 && p.abs() < 64.0 {
+        v.powi(p as i32)
+    } else {
+        v.powf(p)
+    }
+}
+
+/// Splits `e^p` into factors; the first subexpression raised to `-1/2`
+/// that equals `c(t²-x²)` by value becomes the Abel base.
+fn flatten(
+    e: &Expr,
+    p: f64,
+    out: &mut Vec<(Fn2, f64)>,
+    found: &mut Option<(f64, AbelBase)>,
+    sign: &mut f64,
+) {
+    if found.is_none()
+        && p == -0.5
+        && let Some(b) = match_base(e)
+    {
+        *found = Some(b);
+        return;
+    }
+    match e {
+        Expr::Neg(a) => {
+            if p.fract() == 0.0 && (p as i64) % 2 != 0 {
+                *sign = -*sign;
+                flatten(a, p, out, found, sign);
+            } else if p.fract() == 0.0 {
+                flatten(a, p, out, found, sign);
+            } else {
+                out.push((compile(e), p));
+            }
+        }
+        Expr::Mul(a, b) => {
+            flatten(a, p, out, found, sign);
+            flatten(b, p, out, found, sign);
+        }
+        Expr::Div(a, b) => {
+            flatten(a, p, out, found, sign);
+            flatten(b, -p, out, found, sign);
+        }
+        Expr::Pow(a, b) => match const_exponent(b) {
+            Some(q) if q != 0.0 => flatten(a, p * q, out, found, sign),
+            _ => out.push((compile(e), p)),
+        },
+        Expr::Call(Func::Sqrt, a) => flatten(a, 0.5 * p, out, found, sign),
+        _ => out.push((compile(e), p)),
+    }
+}
+
+const SAMPLES: [(f64, f64); 5] = [
+    (0.3, 0.7),
+    (0.61, 0.2),
+    (0.15, 0.9),
+    (0.8, 0.45),
+    (0.05, 0.33),
+];
+
+/// `Some((c, kind))` if `e` equals `c(t²-x²)` (or `|c(t²-x²)|`) at sample
+/// points, with `c` a nonzero constant.
+fn match_base(e: &Expr) -> Option<(f64, AbelBase)> {
+    if !e.uses_x() || !e.uses_t() {
+        return None;
+    }
+    let (inner, abs) = match e {
+        Expr::Call(Func::Abs, a) => (a.as_ref(), true),
+        other => (other, false),
+    };
+    let f = compile(inner);
+    let mut c: Option<f64> = None;
+    for &(x, t) in &SAMPLES {
+        let r = f(x, t) / (t * t - x * x);
+        if !r.is_finite() || r == 0.0 {
+            return None;
+        }
+        match c {
+            None => c = Some(r),
+            Some(c0) if (r - c0).abs() <= 1e-12 * c0.abs() => {}
+            Some(_) => return None,
+        }
+    }
+    let c = c?;
+    let kind = if abs {
+        AbelBase::Abs
+    } else if c > 0.0 {
+        AbelBase::TMinusX
+    } else {
+        AbelBase::XMinusT
+    };
+    Some((c, kind))
+}
+
+/// The value of a constant expression (no `x`, `t`), if finite.
+pub fn constant_value(e: &Expr) -> Option<f64> {
+    if e.uses_x() || e.uses_t() {
+        return None;
+    }
+    let v = e.eval(0.0, 0.0);
+    v.is_finite().then_some(v)
+}
+
+/// A rational as `f64`.
+pub fn rational(q: &num_rational::BigRational) -> f64 {
+    q.to_f64().unwrap_or(f64::NAN)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn kernel(src: &str) -> Expr {
+        let text = format!("operator k = {src}\nunknown p\nequation k p = 1\n");
+        let p = crate::lang::parse_program(&text, "t.lmx").expect("parses");
+        match &p.operators[0].terms[0] {
+            crate::system::Term::Integral { kernel, .. } => kernel.clone(),
+            other => panic!("{other:?}"),
+        }
+    }
+
+    #[test]
+    fn compiled_closures_match_eval() {
+        let e = kernel("int(0..1) exp(x*t) + ln(1 + t)^2/(2 - x) - abs(x - t)^(3/2) dt");
+        let f = compile(&e);
+        for &(x, t) in &SAMPLES {
+            assert!((f(x, t) - e.eval(x, t)).abs() < 1e-14);
+        }
+    }
+
+    #[test]
+    fn abel_factors_in_several_spellings() {
+        let cases = [
+            ("int(x..1) t/sqrt(t^2 - x^2) dt", AbelBase::TMinusX),
+            ("-int(x..1) x/sqrt(t^2 - x^2) dt", AbelBase::TMinusX),
+            ("1/3*int(0..x) t/sqrt(x^2 - t^2) dt", AbelBase::XMinusT),
+            ("int(x..1) t*((t - x)*(t + x))^(-1/2) dt", AbelBase::TMinusX),
+            ("int(0..1) 2*t/sqrt(abs(4*t^2 - 4*x^2)) dt", AbelBase::Abs),
+        ];
+        for (src, base) in cases {
+            let e = kernel(src);
+            let s = split_abel(&e).unwrap_or_else(|| panic!("{src}"));
+            assert_eq!(s.base, base, "{src}");
+            for &(x, t) in &SAMPLES {
+                let want = e.eval(x, t) * (t * t - x * x).abs().sqrt();
+                if want.is_finite() {
+                    assert!(((s.smooth)(x, t) - want).abs() < 1e-13, "{src}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn non_abel_kernels_are_not_split() {
+        for src in [
+            "int(x..1) t/(t^2 - x^2) dt",
+            "int(0..1) x*t dt",
+            "int(x..1) 1/sqrt(t - x) dt",
+        ] {
+            assert!(split_abel(&kernel(src)).is_none(), "{src}");
+        }
+    }
+}

@@ -1,0 +1,25 @@
+//! Solving a system written in the language: the bridge from the lowered
+//! [`crate::system::Program`] to the numeric layer. It owns compiling kernel
+//! expressions to closures, mapping operator definitions to
+//! [`crate::numeric::Operator`]s, discretising operator polynomials on one
+//! mesh, the three solution methods and the refinement ladder. It must not
+//! parse, must not do quadrature itself (that is [`crate::numeric`]'s job)
+//! and must not print anything (that is [`crate::cli`]'s job).
+//!
+//! * [`error`]: [`PlanError`] (unsupported input vs failed numerics);
+//! * [`compile`]: expression trees → closures, Abel-factor recognition;
+//! * [`operators`]: operator definitions → numeric operators;
+//! * [`discrete`]: one discretisation level (mesh, bases, matrices);
+//! * [`methods`]: coupled, ordered and commutative solves, commutator defects;
+//! * [`refine`]: the refinement ladder, error estimates and outputs.
+
+pub mod compile;
+pub mod discrete;
+pub mod error;
+pub mod methods;
+pub mod operators;
+pub mod refine;
+
+pub use error::PlanError;
+pub use methods::Method;
+pub use refine::{Defect, SolveOptions, SolveReport, UnknownValues, solve_program};

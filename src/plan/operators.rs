@@ -1,0 +1,162 @@
+//! Operator definitions of the language ([`OperatorDef`]) as numeric
+//! [`Operator`]s: limits become [`Limits`], Abel kernels
+//! `a(x,t)|t²-x²|^(-1/2)` become [`Singularity::AbelSqrt`] terms with the
+//! smooth factor `a`, other kernels become smooth terms after a check that
+//! they are regular on their range, and `id`, scalars and multipliers
+//! become multiplications. Anything else is refused with the operator's
+//! name. This file owns that mapping only; it must not assemble matrices.
+use crate::numeric::{Limits, Operator, Singularity};
+use crate::system::{Limit, OperatorDef, Term};
+
+use super::compile::{AbelBase, Fn2, compile, compile_x, rational, split_abel};
+use super::error::PlanError;
+
+/// The numeric operator of `def` (named `name`) for unknowns on `domain`.
+pub fn build_operator(
+    def: &OperatorDef,
+    name: &str,
+    domain: (f64, f64),
+) -> Result<Operator, PlanError> {
+    let unsupported = |reason: String| PlanError::Unsupported {
+        operator: name.to_string(),
+        reason,
+    };
+    let mut op = Operator::zero();
+    for term in &def.terms {
+        let piece = match term {
+            Term::Identity => Operator::identity(),
+            Term::Scalar(c) => Operator::identity().scaled(rational(c)),
+            Term::Multiply(m) => {
+                if m.uses_t() {
+                    return Err(unsupported(format!("multiplier {m} depends on t")));
+                }
+                let f = compile_x(m);
+                Operator::multiply(move |x| f(x))
+            }
+            Term::Integral {
+                lower,
+                upper,
+                kernel,
+            } => {
+                let (limits, sign) = match (lower, upper) {
+                    (Limit::X, Limit::X) => continue,
+                    (Limit::Const(a), Limit::X) => (Limits::Lower { a: rational(a) }, 1.0),
+                    (Limit::X, Limit::Const(b)) => (Limits::Upper { b: rational(b) }, 1.0),
+                    (Limit::Const(a), Limit::Const(b)) => {
+                        let (a, b) = (rational(a), rational(b));
+                        if a == b {
+                            continue;
+                        } else if a < b {
+                            (Limits::Fixed { a, b }, 1.0)
+                        } else {
+                            (Limits::Fixed { a: b, b: a }, -1.0)
+                        }
+                    }
+                };
+                let (singularity, k): (Singularity, Fn2) = match split_abel(kernel) {
+                    Some(s) => {
+                        let real = matches!(
+                            (limits, s.base),
+                            (_, AbelBase::Abs)
+                                | (Limits::Upper { .. }, AbelBase::TMinusX)
+                                | (Limits::Lower { .. }, AbelBase::XMinusT)
+                        );
+                        if !real {
+                            return Err(unsupported(format!(
+                                "kernel {kernel} is not real on all of its range (write abs(t^2 - x^2))"
+                            )));
+                        }
+                        if domain.0 < 0.0 {
+                            return Err(unsupported(format!(
+                                "Abel kernel {kernel} needs unknowns on x ≥ 0, not on [{}, {}]",
+                                domain.0, domain.1
+                            )));
+                        }
+                        (Singularity::AbelSqrt, s.smooth)
+                    }
+                    None => (Singularity::Smooth, compile(kernel)),
+                };
+                check_regular(&k, limits, domain).map_err(|why| {
+                    unsupported(format!(
+                        "kernel {kernel}: {why}; supported kernels are smooth or a smooth factor times |t^2 - x^2|^(-1/2)"
+                    ))
+                })?;
+                let k2 = k.clone();
+                Operator::integral(limits, singularity, move |x, t| k2(x, t)).scaled(sign)
+            }
+        };
+        op = op + piece;
+    }
+    Ok(op)
+}
+
+/// Checks that `k` is finite on its range at sample points and does not
+/// blow up or oscillate next to the diagonal `t = x`.
+fn check_regular(k: &Fn2, limits: Limits, domain: (f64, f64)) -> Result<(), String> {
+    let (lo, hi) = domain;
+    for fx in [0.0, 0.05, 0.3, 0.55, 0.8, 0.97, 1.0] {
+        let x = lo + fx * (hi - lo);
+        let (l, h) = limits.at(x);
+        let (l, h) = (l.max(lo), h.min(hi));
+        if l >= h {
+            continue;
+        }
+        for ft in [0.0, 0.2, 0.5, 0.8, 1.0] {
+            let t = l + ft * (h - l);
+            let v = k(x, t);
+            if !v.is_finite() {
+                return Err(format!("not finite at x = {x}, t = {t}"));
+            }
+        }
+        for s in [1.0, -1.0] {
+            let (t1, t2) = (x + s * 1e-4, x + s * 1e-9);
+            if t1 < l || t1 > h || t2 < l || t2 > h {
+                continue;
+            }
+            let (v1, v2) = (k(x, t1), k(x, t2));
+            if !v2.is_finite() || (v1 - v2).abs() > 0.1 * (1.0 + v1.abs()) {
+                return Err(format!("singular on the diagonal t = x near x = {x}"));
+            }
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn op(src: &str) -> Result<Operator, PlanError> {
+        let text = format!("operator k = {src}\nunknown p\nequation k p = 1\n");
+        let p = crate::lang::parse_program(&text, "t.lmx").expect("parses");
+        build_operator(&p.operators[0], "k", (0.0, 1.0))
+    }
+
+    #[test]
+    fn hertz_operators_are_supported() {
+        for src in [
+            "int(x..1) t/sqrt(t^2 - x^2) dt",
+            "-1/3*int(0..1) dt + 1/3*int(0..x) x/sqrt(x^2 - t^2) dt",
+            "2*id + x*id - int(0..1) exp(x*t) dt",
+            "int(1..0) t dt",
+        ] {
+            assert!(op(src).is_ok(), "{src}");
+        }
+        assert_eq!(op("int(0..1) x*t dt + 3*id").unwrap().terms.len(), 2);
+    }
+
+    #[test]
+    fn unsupported_kernels_name_the_operator() {
+        for src in [
+            "int(x..1) 1/sqrt(t - x) dt",
+            "int(0..1) ln(abs(t - x)) dt",
+            "int(0..1) t/sqrt(t^2 - x^2) dt",
+            "int(x..1) t/sqrt(x^2 - t^2) dt",
+            "int(0..1) 1/(t - x) dt",
+        ] {
+            let e = op(src).err().unwrap_or_else(|| panic!("accepted {src}"));
+            assert!(e.is_input_error());
+            assert!(e.to_string().starts_with("operator k:"), "{e}");
+        }
+    }
+}
