@@ -11,6 +11,8 @@
 //! * [`system`]: the span-free lowered program shared by algebra and numerics;
 //! * [`numeric`]: f64 numerics (nalgebra): quadrature, graded meshes,
 //!   product integration of Abel kernels, operator matrices, solves;
+//! * [`plan`]: a language system → numerical plan (kernels compiled to
+//!   closures, discretisation, coupled/ordered/commutative solves);
 //! * [`hertz`]: the flagship Hertz contact problem with finite friction,
 //!   built on [`numeric`];
 //! * [`cli`]: the `lambdamat` command line and its text/LaTeX/JSON reports.
