@@ -14,7 +14,12 @@ fn first_matrix(path: &str) -> Matrix<PolyRing> {
     let src = std::fs::read_to_string(path).expect("bench data");
     let p = parse_program(&src, path).expect("valid bench data");
     let m = &p.matrices[0];
-    Matrix::new(PolyRing::new(p.symbols.clone()), m.rows, m.cols, m.entries.clone())
+    Matrix::new(
+        PolyRing::new(p.symbols.clone()),
+        m.rows,
+        m.cols,
+        m.entries.clone(),
+    )
 }
 
 fn peers(c: &mut Criterion) {
@@ -23,7 +28,9 @@ fn peers(c: &mut Criterion) {
     for case in ["10_2_1", "8_4_1", "12_3_1"] {
         let a = first_matrix(&format!("benches/data/peers_{case}.lmx"));
         g.bench_function(case, |b| {
-            b.iter(|| smith_report("A", black_box(&a), &SmithOptions::default()).expect("certified"))
+            b.iter(|| {
+                smith_report("A", black_box(&a), &SmithOptions::default()).expect("certified")
+            })
         });
     }
     g.finish();

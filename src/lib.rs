@@ -13,10 +13,14 @@
 //!   product integration of Abel kernels, operator matrices, solves;
 //! * [`hertz`]: the flagship Hertz contact problem with finite friction,
 //!   built on [`numeric`];
+//! * [`reduce`]: one equation for one unknown of an operator system (the
+//!   commutative eliminant, its expansion into iterated integrals, the
+//!   ordered elimination), built from [`algebra`] and [`system`];
 //! * [`cli`]: the `lambdamat` command line and its text/LaTeX/JSON reports.
 pub mod algebra;
 pub mod cli;
 pub mod hertz;
 pub mod lang;
 pub mod numeric;
+pub mod reduce;
 pub mod system;

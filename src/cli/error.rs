@@ -4,6 +4,7 @@
 
 use crate::algebra::smith::modes::SmithError;
 use crate::lang::LangErrors;
+use crate::reduce::ReduceError;
 
 /// Everything that can stop a command.
 #[derive(Debug, thiserror::Error)]
@@ -25,17 +26,23 @@ pub enum CliError {
     /// The Smith computation refused or failed.
     #[error(transparent)]
     Smith(#[from] SmithError),
+    /// No reduction exists (no system, no such unknown, singular λ-matrix).
+    #[error(transparent)]
+    Reduce(#[from] ReduceError),
     /// Writing the output failed.
     #[error("cannot write output: {0}")]
     Output(#[from] std::io::Error),
 }
 
 impl CliError {
-    /// The process exit code: 2 invalid input, 3 failed computation.
+    /// The process exit code: 2 invalid input, 3 failed computation. A
+    /// singular λ-matrix is invalid input (2): the system as written does
+    /// not determine the unknown, and no computation failed.
     pub fn exit_code(&self) -> i32 {
         match self {
             CliError::Io { .. } | CliError::Lang(_) | CliError::Invalid(_) => 2,
             CliError::Smith(SmithError::TooManyMinors(_)) => 2,
+            CliError::Reduce(_) => 2,
             CliError::Smith(_) | CliError::Output(_) => 3,
         }
     }

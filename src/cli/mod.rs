@@ -6,9 +6,11 @@
 //! * [`error`]: the top-level error and its exit codes;
 //! * [`render`]: matrices, certificates and reports as text and LaTeX;
 //! * [`smith`]: the `smith` command and the Smith part of `run`;
+//! * [`reduce`]: the `reduce` command and the `solve for` part of `run`;
 //! * [`run`]: the `run` command (everything a file asks for).
 
 pub mod error;
+pub mod reduce;
 pub mod render;
 pub mod run;
 pub mod smith;
@@ -32,7 +34,7 @@ pub struct Cli {
 
 #[derive(Subcommand, Debug)]
 enum Command {
-    /// Do everything the file asks for (its `smith` and `check smith` directives, in order).
+    /// Do everything the file asks for (its `smith`, `check smith` and `solve for` directives, in order).
     Run(RunArgs),
     /// Certified Smith normal form (U, D, V) of the file's matrices.
     ///
@@ -42,6 +44,15 @@ enum Command {
     /// Several symbols and no principal one: invariant factors over Q[all]
     /// from determinantal divisors (no U, V claimed: Q[all] is not a PID).
     Smith(SmithArgs),
+    /// One equation for one unknown of the file's operator system.
+    ///
+    /// Shows the λ-matrix and its invariant factors, the commutative
+    /// eliminant det(A)·x = Σ adj(A)·g (common factor removed) in operator
+    /// form and expanded into iterated integrals, the ordered
+    /// (non-commutative) elimination with explicit inverses, and the symbol
+    /// pairs the eliminant had to commute. A singular λ-matrix is an error
+    /// (exit code 2).
+    Reduce(ReduceArgs),
 }
 
 /// Output options shared by the commands.
@@ -78,6 +89,18 @@ pub struct SmithArgs {
     pub out: OutputArgs,
 }
 
+/// Arguments of `lambdamat reduce`.
+#[derive(Args, Debug)]
+pub struct ReduceArgs {
+    /// A lambdamat source file (.lmx) with an operator system.
+    pub file: PathBuf,
+    /// The unknown to solve for (default: the file's `solve for`, else the first unknown).
+    #[arg(long = "for", value_name = "UNKNOWN")]
+    pub unknown: Option<String>,
+    #[command(flatten)]
+    pub out: OutputArgs,
+}
+
 /// Reads a source file, mapping I/O errors to invalid input.
 pub fn read_source(path: &PathBuf) -> Result<(String, String), CliError> {
     let name = path.display().to_string();
@@ -102,6 +125,7 @@ pub fn main() -> i32 {
     let result = match cli.command {
         Command::Run(a) => run::run(&a.file, &a.out, &mut stdout),
         Command::Smith(a) => smith::smith_command(&a, &mut stdout),
+        Command::Reduce(a) => reduce::reduce_command(&a, &mut stdout),
     };
     let _ = stdout.flush();
     match result {

@@ -1,15 +1,21 @@
 //! The `run` command: performs every directive of a file in order (Smith
-//! forms and checks of claimed decompositions) and prints the results as
+//! forms, checks of claimed decompositions, and the reduction for each
+//! `solve for`) and prints the results as
 //! text, LaTeX or one JSON object.
 
 use super::OutputArgs;
 use super::error::CliError;
+use super::reduce::{print_reduction, to_json};
 use super::render;
 use super::smith::{check, load, principal, print_report, report};
 use crate::lang::Directive;
+use crate::reduce::reduce;
 use serde_json::json;
 use std::io::Write;
 use std::path::PathBuf;
+
+/// What `run` says about `solve for` beyond the algebra.
+pub const NUMERICS_NOTE: &str = "the numerical solve of language files is not wired into `run` yet; only the algebraic reduction is shown";
 
 /// `lambdamat run FILE`.
 pub fn run(file: &PathBuf, out: &OutputArgs, w: &mut dyn Write) -> Result<(), CliError> {
@@ -45,15 +51,21 @@ pub fn run(file: &PathBuf, out: &OutputArgs, w: &mut dyn Write) -> Result<(), Cl
                 }
             }
             Directive::Solve { unknown } => {
-                let msg = format!(
-                    "solve for {}: the elimination and the numerical solvers are not part of this build yet",
-                    p.unknowns[*unknown]
-                );
+                let r = reduce(&p, *unknown)?;
                 if out.json {
-                    results.push(json!({"kind": "solve", "skipped": msg}));
+                    results.push(json!({
+                        "kind": "reduce",
+                        "result": to_json(&r),
+                        "numerics": NUMERICS_NOTE,
+                    }));
                 } else {
                     sep(w, &mut first)?;
-                    writeln!(w, "{msg}")?;
+                    print_reduction(&r, out, w)?;
+                    if out.latex {
+                        writeln!(w, "% {NUMERICS_NOTE}")?;
+                    } else {
+                        writeln!(w, "\nnote: {NUMERICS_NOTE}")?;
+                    }
                 }
             }
         }
