@@ -188,3 +188,28 @@ fn run_performs_solve_for_by_printing_the_reduction() {
     assert_eq!(r["kind"], "reduce");
     assert_eq!(r["result"]["commuted_pairs"], json!([["k2", "k4"]]));
 }
+
+#[test]
+fn products_inside_the_lambda_matrix_are_flagged() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let path = dir.path().join("prod.lmx");
+    std::fs::write(
+        &path,
+        "operator k1 = int(0..x) dt\noperator k2 = int(x..1) dt\nunknown p, q\n\
+         equation k2*k1 p + q = 1\nequation k1 p + k2 q = 0\n",
+    )
+    .expect("write");
+    let f = path.to_str().expect("utf-8 path");
+    let v = json(&["reduce", f]);
+    let notes = v["notes"].as_array().expect("notes");
+    assert_eq!(notes.len(), 1);
+    assert!(
+        notes[0]
+            .as_str()
+            .expect("text")
+            .contains("equation 1 applies the product k1*k2 to p")
+    );
+    // The seed system has no such products.
+    let v = json(&["reduce", "examples/hertz_stick.lmx"]);
+    assert_eq!(v["notes"], json!([]));
+}

@@ -74,6 +74,7 @@ pub fn to_json(r: &Reduction) -> Value {
         "ordered_inverses": ordered_inverses,
         "ordered_pivots": ordered_pivots,
         "commuted_pairs": r.commuted_pairs.iter().map(|c| c.pair.clone()).collect::<Vec<_>>(),
+        "notes": r.notes,
     })
 }
 
@@ -233,6 +234,9 @@ pub fn text(r: &Reduction) -> String {
                 c.on.join(", ")
             );
         }
+    }
+    for n in &r.notes {
+        let _ = writeln!(out, "note: {n}");
     }
     out
 }

@@ -133,6 +133,9 @@ pub struct Reduction {
     pub commuted_pairs: Vec<NamedPair>,
     /// Parameters substituted in the kernels.
     pub params: Vec<(String, String)>,
+    /// Caveats, e.g. products of distinct operators inside the λ-matrix,
+    /// which the lowering stores commutatively (read here in table order).
+    pub notes: Vec<String>,
 }
 
 /// The unknown to reduce for: `--for NAME`, else the file's first
@@ -274,7 +277,34 @@ pub fn reduce(p: &Program, unknown: usize) -> Result<Reduction, ReduceError> {
             .iter()
             .map(|q| (q.name.clone(), fmt_q(&q.value)))
             .collect(),
+        notes: product_notes(&a, p),
     })
+}
+
+/// A note for every λ-matrix entry with a product of distinct symbols:
+/// the lowering keeps such products as commutative monomials, so their
+/// source order is not known here and they are read in table order.
+fn product_notes(a: &Matrix<PolyRing>, p: &Program) -> Vec<String> {
+    let mut out = Vec::new();
+    for i in 0..a.rows() {
+        for j in 0..a.cols() {
+            let e = a.get(i, j);
+            let mixed = e
+                .terms()
+                .iter()
+                .any(|(m, _)| m.iter().filter(|&&k| k > 0).count() > 1);
+            if mixed {
+                out.push(format!(
+                    "equation {} applies the product {} to {}; the λ-matrix stores it commutatively, so it is read in declaration order ({}) and its own order is one more commutation",
+                    i + 1,
+                    e.to_string_with(&p.symbols),
+                    p.unknowns[j],
+                    crate::algebra::ncpoly::NcPoly::from_mpoly(e).to_string_with(&p.symbols)
+                ));
+            }
+        }
+    }
+    out
 }
 
 /// Expands the derivation-ordered left side and each `c_j[g_j]`.
