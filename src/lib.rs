@@ -15,6 +15,9 @@
 //!   closures, discretisation, coupled/ordered/commutative solves);
 //! * [`hertz`]: the flagship Hertz contact problem with finite friction,
 //!   built on [`numeric`];
+//! * [`reduce`]: one equation for one unknown of an operator system (the
+//!   commutative eliminant, its expansion into iterated integrals, the
+//!   ordered elimination), built from [`algebra`] and [`system`];
 //! * [`cli`]: the `lambdamat` command line and its text/LaTeX/JSON reports.
 pub mod algebra;
 pub mod cli;
@@ -22,4 +25,5 @@ pub mod hertz;
 pub mod lang;
 pub mod numeric;
 pub mod plan;
+pub mod reduce;
 pub mod system;

@@ -562,9 +562,7 @@ fn generic_and_singular_examples() {
         .collect();
     assert_eq!(
         shown,
-        [
-            "a11", "a12", "a13", "a21", "a22", "a23", "a31", "a32", "a33"
-        ]
+        ["k1", "k2", "k3", "k4", "k5", "k6", "k7", "k8", "k9"]
     );
     assert_eq!(p.directives, [Directive::Solve { unknown: 0 }]);
     let p = ok(include_str!("../examples/singular.lmx"));
@@ -574,7 +572,7 @@ fn generic_and_singular_examples() {
         .iter()
         .map(|e| e.to_string_with(&p.symbols))
         .collect();
-    assert_eq!(shown, ["k1", "k2", "2*k1", "2*k2"]);
+    assert_eq!(shown, ["k1", "k2", "k1*k2", "k2^2"]);
 }
 
 /// Applies one operator of the lowered Hertz system to `f` at `x` by

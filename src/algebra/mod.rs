@@ -11,12 +11,21 @@
 //!   Q(others)[λ]);
 //! * [`matrix`]: `Matrix<R>` over a ring object, Bareiss determinant,
 //!   adjugate, rank, minors;
-//! * [`smith`]: the three honest Smith modes and their certificates.
+//! * [`smith`]: the three honest Smith modes and their certificates;
+//! * [`ncpoly`]: non-commutative polynomials (ordered words) and trace
+//!   normal forms;
+//! * [`eliminate`]: the commutative eliminant of one unknown, its commuted
+//!   pairs and its Smith cross-check;
+//! * [`ordered`]: the ordered elimination by Schur complements with
+//!   explicit inverses.
 
+pub mod eliminate;
 pub mod gcd;
 pub mod intgcd;
 pub mod matrix;
 pub mod mpoly;
+pub mod ncpoly;
+pub mod ordered;
 pub mod polyring;
 pub mod qx;
 pub mod ratfunc;

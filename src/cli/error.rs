@@ -5,6 +5,7 @@
 use crate::algebra::smith::modes::SmithError;
 use crate::lang::LangErrors;
 use crate::plan::PlanError;
+use crate::reduce::ReduceError;
 
 /// Everything that can stop a command.
 #[derive(Debug, thiserror::Error)]
@@ -37,17 +38,23 @@ pub enum CliError {
     /// (singular, ill-conditioned: exit 3).
     #[error(transparent)]
     Plan(#[from] PlanError),
+    /// No reduction exists (no system, no such unknown, singular λ-matrix).
+    #[error(transparent)]
+    Reduce(#[from] ReduceError),
     /// Writing the output failed.
     #[error("cannot write output: {0}")]
     Output(#[from] std::io::Error),
 }
 
 impl CliError {
-    /// The process exit code: 2 invalid input, 3 failed computation.
+    /// The process exit code: 2 invalid input, 3 failed computation. A
+    /// singular λ-matrix is invalid input (2): the system as written does
+    /// not determine the unknown, and no computation failed.
     pub fn exit_code(&self) -> i32 {
         match self {
             CliError::Io { .. } | CliError::Lang(_) | CliError::Invalid(_) => 2,
             CliError::Smith(SmithError::TooManyMinors(_)) => 2,
+            CliError::Reduce(_) => 2,
             CliError::Usage(_) => 1,
             CliError::Plan(e) if e.is_input_error() => 2,
             CliError::Smith(_) | CliError::Plan(_) | CliError::Numeric(_) | CliError::Output(_) => {

@@ -8,12 +8,14 @@
 //! * [`hertz`]: the flagship Hertz problem (solve, table, sweep);
 //! * [`plot`]: SVG plots;
 //! * [`smith`]: the `smith` command and the Smith part of `run`;
+//! * [`reduce`]: the `reduce` command and the `solve for` part of `run`;
 //! * [`run`]: the `run` command (everything a file asks for);
 //! * [`solve`]: the `solve` command (numerical solution of the file's system).
 
 pub mod error;
 pub mod hertz;
 pub mod plot;
+pub mod reduce;
 pub mod render;
 pub mod run;
 pub mod smith;
@@ -48,6 +50,15 @@ enum Command {
     /// Several symbols and no principal one: invariant factors over Q[all]
     /// from determinantal divisors (no U, V claimed: Q[all] is not a PID).
     Smith(SmithArgs),
+    /// One equation for one unknown of the file's operator system.
+    ///
+    /// Shows the λ-matrix and its invariant factors, the commutative
+    /// eliminant det(A)·x = Σ adj(A)·g (common factor removed) in operator
+    /// form and expanded into iterated integrals, the ordered
+    /// (non-commutative) elimination with explicit inverses, and the symbol
+    /// pairs the eliminant had to commute. A singular λ-matrix is an error
+    /// (exit code 2).
+    Reduce(ReduceArgs),
     /// The Hertz contact problem with finite friction, solved exactly (docs/hertz.md).
     ///
     /// `hertz --nu 0.25 --mu 0.1801` finds the stick radius c; `--c 0.5`
@@ -119,6 +130,18 @@ pub struct SmithArgs {
     pub out: OutputArgs,
 }
 
+/// Arguments of `lambdamat reduce`.
+#[derive(Args, Debug)]
+pub struct ReduceArgs {
+    /// A lambdamat source file (.lmx) with an operator system.
+    pub file: PathBuf,
+    /// The unknown to solve for (default: the file's `solve for`, else the first unknown).
+    #[arg(long = "for", value_name = "UNKNOWN")]
+    pub unknown: Option<String>,
+    #[command(flatten)]
+    pub out: OutputArgs,
+}
+
 /// Reads a source file, mapping I/O errors to invalid input.
 pub fn read_source(path: &PathBuf) -> Result<(String, String), CliError> {
     let name = path.display().to_string();
@@ -143,6 +166,7 @@ pub fn main() -> i32 {
     let result = match cli.command {
         Command::Run(a) => run::run(&a.file, &a.out, &mut stdout),
         Command::Smith(a) => smith::smith_command(&a, &mut stdout),
+        Command::Reduce(a) => reduce::reduce_command(&a, &mut stdout),
         Command::Solve(a) => solve::solve_command(&a, &mut stdout),
         Command::Hertz(a) => hertz::hertz_command(&a, &mut stdout),
     };

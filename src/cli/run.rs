@@ -1,15 +1,18 @@
 //! The `run` command: performs every directive of a file in order (Smith
-//! forms, checks of claimed decompositions, `solve for` with the default
-//! method and tolerance of `lambdamat solve`) and prints the results as
+//! forms, checks of claimed decompositions, and for each `solve for` the
+//! reduction (eliminant, ordered elimination) followed by the numerical
+//! solve with the defaults of `lambdamat solve`) and prints the results as
 //! text, LaTeX or one JSON object.
 
 use super::OutputArgs;
 use super::error::CliError;
+use super::reduce::{print_reduction, to_json};
 use super::render;
 use super::smith::{check, load, principal, print_report, report};
 use super::solve;
 use crate::lang::Directive;
 use crate::plan::{SolveOptions, solve_program};
+use crate::reduce::reduce;
 use serde_json::json;
 use std::io::Write;
 use std::path::PathBuf;
@@ -47,7 +50,36 @@ pub fn run(file: &PathBuf, out: &OutputArgs, w: &mut dyn Write) -> Result<(), Cl
                     write!(w, "{}", render::check_text(&c))?;
                 }
             }
-            Directive::Solve { .. } => {
+            Directive::Solve { unknown } => {
+                let red = reduce(&p, *unknown)?;
+                if out.json {
+                    results.push(json!({"kind": "reduce", "result": to_json(&red)}));
+                } else {
+                    sep(w, &mut first)?;
+                    print_reduction(&red, out, w)?;
+                }
+                // Symbols declared with `var` are abstract: no kernels, no numerics.
+                let abstract_symbols: Vec<&str> = (0..p.symbols.len())
+                    .filter(|&i| p.operator(i).is_none())
+                    .map(|i| p.symbols[i].as_str())
+                    .collect();
+                if !abstract_symbols.is_empty() {
+                    let note = format!(
+                        "numerical solve skipped: {} ha{} no operator definition (declared with `var`)",
+                        abstract_symbols.join(", "),
+                        if abstract_symbols.len() == 1 {
+                            "s"
+                        } else {
+                            "ve"
+                        }
+                    );
+                    if out.json {
+                        results.push(json!({"kind": "solve", "skipped": note}));
+                    } else {
+                        writeln!(w, "\nnote: {note}")?;
+                    }
+                    continue;
+                }
                 let r = solve_program(&p, &SolveOptions::default())?;
                 if out.json {
                     results.push(json!({"kind": "solve", "result": solve::to_json(&r)}));

@@ -176,12 +176,162 @@ fn pow(base: f64, exp: &Expr) -> f64 {
     base.powf(exp.eval(f64::NAN, f64::NAN))
 }
 
+/// `e` printed in source syntax with other names for `x` and `t` (for
+/// composed kernels, where the variables are renamed level by level).
+pub struct Renamed<'a> {
+    e: &'a Expr,
+    x: &'a str,
+    t: &'a str,
+}
+
+impl Expr {
+    /// Source-syntax form with `x` printed as `x_name` and `t` as `t_name`.
+    ///
+    /// ```
+    /// use lambdamat::system::expr::Expr;
+    /// let e = Expr::Mul(Box::new(Expr::X), Box::new(Expr::T));
+    /// assert_eq!(e.renamed("t", "s").to_string(), "t*s");
+    /// ```
+    pub fn renamed<'a>(&'a self, x_name: &'a str, t_name: &'a str) -> Renamed<'a> {
+        Renamed {
+            e: self,
+            x: x_name,
+            t: t_name,
+        }
+    }
+
+    /// LaTeX form with the given names for `x` and `t`, e.g.
+    /// `\frac{x}{\sqrt{t^{2} - x^{2}}}`.
+    pub fn to_latex_vars(&self, x: &str, t: &str) -> String {
+        let sub = |e: &Expr, min: u8| {
+            let s = e.to_latex_vars(x, t);
+            if e.prec() < min {
+                format!("\\left({s}\\right)")
+            } else {
+                s
+            }
+        };
+        match self {
+            Expr::Const(q) => {
+                let a = q.abs();
+                let body = if a.is_integer() {
+                    a.numer().to_string()
+                } else {
+                    format!("\\frac{{{}}}{{{}}}", a.numer(), a.denom())
+                };
+                if q.is_negative() {
+                    format!("-{body}")
+                } else {
+                    body
+                }
+            }
+            Expr::X => x.to_string(),
+            Expr::T => t.to_string(),
+            Expr::Pi => "\\pi".to_string(),
+            Expr::Neg(a) => format!("-{}", sub(a, 2)),
+            Expr::Add(a, b) => format!("{} + {}", sub(a, 1), sub(b, 2)),
+            Expr::Sub(a, b) => format!("{} - {}", sub(a, 1), sub(b, 2)),
+            Expr::Mul(a, b) => {
+                let sep = if matches!(**b, Expr::Const(_)) {
+                    " \\cdot "
+                } else {
+                    " "
+                };
+                format!("{}{sep}{}", sub(a, 2), sub(b, 3))
+            }
+            Expr::Div(a, b) => format!(
+                "\\frac{{{}}}{{{}}}",
+                a.to_latex_vars(x, t),
+                b.to_latex_vars(x, t)
+            ),
+            Expr::Pow(a, b) => {
+                let base = match **a {
+                    Expr::Call(Func::Sqrt, _) | Expr::Call(Func::Abs, _) => a.to_latex_vars(x, t),
+                    _ => sub(a, 5),
+                };
+                format!("{base}^{{{}}}", b.to_latex_vars(x, t))
+            }
+            Expr::Call(f, a) => {
+                let inner = a.to_latex_vars(x, t);
+                match f {
+                    Func::Sqrt => format!("\\sqrt{{{inner}}}"),
+                    Func::Ln => format!("\\ln\\left({inner}\\right)"),
+                    Func::Abs => format!("\\left|{inner}\\right|"),
+                    Func::Exp => format!("e^{{{inner}}}"),
+                }
+            }
+        }
+    }
+}
+
 /// Writes `e`, parenthesised if it binds looser than `min`.
-fn child(f: &mut fmt::Formatter<'_>, e: &Expr, min: u8) -> fmt::Result {
+fn child(f: &mut fmt::Formatter<'_>, e: &Expr, min: u8, x: &str, t: &str) -> fmt::Result {
     if e.prec() < min {
-        write!(f, "({e})")
+        write!(f, "(")?;
+        write_expr(f, e, x, t)?;
+        write!(f, ")")
     } else {
-        write!(f, "{e}")
+        write_expr(f, e, x, t)
+    }
+}
+
+fn write_expr(f: &mut fmt::Formatter<'_>, e: &Expr, x: &str, t: &str) -> fmt::Result {
+    match e {
+        Expr::Const(q) => {
+            if q.is_zero() {
+                write!(f, "0")
+            } else if q.is_negative() {
+                // A negative constant prints as `-(…)`, which parses
+                // back as a negation and folds into the same constant.
+                let a = -q;
+                if a.is_integer() {
+                    write!(f, "-{}", a.numer())
+                } else {
+                    write!(f, "-{}/{}", a.numer(), a.denom())
+                }
+            } else if q.is_integer() {
+                write!(f, "{}", q.numer())
+            } else {
+                write!(f, "{}/{}", q.numer(), q.denom())
+            }
+        }
+        Expr::X => write!(f, "{x}"),
+        Expr::T => write!(f, "{t}"),
+        Expr::Pi => write!(f, "pi"),
+        Expr::Neg(a) => {
+            write!(f, "-")?;
+            child(f, a, 4, x, t)
+        }
+        Expr::Add(a, b) => {
+            child(f, a, 1, x, t)?;
+            write!(f, " + ")?;
+            child(f, b, 2, x, t)
+        }
+        Expr::Sub(a, b) => {
+            child(f, a, 1, x, t)?;
+            write!(f, " - ")?;
+            child(f, b, 2, x, t)
+        }
+        Expr::Mul(a, b) => {
+            child(f, a, 2, x, t)?;
+            write!(f, "*")?;
+            child(f, b, 4, x, t)
+        }
+        Expr::Div(a, b) => {
+            child(f, a, 2, x, t)?;
+            write!(f, "/")?;
+            child(f, b, 5, x, t)
+        }
+        Expr::Pow(a, b) => {
+            child(f, a, 5, x, t)?;
+            write!(f, "^")?;
+            child(f, b, 5, x, t)
+        }
+        Expr::Call(func, a) => {
+            write!(f, "{}(", func.name())?;
+            write_expr(f, a, x, t)?;
+            write!(f, ")")
+        }
     }
 }
 
@@ -189,59 +339,46 @@ fn child(f: &mut fmt::Formatter<'_>, e: &Expr, min: u8) -> fmt::Result {
 /// `t/sqrt(t^2 - x^2)`, `-1/2*x`, `(1 - x)^(-1/2)`.
 impl fmt::Display for Expr {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            Expr::Const(q) => {
-                if q.is_zero() {
-                    write!(f, "0")
-                } else if q.is_negative() {
-                    // A negative constant prints as `-(…)`, which parses
-                    // back as a negation and folds into the same constant.
-                    let a = -q;
-                    if a.is_integer() {
-                        write!(f, "-{}", a.numer())
-                    } else {
-                        write!(f, "-{}/{}", a.numer(), a.denom())
-                    }
-                } else if q.is_integer() {
-                    write!(f, "{}", q.numer())
-                } else {
-                    write!(f, "{}/{}", q.numer(), q.denom())
-                }
-            }
-            Expr::X => write!(f, "x"),
-            Expr::T => write!(f, "t"),
-            Expr::Pi => write!(f, "pi"),
-            Expr::Neg(a) => {
-                write!(f, "-")?;
-                child(f, a, 4)
-            }
-            Expr::Add(a, b) => {
-                child(f, a, 1)?;
-                write!(f, " + ")?;
-                child(f, b, 2)
-            }
-            Expr::Sub(a, b) => {
-                child(f, a, 1)?;
-                write!(f, " - ")?;
-                child(f, b, 2)
-            }
-            Expr::Mul(a, b) => {
-                child(f, a, 2)?;
-                write!(f, "*")?;
-                child(f, b, 4)
-            }
-            Expr::Div(a, b) => {
-                child(f, a, 2)?;
-                write!(f, "/")?;
-                child(f, b, 5)
-            }
-            Expr::Pow(a, b) => {
-                child(f, a, 5)?;
-                write!(f, "^")?;
-                child(f, b, 5)
-            }
-            Expr::Call(func, a) => write!(f, "{}({a})", func.name()),
-        }
+        write_expr(f, self, "x", "t")
+    }
+}
+
+impl fmt::Display for Renamed<'_> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write_expr(f, self.e, self.x, self.t)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn c(n: i64, d: i64) -> Box<Expr> {
+        Box::new(Expr::Const(BigRational::new(n.into(), d.into())))
+    }
+
+    #[test]
+    fn renamed_and_latex_forms() {
+        // -x/sqrt(t^2 - x^2)
+        let root = Expr::Call(
+            Func::Sqrt,
+            Box::new(Expr::Sub(
+                Box::new(Expr::Pow(Box::new(Expr::T), c(2, 1))),
+                Box::new(Expr::Pow(Box::new(Expr::X), c(2, 1))),
+            )),
+        );
+        let k = Expr::Neg(Box::new(Expr::Div(Box::new(Expr::X), Box::new(root))));
+        assert_eq!(k.to_string(), "-(x/sqrt(t^2 - x^2))");
+        assert_eq!(k.renamed("t", "s").to_string(), "-(t/sqrt(s^2 - t^2))");
+        assert_eq!(
+            k.to_latex_vars("x", "t"),
+            "-\\frac{x}{\\sqrt{t^{2} - x^{2}}}"
+        );
+        let half = Expr::Mul(c(1, 2), Box::new(Expr::Call(Func::Ln, Box::new(Expr::X))));
+        assert_eq!(
+            half.to_latex_vars("t", "s"),
+            "\\frac{1}{2} \\ln\\left(t\\right)"
+        );
     }
 }
 

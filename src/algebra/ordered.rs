@@ -1,0 +1,722 @@
+//! The ordered (non-commutative) elimination of one unknown from a square
+//! system `A·X = G` of operator equations: block Gaussian elimination by
+//! successive Schur complements, with explicit inverses of the pivots, e.g.
+//! `(k1 - k2 k4^-1 k3) p = g1 - k2 k4^-1 g2`. No symbol is ever moved past
+//! another, so the result is exact for non-commuting operators provided the
+//! listed inverses exist. This module owns the non-commutative rational
+//! expressions ([`NcExpr`]) and the elimination; it must not know about
+//! files, kernels or printing beyond names borrowed for display.
+
+use super::matrix::Matrix;
+use super::mpoly::{MPoly, latex_name};
+use super::polyring::PolyRing;
+use super::ratfunc::{RatFunc, RatFuncField};
+use super::rational::{Q, fmt_q, latex_q};
+use super::ring::{Field, Ring};
+use num_traits::{One, Signed, Zero};
+
+/// One factor of a product: a symbol or the inverse of an expression.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Factor {
+    /// The symbol with this index.
+    Sym(usize),
+    /// The inverse of an expression that is not a single product.
+    Inv(Box<NcExpr>),
+}
+
+/// A non-commutative rational expression: a sum of `coefficient · product
+/// of factors`, where a factor is a symbol or an inverse.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct NcExpr {
+    terms: Vec<(Q, Vec<Factor>)>,
+}
+
+impl NcExpr {
+    /// Zero.
+    pub fn zero() -> Self {
+        NcExpr::default()
+    }
+
+    /// The constant `c`.
+    pub fn constant(c: Q) -> Self {
+        NcExpr::zero().plus_term(c, Vec::new())
+    }
+
+    /// The symbol `i`.
+    pub fn sym(i: usize) -> Self {
+        NcExpr::zero().plus_term(Q::one(), vec![Factor::Sym(i)])
+    }
+
+    /// A commutative polynomial with its monomials read as products in
+    /// symbol-table order.
+    pub fn from_mpoly(p: &MPoly) -> Self {
+        let mut out = NcExpr::zero();
+        for (m, c) in p.terms() {
+            let fs: Vec<Factor> = m
+                .iter()
+                .enumerate()
+                .flat_map(|(v, &e)| std::iter::repeat_n(Factor::Sym(v), e as usize))
+                .collect();
+            out = out.plus_term(c.clone(), fs);
+        }
+        out
+    }
+
+    fn plus_term(mut self, c: Q, fs: Vec<Factor>) -> Self {
+        if c.is_zero() {
+            return self;
+        }
+        let fs = cancel_inverses(fs);
+        if let Some(k) = self.terms.iter().position(|(_, f)| *f == fs) {
+            let s = &self.terms[k].0 + &c;
+            if s.is_zero() {
+                self.terms.remove(k);
+            } else {
+                self.terms[k].0 = s;
+            }
+        } else {
+            self.terms.push((c, fs));
+        }
+        self
+    }
+
+    /// Whether this is zero as written (no terms).
+    pub fn is_zero(&self) -> bool {
+        self.terms.is_empty()
+    }
+
+    /// The value if this is a constant (no factors).
+    pub fn as_constant(&self) -> Option<Q> {
+        match self.terms.as_slice() {
+            [] => Some(Q::zero()),
+            [(c, fs)] if fs.is_empty() => Some(c.clone()),
+            _ => None,
+        }
+    }
+
+    /// The symbol if this is exactly one symbol times a nonzero constant.
+    pub fn as_scaled_symbol(&self) -> Option<(Q, usize)> {
+        match self.terms.as_slice() {
+            [(c, fs)] => match fs.as_slice() {
+                [Factor::Sym(i)] => Some((c.clone(), *i)),
+                _ => None,
+            },
+            _ => None,
+        }
+    }
+
+    /// Number of terms of the sum.
+    pub fn len(&self) -> usize {
+        self.terms.len()
+    }
+
+    /// Whether the sum has no terms (same as [`NcExpr::is_zero`]).
+    pub fn is_empty(&self) -> bool {
+        self.terms.is_empty()
+    }
+
+    /// `self + other`.
+    pub fn add(&self, other: &NcExpr) -> NcExpr {
+        let mut out = self.clone();
+        for (c, fs) in &other.terms {
+            out = out.plus_term(c.clone(), fs.clone());
+        }
+        out
+    }
+
+    /// `-self`.
+    pub fn neg(&self) -> NcExpr {
+        NcExpr {
+            terms: self.terms.iter().map(|(c, f)| (-c, f.clone())).collect(),
+        }
+    }
+
+    /// `self - other`.
+    pub fn sub(&self, other: &NcExpr) -> NcExpr {
+        self.add(&other.neg())
+    }
+
+    /// `self · other` (in this order).
+    pub fn mul(&self, other: &NcExpr) -> NcExpr {
+        let mut out = NcExpr::zero();
+        for (ca, fa) in &self.terms {
+            for (cb, fb) in &other.terms {
+                let mut fs = fa.clone();
+                fs.extend(fb.iter().cloned());
+                out = out.plus_term(ca * cb, fs);
+            }
+        }
+        out
+    }
+
+    /// The inverse, or `None` for zero. A single product `c·f1…fm` inverts
+    /// factor by factor in reverse order; a sum becomes one [`Factor::Inv`].
+    pub fn inv(&self) -> Option<NcExpr> {
+        match self.terms.as_slice() {
+            [] => None,
+            [(c, fs)] => {
+                let mut out = NcExpr::constant(c.recip());
+                for f in fs.iter().rev() {
+                    let fi = match f {
+                        Factor::Sym(_) => NcExpr::zero().plus_term(
+                            Q::one(),
+                            vec![Factor::Inv(Box::new(NcExpr {
+                                terms: vec![(Q::one(), vec![f.clone()])],
+                            }))],
+                        ),
+                        Factor::Inv(e) => (**e).clone(),
+                    };
+                    out = out.mul(&fi);
+                }
+                Some(out)
+            }
+            _ => {
+                Some(NcExpr::zero().plus_term(Q::one(), vec![Factor::Inv(Box::new(self.clone()))]))
+            }
+        }
+    }
+
+    /// Every inverse that occurs (outermost first, without repeats).
+    pub fn inverses(&self) -> Vec<NcExpr> {
+        let mut out: Vec<NcExpr> = Vec::new();
+        for (_, fs) in &self.terms {
+            for f in fs {
+                if let Factor::Inv(e) = f {
+                    if !out.contains(e) {
+                        out.push((**e).clone());
+                    }
+                    for x in e.inverses() {
+                        if !out.contains(&x) {
+                            out.push(x);
+                        }
+                    }
+                }
+            }
+        }
+        out
+    }
+
+    /// The image in the field Q(s_0..s_{nvars-1}) when every symbol commutes;
+    /// `None` if an inverse of something whose image is zero occurs.
+    pub fn commutative_image(&self, k: &RatFuncField) -> Option<RatFunc> {
+        let n = k.names.len();
+        let mut acc = k.zero();
+        for (c, fs) in &self.terms {
+            let mut t = RatFunc::from_poly(MPoly::constant(c.clone(), n));
+            for f in fs {
+                let v = match f {
+                    Factor::Sym(i) => RatFunc::from_poly(MPoly::var(*i, n)),
+                    Factor::Inv(e) => k.inv(&e.commutative_image(k)?)?,
+                };
+                t = k.mul(&t, &v);
+            }
+            acc = k.add(&acc, &t);
+        }
+        Some(acc)
+    }
+
+    /// Text form: products by juxtaposition, `k4^-1` for the inverse of a
+    /// symbol, `(…)^-1` otherwise: `k1 - k2 k4^-1 k3`.
+    pub fn to_string_with<S: AsRef<str>>(&self, names: &[S]) -> String {
+        self.render(names, false)
+    }
+
+    /// LaTeX form: `k_{1} - k_{2} k_{4}^{-1} k_{3}`.
+    pub fn to_latex_with<S: AsRef<str>>(&self, names: &[S]) -> String {
+        self.render(names, true)
+    }
+
+    fn render<S: AsRef<str>>(&self, names: &[S], latex: bool) -> String {
+        if self.terms.is_empty() {
+            return "0".into();
+        }
+        let mut out = String::new();
+        for (i, (c, fs)) in self.terms.iter().enumerate() {
+            out.push_str(match (i, c.is_negative()) {
+                (0, true) => "-",
+                (0, false) => "",
+                (_, true) => " - ",
+                (_, false) => " + ",
+            });
+            let a = c.abs();
+            let prod = render_factors(fs, names, latex);
+            let num = if latex { latex_q(&a) } else { fmt_q(&a) };
+            match (prod.is_empty(), a.is_one()) {
+                (true, _) => out.push_str(&num),
+                (false, true) => out.push_str(&prod),
+                (false, false) => {
+                    out.push_str(&num);
+                    out.push(' ');
+                    out.push_str(&prod);
+                }
+            }
+        }
+        out
+    }
+
+    /// The text form, parenthesised if it is a sum (for use as a factor).
+    pub fn grouped<S: AsRef<str>>(&self, names: &[S], latex: bool) -> String {
+        let s = self.render(names, latex);
+        if self.terms.len() > 1 {
+            if latex {
+                format!("\\left({s}\\right)")
+            } else {
+                format!("({s})")
+            }
+        } else {
+            s
+        }
+    }
+}
+
+/// Removes adjacent `s s^-1` and `s^-1 s` pairs of one symbol.
+fn cancel_inverses(fs: Vec<Factor>) -> Vec<Factor> {
+    let mut out: Vec<Factor> = Vec::with_capacity(fs.len());
+    for f in fs {
+        let cancels = match (out.last(), &f) {
+            (Some(Factor::Sym(a)), Factor::Inv(e)) | (Some(Factor::Inv(e)), Factor::Sym(a)) => e
+                .as_scaled_symbol()
+                .is_some_and(|(c, b)| b == *a && c.is_one()),
+            _ => false,
+        };
+        if cancels {
+            out.pop();
+        } else {
+            out.push(f);
+        }
+    }
+    out
+}
+
+fn render_factors<S: AsRef<str>>(fs: &[Factor], names: &[S], latex: bool) -> String {
+    let name = |i: usize| {
+        let n = names
+            .get(i)
+            .map(|s| s.as_ref().to_string())
+            .unwrap_or_else(|| format!("s{i}"));
+        if latex { latex_name(&n) } else { n }
+    };
+    let mut parts: Vec<String> = Vec::new();
+    let mut k = 0;
+    while k < fs.len() {
+        match &fs[k] {
+            Factor::Sym(i) => {
+                let mut run = 1;
+                while fs.get(k + run) == Some(&Factor::Sym(*i)) {
+                    run += 1;
+                }
+                parts.push(match (run, latex) {
+                    (1, _) => name(*i),
+                    (r, false) => format!("{}^{r}", name(*i)),
+                    (r, true) => format!("{}^{{{r}}}", name(*i)),
+                });
+                k += run;
+            }
+            Factor::Inv(e) => {
+                let inner = match e.as_scaled_symbol() {
+                    Some((c, i)) if c.is_one() => name(i),
+                    _ => {
+                        let s = e.render(names, latex);
+                        if latex {
+                            format!("\\left({s}\\right)")
+                        } else {
+                            format!("({s})")
+                        }
+                    }
+                };
+                parts.push(if latex {
+                    format!("{inner}^{{-1}}")
+                } else {
+                    format!("{inner}^-1")
+                });
+                k += 1;
+            }
+        }
+    }
+    parts.join(" ")
+}
+
+/// One pivot of the elimination: unknown `unknown` was solved from
+/// equation `equation` (both 0-based, in the original numbering) with this
+/// pivot entry, whose inverse the result uses.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Pivot {
+    /// The original equation.
+    pub equation: usize,
+    /// The eliminated unknown.
+    pub unknown: usize,
+    /// The pivot (an entry of the current Schur complement).
+    pub entry: NcExpr,
+}
+
+/// `lhs · x_unknown = Σ_j rhs[j] · g_j`, derived without commuting symbols.
+#[derive(Clone, Debug, PartialEq)]
+pub struct OrderedElimination {
+    /// The unknown (0-based).
+    pub unknown: usize,
+    /// The equation that is left over (0-based, original numbering).
+    pub equation: usize,
+    /// The operator applied to the unknown (a Schur complement).
+    pub lhs: NcExpr,
+    /// The operator applied to each right side `g_j` (zero if unused).
+    pub rhs: Vec<NcExpr>,
+    /// The pivots in the order they were used.
+    pub pivots: Vec<Pivot>,
+}
+
+/// Why an ordered elimination could not be carried out.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum OrderedError {
+    /// The matrix is not square.
+    #[error("the ordered elimination needs a square system ({rows}×{cols} given)")]
+    NotSquare {
+        /// Rows.
+        rows: usize,
+        /// Columns.
+        cols: usize,
+    },
+    /// The unknown index is out of range.
+    #[error("unknown number {0} does not exist")]
+    NoSuchUnknown(usize),
+    /// An unknown occurs in none of the remaining equations.
+    #[error("unknown number {unknown} drops out of the remaining equations: no pivot")]
+    NoPivot {
+        /// The unknown (0-based).
+        unknown: usize,
+    },
+    /// The remaining equation does not contain the unknown.
+    #[error("the unknown drops out of the last equation: its operator is zero")]
+    ZeroLhs,
+}
+
+/// Sort key of a candidate pivot: (class, off the diagonal, unknown, equation).
+type PivotKey = (u8, bool, usize, usize);
+
+/// Pivot preference: lower is better.
+fn pivot_class(e: &NcExpr, principal: Option<usize>) -> u8 {
+    if e.as_constant().is_some() {
+        0
+    } else if let Some((_, s)) = e.as_scaled_symbol() {
+        if Some(s) == principal { 1 } else { 2 }
+    } else if e.len() == 1 {
+        3
+    } else {
+        4
+    }
+}
+
+/// Eliminates every unknown but `unknown` by Schur complements, choosing
+/// as pivot a constant if possible, else the principal symbol, else a
+/// single symbol, else a single product, else any nonzero entry (ties:
+/// the diagonal, then the first unknown, then the first equation).
+///
+/// ```
+/// use lambdamat::algebra::{matrix::Matrix, mpoly::MPoly, polyring::PolyRing};
+/// use lambdamat::algebra::ordered::ordered_elimination;
+/// let names = ["k1", "k2", "k3", "k4"].map(String::from).to_vec();
+/// let a = Matrix::new(PolyRing::new(names.clone()), 2, 2,
+///     (0..4).map(|i| MPoly::var(i, 4)).collect());
+/// let o = ordered_elimination(&a, 0, Some(3)).unwrap();
+/// assert_eq!(o.to_string_with(&names, "p"), "(k1 - k2 k4^-1 k3) p = g1 - k2 k4^-1 g2");
+/// ```
+pub fn ordered_elimination(
+    a: &Matrix<PolyRing>,
+    unknown: usize,
+    principal: Option<usize>,
+) -> Result<OrderedElimination, OrderedError> {
+    let n = a.rows();
+    if a.cols() != n {
+        return Err(OrderedError::NotSquare {
+            rows: n,
+            cols: a.cols(),
+        });
+    }
+    if unknown >= n {
+        return Err(OrderedError::NoSuchUnknown(unknown));
+    }
+    // Current system: m[r][c] over live rows/cols, rhs[r][j] coefficient of g_j.
+    let mut m: Vec<Vec<NcExpr>> = (0..n)
+        .map(|i| (0..n).map(|j| NcExpr::from_mpoly(a.get(i, j))).collect())
+        .collect();
+    let mut rhs: Vec<Vec<NcExpr>> = (0..n)
+        .map(|i| {
+            (0..n)
+                .map(|j| {
+                    if i == j {
+                        NcExpr::constant(Q::one())
+                    } else {
+                        NcExpr::zero()
+                    }
+                })
+                .collect()
+        })
+        .collect();
+    let mut rows: Vec<usize> = (0..n).collect();
+    let mut cols: Vec<usize> = (0..n).filter(|&j| j != unknown).collect();
+    let mut pivots = Vec::new();
+    while !cols.is_empty() {
+        let mut best: Option<(PivotKey, usize, usize)> = None;
+        for &j in &cols {
+            for &r in &rows {
+                let e = &m[r][j];
+                if e.is_zero() {
+                    continue;
+                }
+                let key = (pivot_class(e, principal), r != j, j, r);
+                if best.as_ref().is_none_or(|(k, _, _)| key < *k) {
+                    best = Some((key, r, j));
+                }
+            }
+        }
+        let Some((_, r, j)) = best else {
+            return Err(OrderedError::NoPivot { unknown: cols[0] });
+        };
+        let piv = m[r][j].clone();
+        let Some(inv) = piv.inv() else {
+            return Err(OrderedError::NoPivot { unknown: j });
+        };
+        rows.retain(|&x| x != r);
+        cols.retain(|&x| x != j);
+        for &s in &rows {
+            if m[s][j].is_zero() {
+                continue;
+            }
+            let f = m[s][j].mul(&inv);
+            for &c in cols.iter().chain(std::iter::once(&unknown)) {
+                if !m[r][c].is_zero() {
+                    m[s][c] = m[s][c].sub(&f.mul(&m[r][c]));
+                }
+            }
+            let pivot_rhs = rhs[r].clone();
+            for (x, y) in rhs[s].iter_mut().zip(&pivot_rhs) {
+                if !y.is_zero() {
+                    *x = x.sub(&f.mul(y));
+                }
+            }
+            m[s][j] = NcExpr::zero();
+        }
+        pivots.push(Pivot {
+            equation: r,
+            unknown: j,
+            entry: piv,
+        });
+    }
+    let last = rows[0];
+    let lhs = m[last][unknown].clone();
+    if lhs.is_zero() {
+        return Err(OrderedError::ZeroLhs);
+    }
+    Ok(OrderedElimination {
+        unknown,
+        equation: last,
+        lhs,
+        rhs: rhs[last].clone(),
+        pivots,
+    })
+}
+
+impl OrderedElimination {
+    /// `(k1 - k2 k4^-1 k3) p = g1 - k2 k4^-1 g2` (`g_j` is the right side
+    /// of equation j, numbered from 1).
+    pub fn to_string_with<S: AsRef<str>>(&self, names: &[S], unknown: &str) -> String {
+        self.render(names, unknown, false)
+    }
+
+    /// LaTeX form of [`OrderedElimination::to_string_with`].
+    pub fn to_latex_with<S: AsRef<str>>(&self, names: &[S], unknown: &str) -> String {
+        self.render(names, unknown, true)
+    }
+
+    fn render<S: AsRef<str>>(&self, names: &[S], unknown: &str, latex: bool) -> String {
+        let lhs = match self.lhs.as_constant() {
+            Some(c) if c.is_one() => unknown.to_string(),
+            _ => format!("{} {unknown}", self.lhs.grouped(names, latex)),
+        };
+        let mut out = String::new();
+        for (j, r) in self.rhs.iter().enumerate() {
+            if r.is_zero() {
+                continue;
+            }
+            let g = if latex {
+                format!("g_{{{}}}", j + 1)
+            } else {
+                format!("g{}", j + 1)
+            };
+            let (neg, body) = if r.len() == 1 {
+                let neg = r.terms[0].0.is_negative();
+                let pos = if neg { r.neg() } else { r.clone() };
+                (neg, pos.render(names, latex))
+            } else {
+                (false, r.grouped(names, latex))
+            };
+            let term = if body == "1" {
+                g
+            } else {
+                format!("{body} {g}")
+            };
+            out.push_str(match (out.is_empty(), neg) {
+                (true, true) => "-",
+                (true, false) => "",
+                (false, true) => " - ",
+                (false, false) => " + ",
+            });
+            out.push_str(&term);
+        }
+        if out.is_empty() {
+            out.push('0');
+        }
+        format!("{lhs} = {out}")
+    }
+
+    /// The distinct inverses the result uses, as text (`k4^-1`).
+    pub fn required_inverses<S: AsRef<str>>(&self, names: &[S]) -> Vec<String> {
+        let mut all = self.lhs.inverses();
+        for r in &self.rhs {
+            for x in r.inverses() {
+                if !all.contains(&x) {
+                    all.push(x);
+                }
+            }
+        }
+        all.iter()
+            .map(|e| format!("{}^-1", e.grouped(names, false)))
+            .collect()
+    }
+
+    /// Checks the result against Cramer's rule in the commutative image:
+    /// `rhs_j / lhs = adj(A)_{i j} / det(A)` for every j. True when every
+    /// symbol commuting makes the ordered and the commutative eliminations
+    /// agree (they must).
+    pub fn agrees_with_cramer(&self, a: &Matrix<PolyRing>) -> bool {
+        let k = RatFuncField {
+            names: a.ring.names.clone(),
+            shown: a.ring.names.clone(),
+        };
+        let (Some(det), Some(adj)) = (a.det(), a.adjugate()) else {
+            return false;
+        };
+        if det.is_zero() {
+            return false;
+        }
+        let Some(l) = self.lhs.commutative_image(&k) else {
+            return false;
+        };
+        let Some(linv) = k.inv(&l) else {
+            return false;
+        };
+        let d = RatFunc::from_poly(det);
+        (0..a.cols()).all(|j| {
+            let Some(r) = self.rhs[j].commutative_image(&k) else {
+                return false;
+            };
+            let lhs = k.mul(&r, &linv);
+            let want = k.mul(
+                &RatFunc::from_poly(adj.get(self.unknown, j).clone()),
+                &k.inv(&d).unwrap_or_else(|| k.zero()),
+            );
+            lhs == want
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn generic(n: usize) -> (Vec<String>, Matrix<PolyRing>) {
+        let names: Vec<String> = (1..=n * n).map(|i| format!("a{i}")).collect();
+        let v = (0..n * n).map(|i| MPoly::var(i, n * n)).collect();
+        (names.clone(), Matrix::new(PolyRing::new(names), n, n, v))
+    }
+
+    #[test]
+    fn seed_ordered_elimination_for_p_and_q() {
+        let names: Vec<String> = ["k1", "k2", "k3", "k4"].map(String::from).to_vec();
+        let a = Matrix::new(
+            PolyRing::new(names.clone()),
+            2,
+            2,
+            (0..4).map(|i| MPoly::var(i, 4)).collect(),
+        );
+        let o = ordered_elimination(&a, 0, Some(3)).unwrap();
+        assert_eq!(
+            o.to_string_with(&names, "p"),
+            "(k1 - k2 k4^-1 k3) p = g1 - k2 k4^-1 g2"
+        );
+        assert_eq!(o.required_inverses(&names), vec!["k4^-1"]);
+        assert!(o.agrees_with_cramer(&a));
+        assert_eq!(
+            o.to_latex_with(&names, "p"),
+            "\\left(k_{1} - k_{2} k_{4}^{-1} k_{3}\\right) p = g_{1} - k_{2} k_{4}^{-1} g_{2}"
+        );
+        // For q the principal symbol k4 is not eliminable; k1 is the first
+        // single-symbol pivot on the diagonal.
+        let o = ordered_elimination(&a, 1, Some(3)).unwrap();
+        assert_eq!(
+            o.to_string_with(&names, "q"),
+            "(k4 - k3 k1^-1 k2) q = -k3 k1^-1 g1 + g2"
+        );
+        assert!(o.agrees_with_cramer(&a));
+    }
+
+    #[test]
+    fn generic_3x3_agrees_with_cramer() {
+        for n in [3] {
+            let (names, a) = generic(n);
+            for u in 0..n {
+                let o = ordered_elimination(&a, u, None).unwrap();
+                assert!(o.agrees_with_cramer(&a), "n = {n}, unknown {u}");
+                assert_eq!(o.pivots.len(), n - 1);
+                assert!(!o.required_inverses(&names).is_empty());
+            }
+        }
+    }
+
+    #[test]
+    fn constant_pivots_need_no_inverse() {
+        // [[k1, 1], [k2, k3]]: q from equation 1 with pivot 1.
+        let names: Vec<String> = ["k1", "k2", "k3"].map(String::from).to_vec();
+        let r = PolyRing::new(names.clone());
+        let v = |i| MPoly::var(i, 3);
+        let a = Matrix::new(r, 2, 2, vec![v(0), MPoly::one(3), v(1), v(2)]);
+        let o = ordered_elimination(&a, 0, None).unwrap();
+        assert_eq!(
+            o.to_string_with(&names, "p"),
+            "(k2 - k3 k1) p = -k3 g1 + g2"
+        );
+        assert!(o.required_inverses(&names).is_empty());
+        assert!(o.agrees_with_cramer(&a));
+    }
+
+    #[test]
+    fn a_zero_column_has_no_pivot() {
+        let names: Vec<String> = ["k1"].map(String::from).to_vec();
+        let r = PolyRing::new(names);
+        let a = Matrix::new(
+            r,
+            2,
+            2,
+            vec![
+                MPoly::var(0, 1),
+                MPoly::zero(1),
+                MPoly::one(1),
+                MPoly::zero(1),
+            ],
+        );
+        assert_eq!(
+            ordered_elimination(&a, 0, None),
+            Err(OrderedError::NoPivot { unknown: 1 })
+        );
+    }
+
+    #[test]
+    fn inverses_of_products_reverse_and_cancel() {
+        let e = NcExpr::sym(0).mul(&NcExpr::sym(1));
+        let inv = e.inv().unwrap();
+        assert_eq!(inv.to_string_with(&["a", "b"]), "b^-1 a^-1");
+        assert_eq!(e.mul(&inv).as_constant(), Some(Q::one()));
+        let s = NcExpr::sym(0).add(&NcExpr::sym(1));
+        assert_eq!(s.inv().unwrap().to_string_with(&["a", "b"]), "(a + b)^-1");
+        assert_eq!(NcExpr::zero().inv(), None);
+    }
+}

@@ -1,0 +1,301 @@
+//! The `reduce` command and the `solve for` part of `run`: asks
+//! [`crate::reduce`] for the reduction of a file's operator system for one
+//! unknown and prints it as text, LaTeX or one JSON object. Formatting only;
+//! the algebra and the expansion are done elsewhere.
+
+use super::error::CliError;
+use super::render::{checks, matrix};
+use super::smith::load;
+use super::{OutputArgs, ReduceArgs};
+use crate::reduce::expand::{sum_latex, sum_text};
+use crate::reduce::{Reduction, choose_unknown, reduce};
+use serde_json::{Value, json};
+use std::fmt::Write as _;
+use std::io::Write;
+
+/// `lambdamat reduce FILE [--for u] [--json] [--latex]`.
+pub fn reduce_command(a: &ReduceArgs, w: &mut dyn Write) -> Result<(), CliError> {
+    let p = load(&a.file)?;
+    let u = choose_unknown(&p, a.unknown.as_deref())?;
+    let r = reduce(&p, u)?;
+    print_reduction(&r, &a.out, w)
+}
+
+/// Prints a reduction in the requested form.
+pub fn print_reduction(r: &Reduction, out: &OutputArgs, w: &mut dyn Write) -> Result<(), CliError> {
+    if out.json {
+        let v = to_json(r);
+        writeln!(
+            w,
+            "{}",
+            serde_json::to_string_pretty(&v).map_err(|e| CliError::Invalid(e.to_string()))?
+        )?;
+    } else if out.latex {
+        write!(w, "{}", latex(r))?;
+    } else {
+        write!(w, "{}", text(r))?;
+    }
+    Ok(())
+}
+
+/// The JSON object of a reduction.
+pub fn to_json(r: &Reduction) -> Value {
+    let rhs: Vec<Value> = r
+        .rhs
+        .iter()
+        .map(|t| json!({"operator": t.operator, "equation": t.equation, "value": t.value}))
+        .collect();
+    let (ordered, ordered_inverses, ordered_pivots) = match &r.ordered {
+        Ok(o) => (
+            Value::String(o.text.clone()),
+            json!(o.inverses),
+            json!(o.pivots),
+        ),
+        Err(e) => (Value::Null, json!([]), json!([e])),
+    };
+    let expanded = match &r.expanded {
+        Ok(x) => json!({"lhs": sum_text(&x.lhs), "rhs": sum_text(&x.rhs)}),
+        Err(e) => json!({"not_expanded": e}),
+    };
+    json!({
+        "unknown": r.unknown,
+        "lambda_matrix": r.lambda_matrix,
+        "invariant_factors": r.invariant_factors,
+        "eliminant": {
+            "lhs": r.lhs,
+            "rhs": rhs,
+            "text": r.eliminant_text(),
+            "lhs_ordered": r.lhs_ordered,
+            "removed_factor": r.removed_factor,
+            "dropped": r.dropped.iter().map(|(c, u)| json!({"operator": c, "unknown": u})).collect::<Vec<_>>(),
+        },
+        "expanded": expanded,
+        "ordered": ordered,
+        "ordered_inverses": ordered_inverses,
+        "ordered_pivots": ordered_pivots,
+        "commuted_pairs": r.commuted_pairs.iter().map(|c| c.pair.clone()).collect::<Vec<_>>(),
+        "notes": r.notes,
+    })
+}
+
+fn pair_list(r: &Reduction) -> String {
+    r.commuted_pairs
+        .iter()
+        .map(|c| format!("({}, {})", c.pair[0], c.pair[1]))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// The text report.
+pub fn text(r: &Reduction) -> String {
+    let mut out = String::new();
+    let _ = writeln!(out, "Reduction for {}", r.unknown);
+    let _ = writeln!(
+        out,
+        "\nλ-matrix over {} (rows: equations; columns: {}):",
+        r.ring,
+        r.unknowns.join(", ")
+    );
+    out.push_str(&matrix("A", &r.lambda_matrix));
+    if r.invariant_factors.is_empty() {
+        let _ = writeln!(out, "invariant factors: not computed (too many minors)");
+    } else {
+        let _ = writeln!(
+            out,
+            "invariant factors over {} (determinantal divisors): {}",
+            r.ring,
+            r.invariant_factors.join(", ")
+        );
+        out.push_str(&checks(&r.smith_checks));
+    }
+
+    let _ = writeln!(
+        out,
+        "\nEliminant (commutative: the symbols are treated as commuting):"
+    );
+    let _ = writeln!(out, "  {}", r.eliminant_text());
+    let _ = writeln!(
+        out,
+        "  derived as {} (Ej: equation j); in the derivation's order the operator on {} is {}",
+        r.derivation_text(),
+        r.unknown,
+        r.lhs_ordered
+    );
+    match &r.removed_factor {
+        Some(h) => {
+            let _ = writeln!(
+                out,
+                "  det(A) = {}; removed the common factor {h} of the whole relation",
+                r.det
+            );
+        }
+        None => {
+            let _ = writeln!(
+                out,
+                "  det(A) = {}; the relation has no common factor",
+                r.det
+            );
+        }
+    }
+    for (c, u) in &r.dropped {
+        let _ = writeln!(
+            out,
+            "  dropped: ({c}) {u}, which is zero only if the operators commute"
+        );
+    }
+
+    let params: Vec<String> = r.params.iter().map(|(n, v)| format!("{n} = {v}")).collect();
+    let _ = writeln!(
+        out,
+        "\nExpanded (iterated integrals{}):",
+        if params.is_empty() {
+            String::new()
+        } else {
+            format!("; substituted {}", params.join(", "))
+        }
+    );
+    match &r.expanded {
+        Ok(x) => {
+            for (i, t) in x.lhs.iter().enumerate() {
+                let sign = match (i, t.coeff < num_traits::Zero::zero()) {
+                    (_, true) => "-",
+                    (0, false) => " ",
+                    (_, false) => "+",
+                };
+                let _ = writeln!(out, "    {sign} {}    [{}]", t.body_text(), t.source);
+            }
+            if x.rhs.is_empty() {
+                let _ = writeln!(out, "  = 0");
+            }
+            for (i, t) in x.rhs.iter().enumerate() {
+                let neg = t.coeff < num_traits::Zero::zero();
+                let lead = match (i, neg) {
+                    (0, true) => "  = -",
+                    (0, false) => "  =  ",
+                    (_, true) => "    -",
+                    (_, false) => "    +",
+                };
+                let _ = writeln!(out, "{lead} {}    [{}]", t.body_text(), t.source);
+            }
+        }
+        Err(e) => {
+            let _ = writeln!(out, "  not expanded: {e}");
+        }
+    }
+
+    let _ = writeln!(
+        out,
+        "\nOrdered elimination (no symbol commuted; exact for non-commuting operators):"
+    );
+    match &r.ordered {
+        Ok(o) => {
+            let gs: Vec<String> = o
+                .right_sides
+                .iter()
+                .map(|(g, v)| format!("{g} = {v}"))
+                .collect();
+            let _ = writeln!(out, "  {}    where {}", o.text, gs.join(", "));
+            let _ = writeln!(out, "  pivots: {}", o.pivots.join("; "));
+            if o.inverses.is_empty() {
+                let _ = writeln!(out, "  requires no inverse");
+            } else {
+                let _ = writeln!(out, "  inverses required: {}", o.inverses.join(", "));
+            }
+            let _ = writeln!(
+                out,
+                "  commuting every symbol turns it into Cramer's rule: {}",
+                if o.agrees_with_cramer { "yes" } else { "NO" }
+            );
+        }
+        Err(e) => {
+            let _ = writeln!(out, "  not available: {e}");
+        }
+    }
+
+    if r.commuted_pairs.is_empty() {
+        let _ = writeln!(
+            out,
+            "\nCommuted pairs: none (the eliminant holds for non-commuting operators)"
+        );
+    } else {
+        let _ = writeln!(
+            out,
+            "\nCommuted pairs (the eliminant is exact only if these commute): {}",
+            pair_list(r)
+        );
+        for c in &r.commuted_pairs {
+            let _ = writeln!(
+                out,
+                "  {} {} ≠ {} {} in general: needed to drop the terms in {}",
+                c.pair[0],
+                c.pair[1],
+                c.pair[1],
+                c.pair[0],
+                c.on.join(", ")
+            );
+        }
+    }
+    for n in &r.notes {
+        let _ = writeln!(out, "note: {n}");
+    }
+    out
+}
+
+/// The LaTeX report (formulas with `%` comments).
+pub fn latex(r: &Reduction) -> String {
+    let mut out = String::new();
+    let _ = writeln!(out, "% Reduction for {}", r.unknown);
+    let body: Vec<String> = r
+        .lambda_matrix_latex
+        .iter()
+        .map(|x| x.join(" & "))
+        .collect();
+    let _ = writeln!(
+        out,
+        "\\[ A = \\begin{{pmatrix}} {} \\end{{pmatrix}} \\]",
+        body.join(" \\\\ ")
+    );
+    if !r.invariant_factors_latex.is_empty() {
+        let _ = writeln!(out, "% invariant factors over {}", r.ring);
+        let _ = writeln!(
+            out,
+            "\\[ {} \\]",
+            r.invariant_factors_latex.join(",\\quad ")
+        );
+    }
+    let _ = writeln!(out, "% eliminant (commutative)");
+    let _ = writeln!(out, "\\[ {} \\]", r.eliminant_latex());
+    match &r.expanded {
+        Ok(x) => {
+            let _ = writeln!(out, "% expanded");
+            let _ = writeln!(
+                out,
+                "\\begin{{multline*}}\n{}\n\\\\ = {}\n\\end{{multline*}}",
+                sum_latex(&x.lhs),
+                sum_latex(&x.rhs)
+            );
+        }
+        Err(e) => {
+            let _ = writeln!(out, "% not expanded: {e}");
+        }
+    }
+    match &r.ordered {
+        Ok(o) => {
+            let _ = writeln!(out, "% ordered elimination (exact)");
+            let _ = writeln!(out, "\\[ {} \\]", o.latex);
+        }
+        Err(e) => {
+            let _ = writeln!(out, "% ordered elimination not available: {e}");
+        }
+    }
+    let _ = writeln!(
+        out,
+        "% commuted pairs: {}",
+        if r.commuted_pairs.is_empty() {
+            "none".to_string()
+        } else {
+            pair_list(r)
+        }
+    );
+    out
+}

@@ -1,0 +1,445 @@
+//! The reduction of an operator system to one equation for one unknown:
+//! it takes a lowered [`Program`], asks [`crate::algebra::eliminate`] for
+//! the commutative eliminant (with its Smith cross-check and commuted
+//! pairs) and [`crate::algebra::ordered`] for the ordered elimination, and
+//! expands the eliminant into iterated integrals from the operator table
+//! ([`expand`]). It returns printable strings and structure; it must not
+//! parse, print to a stream or evaluate anything numerically.
+//!
+//! * [`expand`]: operator words → iterated integrals (text, LaTeX).
+
+pub mod expand;
+
+use crate::algebra::eliminate::{EliminateError, eliminate};
+use crate::algebra::matrix::Matrix;
+use crate::algebra::mpoly::MPoly;
+use crate::algebra::ordered::ordered_elimination;
+use crate::algebra::polyring::PolyRing;
+use crate::algebra::rational::fmt_q;
+use crate::algebra::smith::certify::Check;
+use crate::system::{Expr, Program};
+use expand::{Argument, ExpandError, ExpandedTerm, expand_word};
+
+/// Why a reduction could not be made.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum ReduceError {
+    /// The file has no operator system.
+    #[error("the file has no equations, so there is nothing to reduce")]
+    NoSystem,
+    /// The unknown named on the command line does not exist.
+    #[error("no unknown named `{name}` (declared: {declared})")]
+    NoSuchUnknown {
+        /// The name asked for.
+        name: String,
+        /// The declared unknowns.
+        declared: String,
+    },
+    /// The λ-matrix has no eliminant (singular or not square).
+    #[error("no eliminant for {unknown}: {source}")]
+    Eliminate {
+        /// The unknown.
+        unknown: String,
+        /// The algebra's reason.
+        source: EliminateError,
+    },
+}
+
+/// One term `operator[value]` of the eliminant's right side.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RhsTerm {
+    /// The operator polynomial (commutative form), e.g. `-k2`.
+    pub operator: String,
+    /// The equation it multiplies (numbered from 1).
+    pub equation: usize,
+    /// The equation's right side, e.g. `0`.
+    pub value: String,
+    /// LaTeX of the operator.
+    pub operator_latex: String,
+}
+
+/// A symbol pair the eliminant commuted, with names.
+#[derive(Clone, Debug, PartialEq)]
+pub struct NamedPair {
+    /// The two symbols (table order).
+    pub pair: [String; 2],
+    /// The unknowns whose dropped coefficient needs the pair.
+    pub on: Vec<String>,
+}
+
+/// The expanded form of the eliminant.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Expanded {
+    /// Terms of the left side (operator on the unknown).
+    pub lhs: Vec<ExpandedTerm>,
+    /// Terms of the right side.
+    pub rhs: Vec<ExpandedTerm>,
+}
+
+/// The ordered elimination, printable.
+#[derive(Clone, Debug, PartialEq)]
+pub struct OrderedForm {
+    /// E.g. `(k1 - k2 k4^-1 k3) p = g1 - k2 k4^-1 g2`.
+    pub text: String,
+    /// LaTeX form.
+    pub latex: String,
+    /// `g1 = 1, g2 = 0`.
+    pub right_sides: Vec<(String, String)>,
+    /// The inverses the result needs (`k4^-1`).
+    pub inverses: Vec<String>,
+    /// Pivot steps, e.g. `q from equation 2 (pivot k4)`.
+    pub pivots: Vec<String>,
+    /// Whether the commutative image agrees with Cramer's rule.
+    pub agrees_with_cramer: bool,
+}
+
+/// Everything `lambdamat reduce` shows.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Reduction {
+    /// The unknown solved for.
+    pub unknown: String,
+    /// The unknowns (columns of the λ-matrix).
+    pub unknowns: Vec<String>,
+    /// The λ-matrix, rows of entries.
+    pub lambda_matrix: Vec<Vec<String>>,
+    /// The λ-matrix in LaTeX.
+    pub lambda_matrix_latex: Vec<Vec<String>>,
+    /// The ring, e.g. `Q[k1, k2, k3, k4]`.
+    pub ring: String,
+    /// Invariant factors over Q[all] (empty if not computed).
+    pub invariant_factors: Vec<String>,
+    /// LaTeX of the invariant factors.
+    pub invariant_factors_latex: Vec<String>,
+    /// Cross-checks of the eliminant against the Smith data.
+    pub smith_checks: Vec<Check>,
+    /// `det(A)`.
+    pub det: String,
+    /// The removed common factor (`None` if it is one).
+    pub removed_factor: Option<String>,
+    /// Left side operator (commutative form), e.g. `k1*k4 - k2*k3`.
+    pub lhs: String,
+    /// LaTeX of the left side operator.
+    pub lhs_latex: String,
+    /// The left side operator in the derivation's order (`k4 k1 - k2 k3`).
+    pub lhs_ordered: String,
+    /// Right side terms (nonzero operators only).
+    pub rhs: Vec<RhsTerm>,
+    /// Dropped terms: `(ordered coefficient, unknown)`.
+    pub dropped: Vec<(String, String)>,
+    /// The expanded form, or why there is none.
+    pub expanded: Result<Expanded, String>,
+    /// The ordered elimination, or why there is none.
+    pub ordered: Result<OrderedForm, String>,
+    /// The commuted pairs.
+    pub commuted_pairs: Vec<NamedPair>,
+    /// Parameters substituted in the kernels.
+    pub params: Vec<(String, String)>,
+    /// Caveats, e.g. products of distinct operators inside the λ-matrix,
+    /// which the lowering stores commutatively (read here in table order).
+    pub notes: Vec<String>,
+}
+
+/// The unknown to reduce for: `--for NAME`, else the file's first
+/// `solve for`, else the first unknown.
+pub fn choose_unknown(p: &Program, name: Option<&str>) -> Result<usize, ReduceError> {
+    if p.equations.is_empty() || p.unknowns.is_empty() {
+        return Err(ReduceError::NoSystem);
+    }
+    match name {
+        Some(n) => {
+            p.unknowns
+                .iter()
+                .position(|u| u == n)
+                .ok_or_else(|| ReduceError::NoSuchUnknown {
+                    name: n.to_string(),
+                    declared: p.unknowns.join(", "),
+                })
+        }
+        None => Ok(p
+            .directives
+            .iter()
+            .find_map(|d| match d {
+                crate::system::Directive::Solve { unknown } => Some(*unknown),
+                _ => None,
+            })
+            .unwrap_or(0)),
+    }
+}
+
+/// The λ-matrix of the program's operator system over Q[symbols].
+pub fn lambda_matrix(p: &Program) -> Matrix<PolyRing> {
+    let m = p.lambda_matrix();
+    Matrix::new(PolyRing::new(p.symbols.clone()), m.rows, m.cols, m.entries)
+}
+
+/// Reduces the program's system for unknown `unknown` (0-based).
+pub fn reduce(p: &Program, unknown: usize) -> Result<Reduction, ReduceError> {
+    if p.equations.is_empty() {
+        return Err(ReduceError::NoSystem);
+    }
+    let a = lambda_matrix(p);
+    let names = &p.symbols;
+    let uname = p
+        .unknowns
+        .get(unknown)
+        .cloned()
+        .ok_or(ReduceError::NoSystem)?;
+    let e = eliminate(&a, unknown).map_err(|source| ReduceError::Eliminate {
+        unknown: uname.clone(),
+        source,
+    })?;
+    let fmt = |m: &MPoly| m.to_string_with(names);
+    let rhs: Vec<RhsTerm> = e
+        .multipliers
+        .iter()
+        .enumerate()
+        .filter(|(_, c)| !c.is_zero())
+        .map(|(j, c)| RhsTerm {
+            operator: fmt(c),
+            equation: j + 1,
+            value: p.equations[j].rhs.to_string(),
+            operator_latex: c.to_latex_with(names),
+        })
+        .collect();
+    let (invariant_factors, invariant_factors_latex, smith_checks) = match &e.smith {
+        Some(s) => (
+            s.invariant_factors.iter().map(fmt).collect(),
+            s.invariant_factors
+                .iter()
+                .map(|f| f.to_latex_with(names))
+                .collect(),
+            s.checks.clone(),
+        ),
+        None => (Vec::new(), Vec::new(), Vec::new()),
+    };
+    let expanded = expand_all(p, &e, unknown).map_err(|x| x.to_string());
+    let ordered = ordered_elimination(&a, unknown, p.principal)
+        .map(|o| OrderedForm {
+            text: o.to_string_with(names, &uname),
+            latex: o.to_latex_with(names, &uname),
+            right_sides: p
+                .equations
+                .iter()
+                .enumerate()
+                .map(|(j, eq)| (format!("g{}", j + 1), eq.rhs.to_string()))
+                .collect(),
+            inverses: o.required_inverses(names),
+            pivots: o
+                .pivots
+                .iter()
+                .map(|pv| {
+                    format!(
+                        "{} from equation {} (pivot {})",
+                        p.unknowns[pv.unknown],
+                        pv.equation + 1,
+                        pv.entry.to_string_with(names)
+                    )
+                })
+                .collect(),
+            agrees_with_cramer: o.agrees_with_cramer(&a),
+        })
+        .map_err(|x| x.to_string());
+    Ok(Reduction {
+        unknown: uname,
+        unknowns: p.unknowns.clone(),
+        lambda_matrix: a.format_rows(),
+        lambda_matrix_latex: a.latex_rows(),
+        ring: format!("Q[{}]", names.join(", ")),
+        invariant_factors,
+        invariant_factors_latex,
+        smith_checks,
+        det: fmt(&e.det),
+        removed_factor: (!e.removed_factor.is_nonzero_constant()).then(|| fmt(&e.removed_factor)),
+        lhs: fmt(&e.lhs),
+        lhs_latex: e.lhs.to_latex_with(names),
+        lhs_ordered: e.lhs_ordered.to_string_with(names),
+        rhs,
+        dropped: e
+            .dropped
+            .iter()
+            .map(|(k, c)| (c.to_string_with(names), p.unknowns[*k].clone()))
+            .collect(),
+        expanded,
+        ordered,
+        commuted_pairs: e
+            .commuted_pairs
+            .iter()
+            .map(|c| NamedPair {
+                pair: [names[c.a].clone(), names[c.b].clone()],
+                on: c
+                    .on_unknowns
+                    .iter()
+                    .map(|k| p.unknowns[*k].clone())
+                    .collect(),
+            })
+            .collect(),
+        params: p
+            .params
+            .iter()
+            .map(|q| (q.name.clone(), fmt_q(&q.value)))
+            .collect(),
+        notes: product_notes(&a, p),
+    })
+}
+
+/// A note for every λ-matrix entry with a product of distinct symbols:
+/// the lowering keeps such products as commutative monomials, so their
+/// source order is not known here and they are read in table order.
+fn product_notes(a: &Matrix<PolyRing>, p: &Program) -> Vec<String> {
+    let mut out = Vec::new();
+    for i in 0..a.rows() {
+        for j in 0..a.cols() {
+            let e = a.get(i, j);
+            let mixed = e
+                .terms()
+                .iter()
+                .any(|(m, _)| m.iter().filter(|&&k| k > 0).count() > 1);
+            if mixed {
+                out.push(format!(
+                    "equation {} applies the product {} to {}; the λ-matrix stores it commutatively, so it is read in declaration order ({}) and its own order is one more commutation",
+                    i + 1,
+                    e.to_string_with(&p.symbols),
+                    p.unknowns[j],
+                    crate::algebra::ncpoly::NcPoly::from_mpoly(e).to_string_with(&p.symbols)
+                ));
+            }
+        }
+    }
+    out
+}
+
+/// Expands the derivation-ordered left side and each `c_j[g_j]`.
+fn expand_all(
+    p: &Program,
+    e: &crate::algebra::eliminate::Eliminant,
+    unknown: usize,
+) -> Result<Expanded, ExpandError> {
+    let u = Argument::Unknown(p.unknowns[unknown].clone());
+    let mut lhs = Vec::new();
+    for (w, c) in e.lhs_ordered.terms() {
+        lhs.extend(expand_word(p, w, c, &u)?);
+        if lhs.len() > expand::MAX_TERMS {
+            return Err(ExpandError::TooManyTerms);
+        }
+    }
+    let mut rhs = Vec::new();
+    for (j, c) in e.multipliers.iter().enumerate() {
+        let g = &p.equations[j].rhs;
+        if matches!(g, Expr::Const(z) if num_traits::Zero::is_zero(z)) {
+            continue;
+        }
+        let arg = Argument::Value(Some(g.clone()));
+        for (w, k) in crate::algebra::ncpoly::NcPoly::from_mpoly(c).terms() {
+            let tag = format!(
+                "{} g{}",
+                crate::algebra::ncpoly::word_text(w, &p.symbols),
+                j + 1
+            );
+            rhs.extend(expand_word(p, w, k, &arg)?.into_iter().map(|mut t| {
+                t.source = tag.trim_start().to_string();
+                t
+            }));
+            if rhs.len() > expand::MAX_TERMS {
+                return Err(ExpandError::TooManyTerms);
+            }
+        }
+    }
+    Ok(Expanded { lhs, rhs })
+}
+
+impl Reduction {
+    /// `(k1*k4 - k2*k3) p = k4[1] - k2[0]`.
+    pub fn eliminant_text(&self) -> String {
+        let lhs = apply(&self.lhs, &self.unknown, false, " ");
+        let mut rhs = String::new();
+        for t in &self.rhs {
+            let (neg, body) = strip_sign(&t.operator);
+            let term = if body == "1" {
+                format!("[{}]", t.value)
+            } else if is_single_term(body) {
+                format!("{body}[{}]", t.value)
+            } else {
+                format!("({body})[{}]", t.value)
+            };
+            push_signed(&mut rhs, neg && is_single_term(body), &term);
+        }
+        if rhs.is_empty() {
+            rhs.push('0');
+        }
+        format!("{lhs} = {rhs}")
+    }
+
+    /// How the eliminant was derived from the equations E1, E2, …:
+    /// `k4·E1 - k2·E2`.
+    pub fn derivation_text(&self) -> String {
+        let mut out = String::new();
+        for t in &self.rhs {
+            let (neg, body) = strip_sign(&t.operator);
+            let term = if body == "1" {
+                format!("E{}", t.equation)
+            } else if is_single_term(body) {
+                format!("{body}·E{}", t.equation)
+            } else {
+                format!("({body})·E{}", t.equation)
+            };
+            push_signed(&mut out, neg && is_single_term(body), &term);
+        }
+        out
+    }
+
+    /// LaTeX of [`Reduction::eliminant_text`].
+    pub fn eliminant_latex(&self) -> String {
+        let lhs = apply(&self.lhs_latex, &self.unknown, true, " ");
+        let mut rhs = String::new();
+        for t in &self.rhs {
+            let (neg, body) = strip_sign(&t.operator_latex);
+            let value = t.value.clone();
+            let term = if body == "1" {
+                format!("[{value}]")
+            } else if is_single_term(body) {
+                format!("{body}[{value}]")
+            } else {
+                format!("\\left({body}\\right)[{value}]")
+            };
+            push_signed(&mut rhs, neg && is_single_term(body), &term);
+        }
+        if rhs.is_empty() {
+            rhs.push('0');
+        }
+        format!("{lhs} = {rhs}")
+    }
+}
+
+fn strip_sign(s: &str) -> (bool, &str) {
+    match s.strip_prefix('-') {
+        Some(r) if is_single_term(r) => (true, r),
+        _ => (false, s),
+    }
+}
+
+/// Whether a printed polynomial is a single term (no top-level `+`/`-`).
+fn is_single_term(s: &str) -> bool {
+    !s.contains(" + ") && !s.contains(" - ")
+}
+
+fn push_signed(out: &mut String, neg: bool, term: &str) {
+    out.push_str(match (out.is_empty(), neg) {
+        (true, true) => "-",
+        (true, false) => "",
+        (false, true) => " - ",
+        (false, false) => " + ",
+    });
+    out.push_str(term);
+}
+
+/// `op u`, parenthesising a sum: `(k1*k4 - k2*k3) p`, `k1 p`, `p`.
+fn apply(op: &str, unknown: &str, latex: bool, sep: &str) -> String {
+    if op == "1" {
+        unknown.to_string()
+    } else if is_single_term(op) {
+        format!("{op}{sep}{unknown}")
+    } else if latex {
+        format!("\\left({op}\\right){sep}{unknown}")
+    } else {
+        format!("({op}){sep}{unknown}")
+    }
+}
