@@ -178,15 +178,19 @@ fn bad_unknown_and_files_without_a_system() {
 }
 
 #[test]
-fn run_performs_solve_for_by_printing_the_reduction() {
+fn run_performs_solve_for_by_printing_the_reduction_then_solving() {
     let out = stdout(&["run", "examples/hertz_stick.lmx"]);
     assert!(out.contains(GOLDEN_TEXT.trim_end()));
-    assert!(out.contains("not wired into `run` yet"));
+    assert!(
+        out.contains("method: ordered"),
+        "the numerical solve follows the reduction"
+    );
     assert!(!out.contains("not part of this build"));
     let v = json(&["run", "examples/hertz_stick.lmx"]);
     let r = &v["results"][0];
     assert_eq!(r["kind"], "reduce");
     assert_eq!(r["result"]["commuted_pairs"], json!([["k2", "k4"]]));
+    assert_eq!(v["results"][1]["kind"], "solve");
 }
 
 #[test]

@@ -350,7 +350,7 @@ impl fmt::Display for Renamed<'_> {
 }
 
 #[cfg(test)]
-mod tests {
+mod rename_tests {
     use super::*;
 
     fn c(n: i64, d: i64) -> Box<Expr> {
