@@ -233,51 +233,42 @@ pub fn expand_word(
         .collect())
 }
 
+/// The notation a term is written in: the few primitives in which the
+/// text and LaTeX forms differ.
+struct Notation {
+    integral: fn(&Bound, &Bound) -> String,
+    group: fn(&Expr, &str, &str) -> String,
+    differential: fn(&str) -> String,
+    coeff: fn(&Q) -> String,
+}
+
+const TEXT: Notation = Notation {
+    integral: |lo, hi| format!("∫_{}^{}", bound_text(lo), bound_text(hi)),
+    group: group_text,
+    differential: |v| format!(" d{v}"),
+    coeff: fmt_q,
+};
+
+const LATEX: Notation = Notation {
+    integral: |lo, hi| format!("\\int_{{{}}}^{{{}}}", bound_latex(lo), bound_latex(hi)),
+    group: group_latex,
+    differential: |v| format!("\\,d{v}"),
+    coeff: latex_q,
+};
+
 impl ExpandedTerm {
     /// The term without its sign, e.g.
     /// `1/9 ∫_0^1 ∫_0^t (s/sqrt(t^2 - s^2)) p(s) ds dt`.
     pub fn body_text(&self) -> String {
-        let mut parts: Vec<String> = Vec::new();
-        let a = self.coeff.abs();
-        let mut diffs = Vec::new();
-        for l in &self.layers {
-            match l {
-                Layer::Integral {
-                    lower,
-                    upper,
-                    kernel,
-                    outer,
-                    inner,
-                } => {
-                    parts.push(format!("∫_{}^{}", bound_text(lower), bound_text(upper)));
-                    if let Some(k) = kernel {
-                        parts.push(group_text(k, &var_name(*outer), &var_name(*inner)));
-                    }
-                    diffs.push(format!("d{}", var_name(*inner)));
-                }
-                Layer::Multiply { factor, var } => {
-                    parts.push(group_text(factor, &var_name(*var), "?"));
-                }
-            }
-        }
-        let v = var_name(self.depth);
-        match &self.argument {
-            Argument::Unknown(u) => parts.push(format!("{u}({v})")),
-            Argument::Value(Some(e)) => parts.push(group_text(e, &v, "?")),
-            Argument::Value(None) => {}
-        }
-        diffs.reverse();
-        parts.extend(diffs);
-        let body = parts.join(" ");
-        match (body.is_empty(), a.is_one()) {
-            (true, _) => fmt_q(&a),
-            (false, true) => body,
-            (false, false) => format!("{} {body}", fmt_q(&a)),
-        }
+        self.body(&TEXT)
     }
 
     /// The term without its sign in LaTeX.
     pub fn body_latex(&self) -> String {
+        self.body(&LATEX)
+    }
+
+    fn body(&self, n: &Notation) -> String {
         let mut parts: Vec<String> = Vec::new();
         let a = self.coeff.abs();
         let mut diffs = Vec::new();
@@ -290,34 +281,30 @@ impl ExpandedTerm {
                     outer,
                     inner,
                 } => {
-                    parts.push(format!(
-                        "\\int_{{{}}}^{{{}}}",
-                        bound_latex(lower),
-                        bound_latex(upper)
-                    ));
+                    parts.push((n.integral)(lower, upper));
                     if let Some(k) = kernel {
-                        parts.push(group_latex(k, &var_name(*outer), &var_name(*inner)));
+                        parts.push((n.group)(k, &var_name(*outer), &var_name(*inner)));
                     }
-                    diffs.push(format!("\\,d{}", var_name(*inner)));
+                    diffs.push((n.differential)(&var_name(*inner)));
                 }
                 Layer::Multiply { factor, var } => {
-                    parts.push(group_latex(factor, &var_name(*var), "?"));
+                    parts.push((n.group)(factor, &var_name(*var), "?"));
                 }
             }
         }
         let v = var_name(self.depth);
         match &self.argument {
             Argument::Unknown(u) => parts.push(format!("{u}({v})")),
-            Argument::Value(Some(e)) => parts.push(group_latex(e, &v, "?")),
+            Argument::Value(Some(e)) => parts.push((n.group)(e, &v, "?")),
             Argument::Value(None) => {}
         }
         diffs.reverse();
         let mut body = parts.join(" ");
         body.push_str(&diffs.concat());
         match (body.is_empty(), a.is_one()) {
-            (true, _) => latex_q(&a),
+            (true, _) => (n.coeff)(&a),
             (false, true) => body,
-            (false, false) => format!("{} {body}", latex_q(&a)),
+            (false, false) => format!("{} {body}", (n.coeff)(&a)),
         }
     }
 }
