@@ -2,27 +2,15 @@
 //! the frictionless limit, Spence's published pair, CSV/SVG files, the
 //! seed-table reproduction, a small sweep, and bad input.
 
-use assert_cmd::Command;
+mod common;
+
+use common::cli::{json, lambdamat};
 use predicates::prelude::*;
 use serde_json::Value;
 
-fn lambdamat() -> Command {
-    Command::cargo_bin("lambdamat").expect("binary builds")
-}
-
+/// The JSON of `lambdamat hertz ARGS --json`.
 fn solve(args: &[&str]) -> Value {
-    let out = lambdamat()
-        .arg("hertz")
-        .args(args)
-        .arg("--json")
-        .output()
-        .expect("runs");
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).expect("JSON")
+    json(&[&["hertz"], args].concat())
 }
 
 fn num(v: &Value, k: &str) -> f64 {

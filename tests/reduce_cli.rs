@@ -3,30 +3,14 @@
 //! a generic 3×3 system checked against `Matrix::det`/`adjugate` computed
 //! independently here, a singular system (exit code 2) and bad arguments.
 
-use assert_cmd::Command;
+mod common;
+
+use common::cli::{json, lambdamat, stdout};
 use lambdamat::algebra::matrix::Matrix;
 use lambdamat::algebra::mpoly::MPoly;
 use lambdamat::algebra::polyring::PolyRing;
 use predicates::prelude::*;
 use serde_json::{Value, json};
-
-fn lambdamat() -> Command {
-    Command::cargo_bin("lambdamat").expect("binary builds")
-}
-
-fn stdout(args: &[&str]) -> String {
-    let out = lambdamat().args(args).output().expect("runs");
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8(out.stdout).expect("utf-8")
-}
-
-fn json(args: &[&str]) -> Value {
-    serde_json::from_str(&stdout(&[args, &["--json"]].concat())).expect("valid JSON")
-}
 
 const GOLDEN_TEXT: &str = include_str!("data/reduce_hertz_stick.txt");
 

@@ -2,33 +2,11 @@
 //! paper's λ-matrix (golden values from the issue), shapes, JSON output and
 //! bad input (exit code 2 with line:column).
 
-use assert_cmd::Command;
+mod common;
+
+use common::cli::{json, lambdamat, lmx_file as file};
 use predicates::prelude::*;
 use serde_json::Value;
-use std::io::Write;
-
-fn lambdamat() -> Command {
-    Command::cargo_bin("lambdamat").expect("binary builds")
-}
-
-fn file(text: &str) -> tempfile::NamedTempFile {
-    let mut f = tempfile::Builder::new()
-        .suffix(".lmx")
-        .tempfile()
-        .expect("temp file");
-    f.write_all(text.as_bytes()).expect("write");
-    f
-}
-
-fn json(args: &[&str]) -> Value {
-    let out = lambdamat().args(args).arg("--json").output().expect("runs");
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).expect("valid JSON")
-}
 
 fn strings(v: &Value) -> Vec<String> {
     v.as_array()

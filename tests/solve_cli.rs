@@ -4,37 +4,15 @@
 //! convergence sequence through the language path, CSV/SVG output and the
 //! refusal of singular systems (exit 3) and unsupported kernels (exit 2).
 
-use assert_cmd::Command;
+mod common;
+
+use common::cli::{json, lambdamat, lmx_file as file};
 use serde_json::Value;
 use std::f64::consts::{FRAC_PI_4, PI};
-use std::io::Write;
 
-fn lambdamat() -> Command {
-    Command::cargo_bin("lambdamat").expect("binary builds")
-}
-
-fn file(text: &str) -> tempfile::NamedTempFile {
-    let mut f = tempfile::Builder::new()
-        .suffix(".lmx")
-        .tempfile()
-        .expect("temp file");
-    f.write_all(text.as_bytes()).expect("write");
-    f
-}
-
+/// The JSON of `lambdamat solve ARGS --json`.
 fn solve_json(args: &[&str]) -> Value {
-    let out = lambdamat()
-        .arg("solve")
-        .args(args)
-        .arg("--json")
-        .output()
-        .expect("runs");
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).expect("valid JSON")
+    json(&[&["solve"], args].concat())
 }
 
 fn floats(v: &Value) -> Vec<f64> {

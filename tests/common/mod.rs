@@ -1,5 +1,8 @@
-//! Helpers shared by the language test files (`mod common;` in each).
+//! Helpers shared by the test files (`mod common;` in each): language
+//! helpers here, CLI helpers in [`cli`].
 #![allow(dead_code)]
+
+pub mod cli;
 
 use lambdamat::lang::{ErrorKind, LangErrors, Program, parse_program};
 
