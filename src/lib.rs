@@ -18,9 +18,12 @@
 //! * [`reduce`]: one equation for one unknown of an operator system (the
 //!   commutative eliminant, its expansion into iterated integrals, the
 //!   ordered elimination), built from [`algebra`] and [`system`];
+//! * [`codegen`]: a language system → a standalone Rust solver module
+//!   (kernels as Rust functions, solved through [`plan`] and [`numeric`]);
 //! * [`cli`]: the `lambdamat` command line and its text/LaTeX/JSON reports.
 pub mod algebra;
 pub mod cli;
+pub mod codegen;
 pub mod hertz;
 pub mod lang;
 pub mod numeric;

@@ -10,8 +10,10 @@
 //! * [`smith`]: the `smith` command and the Smith part of `run`;
 //! * [`reduce`]: the `reduce` command and the `solve for` part of `run`;
 //! * [`run`]: the `run` command (everything a file asks for);
-//! * [`solve`]: the `solve` command (numerical solution of the file's system).
+//! * [`solve`]: the `solve` command (numerical solution of the file's system);
+//! * [`codegen`]: the `codegen` command (a Rust solver for the file's system).
 
+pub mod codegen;
 pub mod error;
 pub mod hertz;
 pub mod plot;
@@ -69,6 +71,14 @@ enum Command {
     /// outputs, an error estimate and the commutator defects of the pairs
     /// an elimination commuted.
     Solve(SolveArgs),
+    /// Write a standalone Rust solver for the file's operator system.
+    ///
+    /// Kernels, multipliers, right sides and output weights become Rust
+    /// functions; the module's `system()` collects them and its `main()`
+    /// solves through lambdamat's numeric layer, printing what `lambdamat
+    /// solve` prints (same flags). Use it as an example or binary target of
+    /// a crate that depends on lambdamat, or include it as a module.
+    Codegen(CodegenArgs),
 }
 
 /// Arguments of `lambdamat solve`.
@@ -76,6 +86,14 @@ enum Command {
 pub struct SolveArgs {
     /// A lambdamat source file (.lmx).
     pub file: PathBuf,
+    #[command(flatten)]
+    pub flags: SolveFlags,
+}
+
+/// How to solve and what to print: shared by `lambdamat solve` and the
+/// solvers `lambdamat codegen` writes.
+#[derive(Args, Debug, Clone)]
+pub struct SolveFlags {
     /// coupled (block system), ordered (exact elimination) or commutative (the seed's single equation, a model).
     #[arg(long, default_value = "ordered", value_parser = ["coupled", "ordered", "commutative"])]
     pub method: String,
@@ -94,6 +112,19 @@ pub struct SolveArgs {
     /// Plot the unknowns as SVG.
     #[arg(long, value_name = "FILE.svg")]
     pub plot: Option<PathBuf>,
+}
+
+/// Arguments of `lambdamat codegen`.
+#[derive(Args, Debug)]
+pub struct CodegenArgs {
+    /// A lambdamat source file (.lmx) with an operator system.
+    pub file: PathBuf,
+    /// The unknown the eliminations solve for (default: the file's `solve for`, else the first unknown).
+    #[arg(long = "for", value_name = "UNKNOWN")]
+    pub unknown: Option<String>,
+    /// Write the Rust module here (default: standard output).
+    #[arg(short, long, value_name = "FILE.rs")]
+    pub output: Option<PathBuf>,
 }
 
 /// Output options shared by the commands.
@@ -168,6 +199,7 @@ pub fn main() -> i32 {
         Command::Smith(a) => smith::smith_command(&a, &mut stdout),
         Command::Reduce(a) => reduce::reduce_command(&a, &mut stdout),
         Command::Solve(a) => solve::solve_command(&a, &mut stdout),
+        Command::Codegen(a) => codegen::codegen_command(&a, &mut stdout),
         Command::Hertz(a) => hertz::hertz_command(&a, &mut stdout),
     };
     let _ = stdout.flush();

@@ -1,36 +1,48 @@
 //! The `solve` command: parses the file, asks [`crate::plan`] to solve its
 //! system and prints the answer as text or one JSON object, optionally
-//! with a CSV table and an SVG plot (plotters) of the unknowns. It does no
-//! numerics itself.
+//! with a CSV table and an SVG plot (plotters) of the unknowns. The same
+//! report is the `main` of solvers written by `lambdamat codegen`
+//! ([`solver_main`]). It does no numerics itself.
 use std::io::Write;
 use std::path::Path;
 
 use plotters::prelude::*;
 use serde_json::{Map, Value, json};
 
-use super::SolveArgs;
 use super::error::CliError;
 use super::smith::load;
-use crate::plan::{Method, SolveOptions, SolveReport, solve_program};
+use super::{SolveArgs, SolveFlags};
+use crate::plan::{CompiledSystem, Method, PlanError, SolveOptions, SolveReport, solve_system};
 
 /// `lambdamat solve FILE …`.
 pub fn solve_command(a: &SolveArgs, w: &mut dyn Write) -> Result<(), CliError> {
     let prog = load(&a.file)?;
-    let method: Method = a.method.parse().map_err(CliError::Invalid)?;
+    let sys = CompiledSystem::from_program(&prog, None)?;
+    solve_and_report(&sys, &a.flags, w)
+}
+
+/// Solves `sys` as `flags` ask and prints the report (text or JSON, CSV,
+/// plot, warnings on standard error).
+pub fn solve_and_report(
+    sys: &CompiledSystem,
+    flags: &SolveFlags,
+    w: &mut dyn Write,
+) -> Result<(), CliError> {
+    let method: Method = flags.method.parse().map_err(CliError::Invalid)?;
     let opts = SolveOptions {
         method,
-        tol: a.tol,
-        max_level: a.max_level,
+        tol: flags.tol,
+        max_level: flags.max_level,
         ..SolveOptions::default()
     };
-    let r = solve_program(&prog, &opts)?;
-    if let Some(path) = &a.csv {
+    let r = solve_system(sys, &opts)?;
+    if let Some(path) = &flags.csv {
         write_csv(&r, path)?;
     }
-    if let Some(path) = &a.plot {
+    if let Some(path) = &flags.plot {
         plot(&r, path)?;
     }
-    if a.json {
+    if flags.json {
         writeln!(
             w,
             "{}",
@@ -44,6 +56,41 @@ pub fn solve_command(a: &SolveArgs, w: &mut dyn Write) -> Result<(), CliError> {
         eprintln!("warning: {warning}");
     }
     Ok(())
+}
+
+/// The flags of a generated solver (the `solve` flags without a file).
+#[derive(clap::Parser, Debug)]
+#[command(about = "A solver written by `lambdamat codegen`: solves its system and prints the report of `lambdamat solve`.", long_about = None)]
+struct SolverCli {
+    #[command(flatten)]
+    flags: SolveFlags,
+}
+
+/// The `main` of a solver written by `lambdamat codegen`: parses the
+/// `solve` flags, builds the system, solves and prints; returns the exit
+/// code (0 ok, 1 usage, 2 invalid system, 3 failed computation).
+pub fn solver_main(system: fn() -> Result<CompiledSystem, PlanError>) -> i32 {
+    use clap::Parser;
+    let cli = match SolverCli::try_parse() {
+        Ok(c) => c,
+        Err(e) => {
+            let code = if e.use_stderr() { 1 } else { 0 };
+            let _ = e.print();
+            return code;
+        }
+    };
+    let mut stdout = std::io::stdout().lock();
+    let result = system()
+        .map_err(CliError::from)
+        .and_then(|sys| solve_and_report(&sys, &cli.flags, &mut stdout));
+    let _ = stdout.flush();
+    match result {
+        Ok(()) => 0,
+        Err(e) => {
+            e.report();
+            e.exit_code()
+        }
+    }
 }
 
 /// The JSON object: `method`, `unknowns`, `outputs`, `error_estimate`,

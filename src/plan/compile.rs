@@ -69,7 +69,8 @@ fn bin(a: &Expr, b: &Expr, op: fn(f64, f64) -> f64) -> Fn2 {
     Arc::new(move |x, t| op(a(x, t), b(x, t)))
 }
 
-fn const_exponent(b: &Expr) -> Option<f64> {
+/// The exponent of `a^b` if `b` is a finite constant.
+pub fn const_exponent(b: &Expr) -> Option<f64> {
     if b.uses_x() || b.uses_t() {
         return None;
     }
@@ -112,6 +113,20 @@ pub struct AbelSplit {
     pub base: AbelBase,
 }
 
+/// The same split as expressions: `a(x,t) = scale · Π factorᵢ^powerᵢ`,
+/// multiplied left to right. [`split_abel`] compiles it to a closure and
+/// the code generator ([`crate::codegen`]) prints it as Rust, so both
+/// evaluate the same operations in the same order.
+#[derive(Debug, Clone, PartialEq)]
+pub struct AbelParts {
+    /// Sign and the base's constant: `±1/√|c|`.
+    pub scale: f64,
+    /// The remaining factors with their real powers.
+    pub factors: Vec<(Expr, f64)>,
+    /// How the base was written.
+    pub base: AbelBase,
+}
+
 /// Recognises a kernel of the form `a(x,t) · (c(t²-x²))^(-1/2)` (also
 /// `(c(x²-t²))^(-1/2)`, `|c(t²-x²)|^(-1/2)`, `sqrt`, division, powers) and
 /// returns the smooth factor `a`, or `None` if the kernel has no such
@@ -129,23 +144,47 @@ pub struct AbelSplit {
 /// assert!(((s.smooth)(0.3, 0.5) - 1.0).abs() < 1e-15);
 /// ```
 pub fn split_abel(e: &Expr) -> Option<AbelSplit> {
-    let mut factors: Vec<(Fn2, f64)> = Vec::new();
-    let mut found: Option<(f64, AbelBase)> = None;
-    let mut sign = 1.0;
-    flatten(e, 1.0, &mut factors, &mut found, &mut sign);
-    let (c, base) = found?;
-    let scale = sign / c.abs().sqrt();
-    let smooth: Fn2 = Arc::new(move |x, t| {
+    let parts = abel_parts(e)?;
+    Some(AbelSplit {
+        smooth: smooth_factor(&parts),
+        base: parts.base,
+    })
+}
+
+/// The smooth factor `scale · Π factorᵢ^powerᵢ` as a closure.
+pub fn smooth_factor(parts: &AbelParts) -> Fn2 {
+    let scale = parts.scale;
+    let factors: Vec<(Fn2, f64)> = parts
+        .factors
+        .iter()
+        .map(|(f, p)| (compile(f), *p))
+        .collect();
+    Arc::new(move |x, t| {
         let mut v = scale;
         for (f, p) in &factors {
             v *= pow_f(f(x, t), *p);
         }
         v
-    });
-    Some(AbelSplit { smooth, base })
+    })
 }
 
-fn pow_f(v: f64, p: f64) -> f64 {
+/// The symbolic form of [`split_abel`].
+pub fn abel_parts(e: &Expr) -> Option<AbelParts> {
+    let mut factors: Vec<(Expr, f64)> = Vec::new();
+    let mut found: Option<(f64, AbelBase)> = None;
+    let mut sign = 1.0;
+    flatten(e, 1.0, &mut factors, &mut found, &mut sign);
+    let (c, base) = found?;
+    Some(AbelParts {
+        scale: sign / c.abs().sqrt(),
+        factors,
+        base,
+    })
+}
+
+/// `v^p` with the common exponents done without `powf` (the code
+/// generator mirrors these cases exactly).
+pub fn pow_f(v: f64, p: f64) -> f64 {
     if p == 1.0 {
         v
     } else if p == -1.0 {
@@ -166,7 +205,7 @@ fn pow_f(v: f64, p: f64) -> f64 {
 fn flatten(
     e: &Expr,
     p: f64,
-    out: &mut Vec<(Fn2, f64)>,
+    out: &mut Vec<(Expr, f64)>,
     found: &mut Option<(f64, AbelBase)>,
     sign: &mut f64,
 ) {
@@ -185,7 +224,7 @@ fn flatten(
             } else if p.fract() == 0.0 {
                 flatten(a, p, out, found, sign);
             } else {
-                out.push((compile(e), p));
+                out.push((e.clone(), p));
             }
         }
         Expr::Mul(a, b) => {
@@ -198,10 +237,10 @@ fn flatten(
         }
         Expr::Pow(a, b) => match const_exponent(b) {
             Some(q) if q != 0.0 => flatten(a, p * q, out, found, sign),
-            _ => out.push((compile(e), p)),
+            _ => out.push((e.clone(), p)),
         },
         Expr::Call(Func::Sqrt, a) => flatten(a, 0.5 * p, out, found, sign),
-        _ => out.push((compile(e), p)),
+        _ => out.push((e.clone(), p)),
     }
 }
 

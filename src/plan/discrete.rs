@@ -13,9 +13,9 @@ use nalgebra::{DMatrix, DVector};
 
 use crate::numeric::elimination::product;
 use crate::numeric::{Assembler, Factor, Grading, Mesh, Operator, PanelBasis, Side};
-use crate::system::{Expr, MPoly};
+use crate::system::MPoly;
 
-use super::compile::compile_x;
+use super::compiled::Fn1;
 use super::error::PlanError;
 
 /// Which trial basis a matrix acts on.
@@ -199,12 +199,11 @@ impl Discretisation {
     }
 
     /// Values of a function of `x` at the collocation nodes.
-    pub fn values(&self, e: &Expr, what: &str) -> Result<DVector<f64>, PlanError> {
-        let f = compile_x(e);
+    pub fn values(&self, f: &Fn1, what: &str) -> Result<DVector<f64>, PlanError> {
         let v = DVector::from_iterator(self.nodes.len(), self.nodes.iter().map(|&x| f(x)));
         if let Some(i) = v.iter().position(|v| !v.is_finite()) {
             return Err(PlanError::Invalid(format!(
-                "{what} = {e} is not finite at x = {}",
+                "{what} is not finite at x = {}",
                 self.nodes[i]
             )));
         }

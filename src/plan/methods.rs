@@ -19,8 +19,9 @@ use crate::algebra::polyring::PolyRing;
 use crate::numeric::NumericError;
 use crate::numeric::elimination::{apply_to_values, commutator_defect, product, solve_blocks};
 use crate::numeric::solve::CheckedLu;
-use crate::system::{MPoly, Program};
+use crate::system::MPoly;
 
+use super::compiled::CompiledSystem;
 use super::discrete::{BasisId, Discretisation};
 use super::error::PlanError;
 
@@ -75,11 +76,11 @@ pub struct LevelSolution {
     pub cond: f64,
 }
 
-/// Solves the program's system on `d` by `method`; `target` is the unknown
-/// the ordered and commutative eliminations solve for.
+/// Solves the system on `d` by `method`; `target` is the unknown the
+/// ordered and commutative eliminations solve for.
 pub fn solve_level(
     d: &mut Discretisation,
-    prog: &Program,
+    prog: &CompiledSystem,
     method: Method,
     target: usize,
     max_cond: f64,
@@ -87,7 +88,10 @@ pub fn solve_level(
     let n = prog.unknowns.len();
     let mut g = Vec::with_capacity(n);
     for (i, eq) in prog.equations.iter().enumerate() {
-        g.push(d.values(&eq.rhs, &format!("right side of equation {}", i + 1))?);
+        g.push(d.values(
+            &eq.rhs,
+            &format!("right side of equation {} = {}", i + 1, eq.rhs_text),
+        )?);
     }
     if method == Method::Commutative {
         return commutative(d, prog, &g, target, max_cond);
@@ -189,10 +193,17 @@ fn ordered(
 }
 
 /// The λ-matrix over Q[symbols], its determinant and adjugate.
-fn algebra(prog: &Program) -> Result<(Matrix<PolyRing>, MPoly, Matrix<PolyRing>), PlanError> {
+fn algebra(
+    prog: &CompiledSystem,
+) -> Result<(Matrix<PolyRing>, MPoly, Matrix<PolyRing>), PlanError> {
     let n = prog.unknowns.len();
     let ring = PolyRing::new(prog.symbols.clone());
-    let a = Matrix::new(ring, n, n, prog.lambda_matrix().entries);
+    let entries = prog
+        .equations
+        .iter()
+        .flat_map(|e| e.lhs.iter().cloned())
+        .collect();
+    let a = Matrix::new(ring, n, n, entries);
     let det = a
         .det()
         .ok_or_else(|| PlanError::Invalid("the system is not square".into()))?;
@@ -208,7 +219,7 @@ fn algebra(prog: &Program) -> Result<(Matrix<PolyRing>, MPoly, Matrix<PolyRing>)
 /// `det(A)` as a commutative polynomial (checked).
 fn commutative(
     d: &mut Discretisation,
-    prog: &Program,
+    prog: &CompiledSystem,
     g: &[DVector<f64>],
     i: usize,
     max_cond: f64,
@@ -258,7 +269,7 @@ fn commutative(
 /// language's operator polynomials are commutative) and, for the
 /// commutative model, every symbol of `adj_ik` with every symbol of `A_kj`
 /// (the terms `j ≠ i` are the ones the model drops). Sorted, each once.
-pub fn commuted_pairs(prog: &Program, method: Method, target: usize) -> Vec<(usize, usize)> {
+pub fn commuted_pairs(prog: &CompiledSystem, method: Method, target: usize) -> Vec<(usize, usize)> {
     let mut pairs = BTreeSet::new();
     let vars = |p: &MPoly| -> BTreeSet<usize> {
         (0..prog.symbols.len())

@@ -8,18 +8,22 @@
 //!
 //! * [`error`]: [`PlanError`] (unsupported input vs failed numerics);
 //! * [`compile`]: expression trees → closures, Abel-factor recognition;
+//! * [`compiled`]: the compiled system (what the solver solves; built from a
+//!   program or by code `lambdamat codegen` wrote);
 //! * [`operators`]: operator definitions → numeric operators;
 //! * [`discrete`]: one discretisation level (mesh, bases, matrices);
 //! * [`methods`]: coupled, ordered and commutative solves, commutator defects;
 //! * [`refine`]: the refinement ladder, error estimates and outputs.
 
 pub mod compile;
+pub mod compiled;
 pub mod discrete;
 pub mod error;
 pub mod methods;
 pub mod operators;
 pub mod refine;
 
+pub use compiled::CompiledSystem;
 pub use error::PlanError;
 pub use methods::Method;
-pub use refine::{Defect, SolveOptions, SolveReport, UnknownValues, solve_program};
+pub use refine::{Defect, SolveOptions, SolveReport, UnknownValues, solve_program, solve_system};

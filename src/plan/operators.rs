@@ -4,12 +4,67 @@
 //! smooth factor `a`, other kernels become smooth terms after a check that
 //! they are regular on their range, and `id`, scalars and multipliers
 //! become multiplications. Anything else is refused with the operator's
-//! name. This file owns that mapping only; it must not assemble matrices.
+//! name. The decisions are kept as [`TermPlan`]s, which `lambdamat
+//! codegen` prints as Rust. This file owns that mapping only; it must not
+//! assemble matrices.
 use crate::numeric::{Limits, Operator, Singularity};
-use crate::system::{Limit, OperatorDef, Term};
+use crate::system::{Expr, Limit, OperatorDef, Term};
 
-use super::compile::{AbelBase, Fn2, compile, compile_x, rational, split_abel};
+use super::compile::{
+    AbelBase, AbelParts, Fn2, abel_parts, compile, compile_x, rational, smooth_factor,
+};
 use super::error::PlanError;
+
+/// One term of an operator, decided but not yet compiled: what
+/// [`build_operator`] compiles to closures and `lambdamat codegen` prints
+/// as Rust, so both build the same operator.
+#[derive(Debug, Clone, PartialEq)]
+pub enum TermPlan {
+    /// The identity.
+    Identity,
+    /// A constant multiple of the identity.
+    Scalar(f64),
+    /// Multiplication by a function of `x`.
+    Multiply(Expr),
+    /// `sign · ∫ kernel`.
+    Integral {
+        /// The integration range.
+        limits: Limits,
+        /// `-1` when the written limits were reversed, else `1`.
+        sign: f64,
+        /// The kernel.
+        kernel: KernelPlan,
+        /// The kernel as written (for messages and comments).
+        written: Expr,
+    },
+}
+
+/// A kernel as the numerics take it.
+#[derive(Debug, Clone, PartialEq)]
+pub enum KernelPlan {
+    /// `a(x,t)·|t²-x²|^(-1/2)`: the smooth factor `a`.
+    Abel(AbelParts),
+    /// A smooth kernel.
+    Smooth(Expr),
+}
+
+impl KernelPlan {
+    /// Its singularity class.
+    pub fn singularity(&self) -> Singularity {
+        match self {
+            KernelPlan::Abel(_) => Singularity::AbelSqrt,
+            KernelPlan::Smooth(_) => Singularity::Smooth,
+        }
+    }
+
+    /// The compiled smooth part.
+    pub fn compile(&self) -> Fn2 {
+        match self {
+            KernelPlan::Abel(parts) => smooth_factor(parts),
+            KernelPlan::Smooth(e) => compile(e),
+        }
+    }
+}
 
 /// The numeric operator of `def` (named `name`) for unknowns on `domain`.
 pub fn build_operator(
@@ -17,21 +72,51 @@ pub fn build_operator(
     name: &str,
     domain: (f64, f64),
 ) -> Result<Operator, PlanError> {
+    let mut op = Operator::zero();
+    for term in plan_operator(def, name, domain)? {
+        let piece = match term {
+            TermPlan::Identity => Operator::identity(),
+            TermPlan::Scalar(c) => Operator::identity().scaled(c),
+            TermPlan::Multiply(m) => {
+                let f = compile_x(&m);
+                Operator::multiply(move |x| f(x))
+            }
+            TermPlan::Integral {
+                limits,
+                sign,
+                kernel,
+                ..
+            } => {
+                let k = kernel.compile();
+                Operator::integral(limits, kernel.singularity(), move |x, t| k(x, t)).scaled(sign)
+            }
+        };
+        op = op + piece;
+    }
+    Ok(op)
+}
+
+/// The terms of `def` (named `name`) for unknowns on `domain`, checked:
+/// limits mapped, Abel factors split off, kernels regular on their range.
+pub fn plan_operator(
+    def: &OperatorDef,
+    name: &str,
+    domain: (f64, f64),
+) -> Result<Vec<TermPlan>, PlanError> {
     let unsupported = |reason: String| PlanError::Unsupported {
         operator: name.to_string(),
         reason,
     };
-    let mut op = Operator::zero();
+    let mut out = Vec::new();
     for term in &def.terms {
         let piece = match term {
-            Term::Identity => Operator::identity(),
-            Term::Scalar(c) => Operator::identity().scaled(rational(c)),
+            Term::Identity => TermPlan::Identity,
+            Term::Scalar(c) => TermPlan::Scalar(rational(c)),
             Term::Multiply(m) => {
                 if m.uses_t() {
                     return Err(unsupported(format!("multiplier {m} depends on t")));
                 }
-                let f = compile_x(m);
-                Operator::multiply(move |x| f(x))
+                TermPlan::Multiply(m.clone())
             }
             Term::Integral {
                 lower,
@@ -53,10 +138,10 @@ pub fn build_operator(
                         }
                     }
                 };
-                let (singularity, k): (Singularity, Fn2) = match split_abel(kernel) {
-                    Some(s) => {
+                let plan = match abel_parts(kernel) {
+                    Some(parts) => {
                         let real = matches!(
-                            (limits, s.base),
+                            (limits, parts.base),
                             (_, AbelBase::Abs)
                                 | (Limits::Upper { .. }, AbelBase::TMinusX)
                                 | (Limits::Lower { .. }, AbelBase::XMinusT)
@@ -72,22 +157,26 @@ pub fn build_operator(
                                 domain.0, domain.1
                             )));
                         }
-                        (Singularity::AbelSqrt, s.smooth)
+                        KernelPlan::Abel(parts)
                     }
-                    None => (Singularity::Smooth, compile(kernel)),
+                    None => KernelPlan::Smooth(kernel.clone()),
                 };
-                check_regular(&k, limits, domain).map_err(|why| {
+                check_regular(&plan.compile(), limits, domain).map_err(|why| {
                     unsupported(format!(
                         "kernel {kernel}: {why}; supported kernels are smooth or a smooth factor times |t^2 - x^2|^(-1/2)"
                     ))
                 })?;
-                let k2 = k.clone();
-                Operator::integral(limits, singularity, move |x, t| k2(x, t)).scaled(sign)
+                TermPlan::Integral {
+                    limits,
+                    sign,
+                    kernel: plan,
+                    written: kernel.clone(),
+                }
             }
         };
-        op = op + piece;
+        out.push(piece);
     }
-    Ok(op)
+    Ok(out)
 }
 
 /// Checks that `k` is finite on its range at sample points and does not

@@ -1,7 +1,5 @@
-//! The refinement ladder for a language system: checks its shape, finds
-//! the unknowns' interval (the hull of all constant integration limits of
-//! operators and outputs; `[0, c]` if `c` is the only one), builds the operators, chooses each unknown's
-//! edge weight, then solves on [`LevelSpec::level`] 1, 2, … until two
+//! The refinement ladder for a compiled system ([`CompiledSystem`]):
+//! checks it, chooses each unknown's edge weight, then solves on [`LevelSpec::level`] 1, 2, … until two
 //! successive answers (unknowns on a fixed grid and outputs) agree to
 //! `tol`; the distance of the last two levels is the error estimate
 //! carried by the answer. It also evaluates the output functionals and
@@ -21,13 +19,12 @@ use serde::Serialize;
 
 use crate::numeric::solve::DEFAULT_MAX_COND;
 use crate::numeric::{Assembler, Factor, Limits, Operator, Singularity};
-use crate::system::{FunctionalTerm, Limit, Program, Term};
+use crate::system::Program;
 
-use super::compile::{compile_x, constant_value, rational};
+use super::compiled::{CompiledSystem, OutputTerm};
 use super::discrete::{Discretisation, LevelSpec};
 use super::error::PlanError;
 use super::methods::{LevelSolution, Method, commuted_pairs, defect, solve_level};
-use super::operators::build_operator;
 
 /// Defects above this are reported as warnings.
 pub const DEFECT_WARNING: f64 = 1e-8;
@@ -122,73 +119,16 @@ struct Setup {
     target: usize,
 }
 
-fn setup(prog: &Program) -> Result<Setup, PlanError> {
-    let n = prog.unknowns.len();
-    if n == 0 || prog.equations.len() != n {
-        return Err(PlanError::Invalid(format!(
-            "the solver needs as many equations as unknowns ({} equations, {} unknowns)",
-            prog.equations.len(),
-            n
-        )));
-    }
-    // The interval: the hull of all constant limits.
-    let mut limits = Vec::new();
-    for d in &prog.operators {
-        for t in &d.terms {
-            if let Term::Integral { lower, upper, .. } = t {
-                for l in [lower, upper] {
-                    if let Limit::Const(c) = l {
-                        limits.push(rational(c));
-                    }
-                }
-            }
-        }
-    }
-    for o in &prog.outputs {
-        for t in &o.terms {
-            if let FunctionalTerm::Integral { lower, upper, .. } = t {
-                limits.extend([rational(lower), rational(upper)]);
-            }
-        }
-    }
-    // With a single constant limit `c` (e.g. only `int(x..1)`), the
-    // interval runs from 0 to `c`.
-    if limits.iter().all(|&c| Some(c) == limits.first().copied()) {
-        limits.push(0.0);
-    }
-    let lo = limits.iter().copied().fold(f64::INFINITY, f64::min);
-    let hi = limits.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-    if !(lo.is_finite() && hi.is_finite() && lo < hi) {
-        return Err(PlanError::Invalid(
-            "cannot tell the unknowns' interval: no integral has a nonzero constant limit".into(),
-        ));
-    }
-    let mut interior: Vec<f64> = limits.into_iter().filter(|&z| z > lo && z < hi).collect();
-    interior.sort_by(f64::total_cmp);
-    interior.dedup();
-    // Operators of the symbols the equations use; those must be defined.
-    let used = |s: usize| {
-        prog.equations
-            .iter()
-            .any(|eq| eq.lhs.iter().any(|p| p.contains_var(s)))
-    };
-    let mut ops: Vec<Option<(String, Operator)>> = vec![None; prog.symbols.len()];
-    for d in prog.operators.iter().filter(|d| used(d.symbol)) {
-        let name = prog.symbols[d.symbol].clone();
-        ops[d.symbol] = Some((name.clone(), build_operator(d, &name, (lo, hi))?));
-    }
-    for eq in &prog.equations {
-        for p in &eq.lhs {
-            for (s, name) in prog.symbols.iter().enumerate() {
-                if p.contains_var(s) && ops[s].is_none() {
-                    return Err(PlanError::Unsupported {
-                        operator: name.clone(),
-                        reason: "declared with `var`: it has no definition to discretise".into(),
-                    });
-                }
-            }
-        }
-    }
+fn setup(sys: &CompiledSystem) -> Result<Setup, PlanError> {
+    sys.check()?;
+    let n = sys.unknowns.len();
+    let hi = sys.domain.1;
+    let ops: Vec<Option<(String, Operator)>> = sys
+        .operators
+        .iter()
+        .zip(&sys.symbols)
+        .map(|(op, name)| op.as_ref().map(|op| (name.clone(), op.clone())))
+        .collect();
     // Unknowns hit by an Abel integral reaching the right end.
     let reaches_hi = |s: usize| {
         ops[s].as_ref().is_some_and(|(_, op)| {
@@ -203,8 +143,8 @@ fn setup(prog: &Program) -> Result<Setup, PlanError> {
     };
     let edge: Vec<bool> = (0..n)
         .map(|j| {
-            prog.equations.iter().any(|eq| {
-                (0..prog.symbols.len()).any(|s| eq.lhs[j].contains_var(s) && reaches_hi(s))
+            sys.equations.iter().any(|eq| {
+                (0..sys.symbols.len()).any(|s| eq.lhs[j].contains_var(s) && reaches_hi(s))
             })
         })
         .collect();
@@ -226,20 +166,12 @@ fn setup(prog: &Program) -> Result<Setup, PlanError> {
                 .collect(),
         );
     }
-    let target = prog
-        .directives
-        .iter()
-        .find_map(|d| match d {
-            crate::system::Directive::Solve { unknown } => Some(*unknown),
-            _ => None,
-        })
-        .unwrap_or(0);
     Ok(Setup {
         ops,
-        domain: (lo, hi),
-        interior,
+        domain: sys.domain,
+        interior: sys.interior.clone(),
         candidates,
-        target,
+        target: sys.target,
     })
 }
 
@@ -260,7 +192,7 @@ fn grid(domain: (f64, f64), n: usize) -> Vec<f64> {
 }
 
 fn solve_one(
-    prog: &Program,
+    sys: &CompiledSystem,
     s: &Setup,
     weights: &[Vec<Factor>],
     level: usize,
@@ -273,7 +205,7 @@ fn solve_one(
         s.ops.clone(),
         weights,
     )?;
-    let sol = solve_level(&mut disc, prog, opts.method, s.target, opts.max_cond)?;
+    let sol = solve_level(&mut disc, sys, opts.method, s.target, opts.max_cond)?;
     let xs = grid(s.domain, opts.grid);
     let phi = sol
         .coefs
@@ -295,7 +227,7 @@ fn solve_one(
             })
         })
         .collect();
-    let outputs = outputs(prog, &disc, &sol)?;
+    let outputs = outputs(sys, &disc, &sol)?;
     Ok(Solved {
         disc,
         sol,
@@ -305,17 +237,17 @@ fn solve_one(
 }
 
 fn outputs(
-    prog: &Program,
+    sys: &CompiledSystem,
     disc: &Discretisation,
     sol: &LevelSolution,
 ) -> Result<Vec<Option<f64>>, PlanError> {
     let mut out = Vec::new();
-    'outer: for o in &prog.outputs {
+    'outer: for o in &sys.outputs {
         let mut v = 0.0;
         for t in &o.terms {
             match t {
-                FunctionalTerm::Constant(e) => v += constant_value(e).unwrap_or(f64::NAN),
-                FunctionalTerm::Integral {
+                OutputTerm::Constant(c) => v += c,
+                OutputTerm::Integral {
                     coeff,
                     lower,
                     upper,
@@ -328,12 +260,11 @@ fn outputs(
                     };
                     let asm = Assembler::new(&disc.bases[*unknown])
                         .map_err(PlanError::numeric("output functional"))?;
-                    let w = compile_x(weight);
+                    let w = weight.clone();
                     let row = asm
-                        .functional(move |x| w(x), rational(lower), rational(upper))
+                        .functional(move |x| w(x), *lower, *upper)
                         .map_err(PlanError::numeric(format!("output {}", o.name)))?;
-                    let k = constant_value(coeff).unwrap_or(f64::NAN);
-                    v += k * DVector::from_vec(row).dot(c);
+                    v += coeff * DVector::from_vec(row).dot(c);
                 }
             }
         }
@@ -368,22 +299,31 @@ fn distance(a: &Solved, b: &Solved) -> f64 {
     d
 }
 
-/// Solves `prog` by `opts.method`, refining until two levels agree.
+/// Solves `prog` by `opts.method`, refining until two levels agree: the
+/// program is compiled ([`CompiledSystem::from_program`]) and solved by
+/// [`solve_system`].
 pub fn solve_program(prog: &Program, opts: &SolveOptions) -> Result<SolveReport, PlanError> {
+    solve_system(&CompiledSystem::from_program(prog, None)?, opts)
+}
+
+/// Solves a compiled system by `opts.method`, refining until two levels
+/// agree. This is the entry point of solvers written by `lambdamat
+/// codegen`.
+pub fn solve_system(sys: &CompiledSystem, opts: &SolveOptions) -> Result<SolveReport, PlanError> {
     if !(opts.tol > 0.0 && opts.tol.is_finite()) {
         return Err(PlanError::Invalid(format!(
             "tolerance {} must be positive",
             opts.tol
         )));
     }
-    let s = setup(prog)?;
+    let s = setup(sys)?;
     let max_level = opts.max_level.max(2);
     // Levels 1 and 2 for every candidate weight; keep the best.
     let mut best: Option<(f64, usize, Solved, Solved)> = None;
     let mut first_err = None;
     for (ci, w) in s.candidates.iter().enumerate() {
-        let pair = solve_one(prog, &s, w, 1, opts)
-            .and_then(|a| solve_one(prog, &s, w, 2, opts).map(|b| (a, b)));
+        let pair = solve_one(sys, &s, w, 1, opts)
+            .and_then(|a| solve_one(sys, &s, w, 2, opts).map(|b| (a, b)));
         match pair {
             Ok((a, b)) => {
                 let d = distance(&a, &b);
@@ -402,7 +342,7 @@ pub fn solve_program(prog: &Program, opts: &SolveOptions) -> Result<SolveReport,
     let weights = &s.candidates[ci];
     let mut level = 2;
     while est > opts.tol && level < max_level {
-        let next = solve_one(prog, &s, weights, level + 1, opts)?;
+        let next = solve_one(sys, &s, weights, level + 1, opts)?;
         let d = distance(&last, &next);
         if d > est && est < 1e-8 {
             // Rounding noise has overtaken the discretisation error: the
@@ -413,11 +353,11 @@ pub fn solve_program(prog: &Program, opts: &SolveOptions) -> Result<SolveReport,
         est = d;
         last = next;
     }
-    report(prog, &s, weights, last, est, level, opts)
+    report(sys, &s, weights, last, est, level, opts)
 }
 
 fn report(
-    prog: &Program,
+    sys: &CompiledSystem,
     s: &Setup,
     weights: &[Vec<Factor>],
     mut last: Solved,
@@ -447,7 +387,7 @@ fn report(
                 .join("*"),
         };
         unknowns.push(UnknownValues {
-            name: prog.unknowns[j].clone(),
+            name: sys.unknowns[j].clone(),
             x,
             values,
             weight,
@@ -455,9 +395,9 @@ fn report(
     }
     let mut warnings = Vec::new();
     let mut defects = Vec::new();
-    for (a, b) in commuted_pairs(prog, opts.method, s.target) {
+    for (a, b) in commuted_pairs(sys, opts.method, s.target) {
         let d = defect(&mut last.disc, a, b)?;
-        let (na, nb) = (&prog.symbols[a], &prog.symbols[b]);
+        let (na, nb) = (&sys.symbols[a], &sys.symbols[b]);
         if let Some(v) = d
             && v > DEFECT_WARNING
         {
@@ -474,7 +414,7 @@ fn report(
     if model {
         warnings.push(format!(
             "the commutative method solves the seed's single equation det(A) {0} = Σ adj(A)_{0}j g_j, a model that treats the operators as commuting symbols; compare with --method ordered",
-            prog.unknowns[s.target]
+            sys.unknowns[s.target]
         ));
     }
     let converged = est <= opts.tol;
@@ -487,9 +427,9 @@ fn report(
     Ok(SolveReport {
         method: opts.method.name().to_string(),
         model,
-        target: prog.unknowns[s.target].clone(),
+        target: sys.unknowns[s.target].clone(),
         unknowns,
-        outputs: prog
+        outputs: sys
             .outputs
             .iter()
             .map(|o| o.name.clone())

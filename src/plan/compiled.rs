@@ -1,0 +1,359 @@
+//! A system ready for the numerics: operators as [`Operator`]s with their
+//! kernels compiled, right sides and output weights as closures, the
+//! operator polynomials of the equations as exact [`MPoly`]s, the target
+//! unknown and the unknowns' interval. It is what [`super::solve_system`]
+//! solves, and it can be built two ways: from a parsed [`Program`]
+//! ([`CompiledSystem::from_program`], kernels compiled to closures) or by
+//! code that `lambdamat codegen` wrote (kernels as Rust functions). This
+//! file owns that data, its construction from a program and its
+//! consistency check; it must not discretise or solve.
+use std::sync::Arc;
+
+use num_rational::BigRational;
+
+use crate::system::{Directive, FunctionalTerm, Limit, MPoly, Program, Term};
+
+use super::compile::{compile_x, constant_value, rational};
+use super::error::PlanError;
+use super::operators::build_operator;
+use crate::numeric::Operator;
+
+/// A compiled function of `x`.
+pub type Fn1 = Arc<dyn Fn(f64) -> f64 + Send + Sync>;
+
+/// One equation `Σ_j lhs[j] u_j = rhs`.
+#[derive(Clone)]
+pub struct CompiledEquation {
+    /// The operator polynomial applied to each unknown.
+    pub lhs: Vec<MPoly>,
+    /// The right side.
+    pub rhs: Fn1,
+    /// The right side as written (for error messages).
+    pub rhs_text: String,
+}
+
+/// One term of an output functional, in the order written.
+#[derive(Clone)]
+pub enum OutputTerm {
+    /// A constant.
+    Constant(f64),
+    /// `coeff · ∫_lower^upper weight(x) u(x) dx`.
+    Integral {
+        /// The constant factor.
+        coeff: f64,
+        /// Lower limit.
+        lower: f64,
+        /// Upper limit.
+        upper: f64,
+        /// The weight.
+        weight: Fn1,
+        /// Index of the unknown.
+        unknown: usize,
+    },
+}
+
+/// A named output functional.
+#[derive(Clone)]
+pub struct CompiledOutput {
+    /// Its name.
+    pub name: String,
+    /// Its terms, summed in order.
+    pub terms: Vec<OutputTerm>,
+}
+
+/// A system ready for [`super::solve_system`].
+#[derive(Clone)]
+pub struct CompiledSystem {
+    /// Operator symbol names (the variables of the [`MPoly`]s).
+    pub symbols: Vec<String>,
+    /// The operator of each symbol the equations use (`None` otherwise).
+    pub operators: Vec<Option<Operator>>,
+    /// Unknown names.
+    pub unknowns: Vec<String>,
+    /// One equation per unknown.
+    pub equations: Vec<CompiledEquation>,
+    /// Output functionals.
+    pub outputs: Vec<CompiledOutput>,
+    /// The unknown the eliminations solve for.
+    pub target: usize,
+    /// The unknowns' interval.
+    pub domain: (f64, f64),
+    /// Constant limits strictly inside the interval (meshes are graded there).
+    pub interior: Vec<f64>,
+}
+
+impl CompiledSystem {
+    /// Compiles `prog`: kernels to closures, the interval from the
+    /// constant limits, the target from `target` (an unknown's name), else
+    /// the file's `solve for`, else the first unknown.
+    pub fn from_program(prog: &Program, target: Option<&str>) -> Result<CompiledSystem, PlanError> {
+        let n = prog.unknowns.len();
+        if n == 0 || prog.equations.len() != n {
+            return Err(PlanError::Invalid(format!(
+                "the solver needs as many equations as unknowns ({} equations, {} unknowns)",
+                prog.equations.len(),
+                n
+            )));
+        }
+        let target = match target {
+            Some(name) => prog
+                .unknowns
+                .iter()
+                .position(|u| u == name)
+                .ok_or_else(|| {
+                    PlanError::Invalid(format!(
+                        "{name} is not an unknown of the file (unknowns: {})",
+                        prog.unknowns.join(", ")
+                    ))
+                })?,
+            None => prog
+                .directives
+                .iter()
+                .find_map(|d| match d {
+                    Directive::Solve { unknown } => Some(*unknown),
+                    _ => None,
+                })
+                .unwrap_or(0),
+        };
+        let used = |s: usize| {
+            prog.equations
+                .iter()
+                .any(|eq| eq.lhs.iter().any(|p| p.contains_var(s)))
+        };
+        if let Some(s) = (0..prog.symbols.len()).find(|&s| used(s) && prog.operator(s).is_none()) {
+            return Err(PlanError::Unsupported {
+                operator: prog.symbols[s].clone(),
+                reason: "declared with `var`: it has no definition to discretise".into(),
+            });
+        }
+        let (domain, interior) = interval(prog)?;
+        let mut operators: Vec<Option<Operator>> = vec![None; prog.symbols.len()];
+        for d in prog.operators.iter().filter(|d| used(d.symbol)) {
+            let name = &prog.symbols[d.symbol];
+            operators[d.symbol] = Some(build_operator(d, name, domain)?);
+        }
+        let equations = prog
+            .equations
+            .iter()
+            .map(|eq| CompiledEquation {
+                lhs: eq.lhs.clone(),
+                rhs: compile_x(&eq.rhs),
+                rhs_text: eq.rhs.to_string(),
+            })
+            .collect();
+        let outputs = prog
+            .outputs
+            .iter()
+            .map(|o| CompiledOutput {
+                name: o.name.clone(),
+                terms: o
+                    .terms
+                    .iter()
+                    .map(|t| match t {
+                        FunctionalTerm::Constant(e) => {
+                            OutputTerm::Constant(constant_value(e).unwrap_or(f64::NAN))
+                        }
+                        FunctionalTerm::Integral {
+                            coeff,
+                            lower,
+                            upper,
+                            weight,
+                            unknown,
+                        } => OutputTerm::Integral {
+                            coeff: constant_value(coeff).unwrap_or(f64::NAN),
+                            lower: rational(lower),
+                            upper: rational(upper),
+                            weight: compile_x(weight),
+                            unknown: *unknown,
+                        },
+                    })
+                    .collect(),
+            })
+            .collect();
+        let sys = CompiledSystem {
+            symbols: prog.symbols.clone(),
+            operators,
+            unknowns: prog.unknowns.clone(),
+            equations,
+            outputs,
+            target,
+            domain,
+            interior,
+        };
+        sys.check()?;
+        Ok(sys)
+    }
+
+    /// Checks that the parts fit together: one equation per unknown, one
+    /// polynomial per unknown over the declared symbols, an operator for
+    /// every symbol used, a valid target, interval and output unknowns.
+    pub fn check(&self) -> Result<(), PlanError> {
+        let n = self.unknowns.len();
+        let invalid = |s: String| Err(PlanError::Invalid(s));
+        if n == 0 || self.equations.len() != n {
+            return invalid(format!(
+                "the solver needs as many equations as unknowns ({} equations, {} unknowns)",
+                self.equations.len(),
+                n
+            ));
+        }
+        if self.operators.len() != self.symbols.len() {
+            return invalid(format!(
+                "{} operators for {} symbols",
+                self.operators.len(),
+                self.symbols.len()
+            ));
+        }
+        for (i, eq) in self.equations.iter().enumerate() {
+            if eq.lhs.len() != n {
+                return invalid(format!(
+                    "equation {} has {} operator polynomials for {n} unknowns",
+                    i + 1,
+                    eq.lhs.len()
+                ));
+            }
+            for p in &eq.lhs {
+                if p.nvars() != self.symbols.len() {
+                    return invalid(format!(
+                        "equation {}: a polynomial in {} variables for {} symbols",
+                        i + 1,
+                        p.nvars(),
+                        self.symbols.len()
+                    ));
+                }
+                for (s, name) in self.symbols.iter().enumerate() {
+                    if p.contains_var(s) && self.operators[s].is_none() {
+                        return Err(PlanError::Unsupported {
+                            operator: name.clone(),
+                            reason: "declared with `var`: it has no definition to discretise"
+                                .into(),
+                        });
+                    }
+                }
+            }
+        }
+        if self.target >= n {
+            return invalid(format!("target unknown #{} of {n}", self.target));
+        }
+        let (lo, hi) = self.domain;
+        if !(lo.is_finite() && hi.is_finite() && lo < hi) {
+            return invalid(format!("the interval [{lo}, {hi}] is empty or not finite"));
+        }
+        for o in &self.outputs {
+            for t in &o.terms {
+                if let OutputTerm::Integral { unknown, .. } = t
+                    && *unknown >= n
+                {
+                    return invalid(format!("output {} uses unknown #{unknown}", o.name));
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+/// The unknowns' interval: the hull of all constant limits of operators
+/// and outputs (`[0, c]` if `c` is the only one), and the limits strictly
+/// inside it.
+fn interval(prog: &Program) -> Result<((f64, f64), Vec<f64>), PlanError> {
+    let mut limits = Vec::new();
+    for d in &prog.operators {
+        for t in &d.terms {
+            if let Term::Integral { lower, upper, .. } = t {
+                for l in [lower, upper] {
+                    if let Limit::Const(c) = l {
+                        limits.push(rational(c));
+                    }
+                }
+            }
+        }
+    }
+    for o in &prog.outputs {
+        for t in &o.terms {
+            if let FunctionalTerm::Integral { lower, upper, .. } = t {
+                limits.extend([rational(lower), rational(upper)]);
+            }
+        }
+    }
+    if limits.iter().all(|&c| Some(c) == limits.first().copied()) {
+        limits.push(0.0);
+    }
+    let lo = limits.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = limits.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    if !(lo.is_finite() && hi.is_finite() && lo < hi) {
+        return Err(PlanError::Invalid(
+            "cannot tell the unknowns' interval: no integral has a nonzero constant limit".into(),
+        ));
+    }
+    let mut interior: Vec<f64> = limits.into_iter().filter(|&z| z > lo && z < hi).collect();
+    interior.sort_by(f64::total_cmp);
+    interior.dedup();
+    Ok(((lo, hi), interior))
+}
+
+/// An operator polynomial from its terms: each term is the exponent of
+/// every symbol and an exact rational coefficient written `"p"` or
+/// `"p/q"` (the form `lambdamat codegen` writes).
+///
+/// ```
+/// use lambdamat::plan::compiled::poly;
+/// let p = poly(2, &[(&[1, 0], "1"), (&[0, 2], "-1/3")]).unwrap();
+/// assert_eq!(p.to_string_with(&["a", "b"]), "a - 1/3*b^2");
+/// ```
+pub fn poly(nvars: usize, terms: &[(&[u32], &str)]) -> Result<MPoly, PlanError> {
+    let mut out = Vec::with_capacity(terms.len());
+    for (mono, c) in terms {
+        if mono.len() != nvars {
+            return Err(PlanError::Invalid(format!(
+                "a monomial with {} exponents in a polynomial of {nvars} variables",
+                mono.len()
+            )));
+        }
+        let q: BigRational = c
+            .parse()
+            .map_err(|_| PlanError::Invalid(format!("{c} is not a rational number")))?;
+        out.push((mono.to_vec(), q));
+    }
+    Ok(MPoly::from_terms(nvars, out))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn program(src: &str) -> Program {
+        crate::lang::parse_program(src, "t.lmx").expect("parses")
+    }
+
+    #[test]
+    fn interval_and_target_from_the_file() {
+        let p = program(
+            "operator a = int(x..1) t dt\noperator b = int(0..1/2) x*t dt\nunknown u, v\n\
+             equation a u + v = 1\nequation b v = x\nsolve for v\n",
+        );
+        let s = CompiledSystem::from_program(&p, None).unwrap();
+        assert_eq!(s.domain, (0.0, 1.0));
+        assert_eq!(s.interior, vec![0.5]);
+        assert_eq!(s.target, 1);
+        assert_eq!(
+            CompiledSystem::from_program(&p, Some("u")).unwrap().target,
+            0
+        );
+        let e = CompiledSystem::from_program(&p, Some("w")).err().unwrap();
+        assert!(e.to_string().contains("w is not an unknown"), "{e}");
+    }
+
+    #[test]
+    fn check_names_the_misfit() {
+        let p = program("operator a = int(x..1) t dt\nunknown u\nequation a u = 1\n");
+        let mut s = CompiledSystem::from_program(&p, None).unwrap();
+        s.operators[0] = None;
+        assert!(s.check().unwrap_err().to_string().contains("`var`"));
+        let mut s = CompiledSystem::from_program(&p, None).unwrap();
+        s.domain = (1.0, 1.0);
+        assert!(s.check().unwrap_err().to_string().contains("empty"));
+        assert!(poly(2, &[(&[1], "1")]).is_err());
+        assert!(poly(1, &[(&[1], "1/0")]).is_err());
+        assert!(poly(1, &[(&[1], "x")]).is_err());
+    }
+}
