@@ -1,10 +1,20 @@
 //! Timings of `lambdamat solve` through the language path (parse excluded):
 //! the manufactured coupled system at tol 1e-10 by each method, and the
-//! punch at tol 1e-12. `cargo bench --bench solve` (about 15 s).
+//! punch at tol 1e-12; and the solvers written by `lambdamat codegen`
+//! (kernels as Rust functions) against the same systems compiled to
+//! closures in process. `cargo bench --bench solve` (about 30 s).
 use std::time::Duration;
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use lambdamat::plan::{Method, SolveOptions, solve_program};
+use lambdamat::plan::{CompiledSystem, Method, SolveOptions, solve_program, solve_system};
+
+#[allow(dead_code)]
+#[path = "../examples/mms_solver.rs"]
+mod mms_solver;
+
+#[allow(dead_code)]
+#[path = "../tests/data/codegen_terms_solver.rs"]
+mod terms_solver;
 
 fn solve(c: &mut Criterion) {
     let mms = lambdamat::lang::parse_program(include_str!("../examples/mms.lmx"), "mms.lmx")
@@ -34,5 +44,44 @@ fn solve(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, solve);
+/// Generated kernels (Rust functions) vs closures compiled in process, on
+/// the same refinement ladder (the answers are bit for bit equal; see
+/// `tests/codegen.rs`).
+fn generated(c: &mut Criterion) {
+    let compiled = |src: &str, name: &str| {
+        let p = lambdamat::lang::parse_program(src, name).expect("parses");
+        CompiledSystem::from_program(&p, None).expect("compiles")
+    };
+    let cases = [
+        (
+            "mms",
+            compiled(include_str!("../examples/mms.lmx"), "mms.lmx"),
+            mms_solver::system().expect("generated"),
+        ),
+        (
+            "codegen_terms",
+            compiled(
+                include_str!("../tests/data/codegen_terms.lmx"),
+                "codegen_terms.lmx",
+            ),
+            terms_solver::system().expect("generated"),
+        ),
+    ];
+    let mut g = c.benchmark_group("codegen");
+    g.sample_size(10)
+        .warm_up_time(Duration::from_secs(1))
+        .measurement_time(Duration::from_secs(3));
+    let opts = SolveOptions::default();
+    for (name, closures, generated) in &cases {
+        g.bench_function(format!("{name} closures"), |b| {
+            b.iter(|| solve_system(closures, &opts))
+        });
+        g.bench_function(format!("{name} generated"), |b| {
+            b.iter(|| solve_system(generated, &opts))
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, solve, generated);
 criterion_main!(benches);

@@ -83,8 +83,14 @@ fn distance(a: &SolveReport, b: &SolveReport) -> f64 {
     d = d.max((ea - eb).abs() / eb.abs().max(1.0));
     for (da, db) in a.commutator_defects.iter().zip(&b.commutator_defects) {
         assert_eq!(da.pair, db.pair);
-        if let (Some(x), Some(y)) = (da.defect, db.defect) {
-            d = d.max((x - y).abs() / y.abs().max(1.0));
+        for (x, y) in [
+            (da.defect, db.defect),
+            (da.defect_on_solution, db.defect_on_solution),
+        ] {
+            assert_eq!(x.is_some(), y.is_some());
+            if let (Some(x), Some(y)) = (x, y) {
+                d = d.max((x - y).abs() / y.abs().max(1.0));
+            }
         }
     }
     d

@@ -79,6 +79,14 @@ fn mms_commutative_model_is_visibly_wrong_and_the_defect_says_why() {
         .find(|(a, b, _)| a == "k2" && b == "k4")
         .expect("k2, k4 were commuted");
     assert!(k24.2 > 0.1, "k2 k4 defect {}", k24.2);
+    // Also on the system's own solution p = 1 (the ordered elimination's).
+    let on_p = defects
+        .iter()
+        .find(|d| d["pair"][0] == "k2" && d["pair"][1] == "k4")
+        .and_then(|d| d["defect_on_solution"].as_f64())
+        .expect("defect on the solution");
+    eprintln!("k2 k4 defect on p: {on_p:.3e}");
+    assert!(on_p > 0.1, "k2 k4 defect on p {on_p}");
     // The ordered method commutes nothing here: no defects to report.
     let o = solve_json(&["examples/mms.lmx"]);
     assert_eq!(o["method"], "ordered");

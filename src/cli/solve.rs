@@ -152,12 +152,21 @@ pub fn write_text(r: &SolveReport, w: &mut dyn Write) -> Result<(), CliError> {
         }
     }
     if !r.commutator_defects.is_empty() {
-        writeln!(w, "commutator defects (f = 1 + x):")?;
+        writeln!(
+            w,
+            "commutator defects ‖KaKb f - KbKa f‖/‖KaKb f‖ (f = 1 + x; f = the system's {}):",
+            r.target
+        )?;
+        let show = |v: Option<f64>| v.map_or("undefined".to_string(), |v| format!("{v:.3e}"));
         for d in &r.commutator_defects {
-            let v = d
-                .defect
-                .map_or("undefined".to_string(), |v| format!("{v:.3e}"));
-            writeln!(w, "  {} {}: {v}", d.pair[0], d.pair[1])?;
+            writeln!(
+                w,
+                "  {} {}: {}; {}",
+                d.pair[0],
+                d.pair[1],
+                show(d.defect),
+                show(d.defect_on_solution)
+            )?;
         }
     }
     for u in &r.unknowns {

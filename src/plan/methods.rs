@@ -17,7 +17,7 @@ use nalgebra::{DMatrix, DVector};
 use crate::algebra::matrix::Matrix;
 use crate::algebra::polyring::PolyRing;
 use crate::numeric::NumericError;
-use crate::numeric::elimination::{apply_to_values, commutator_defect, product, solve_blocks};
+use crate::numeric::elimination::{apply_to_values, product, solve_blocks};
 use crate::numeric::solve::CheckedLu;
 use crate::system::MPoly;
 
@@ -311,15 +311,30 @@ pub fn commuted_pairs(prog: &CompiledSystem, method: Method, target: usize) -> V
 }
 
 /// The measured defect `‖KaKb f - KbKa f‖/‖KaKb f‖` (max norm at the
-/// nodes) on the intermediate basis for `f = 1 + x`; `None` if `KaKb f`
+/// nodes) for `f = 1 + x` on the intermediate basis; `None` if `KaKb f`
 /// vanishes.
 pub fn defect(d: &mut Discretisation, a: usize, b: usize) -> Result<Option<f64>, PlanError> {
-    let ka = d.symbol(a, BasisId::Mid)?;
-    let kb = d.symbol(b, BasisId::Mid)?;
     let f = DVector::from_vec(d.mid.interpolate(|x| 1.0 + x));
-    match commutator_defect(&ka, &kb, &d.mid, &f) {
-        Ok(v) => Ok(Some(v)),
-        Err(NumericError::InvalidArgument(_)) => Ok(None),
-        Err(e) => Err(PlanError::numeric("commutator defect")(e)),
+    defect_on(d, a, b, BasisId::Mid, &f)
+}
+
+/// The same defect for the function with coefficients `f` on basis `id`
+/// (a computed unknown): both products are formed through `mid`.
+pub fn defect_on(
+    d: &mut Discretisation,
+    a: usize,
+    b: usize,
+    id: BasisId,
+    f: &DVector<f64>,
+) -> Result<Option<f64>, PlanError> {
+    let ctx = || PlanError::numeric("commutator defect");
+    let (ka, kb) = (d.symbol(a, BasisId::Mid)?, d.symbol(b, BasisId::Mid)?);
+    let (ka_f, kb_f) = (d.symbol(a, id)?, d.symbol(b, id)?);
+    let ab = product(&ka, &d.mid, &kb_f).map_err(ctx())? * f;
+    let ba = product(&kb, &d.mid, &ka_f).map_err(ctx())? * f;
+    let n = ab.amax();
+    if n == 0.0 || !n.is_finite() {
+        return Ok(None);
     }
+    Ok(Some((ab - ba).amax() / n))
 }

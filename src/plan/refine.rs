@@ -22,9 +22,10 @@ use crate::numeric::{Assembler, Factor, Limits, Operator, Singularity};
 use crate::system::Program;
 
 use super::compiled::{CompiledSystem, OutputTerm};
+use super::discrete::BasisId;
 use super::discrete::{Discretisation, LevelSpec};
 use super::error::PlanError;
-use super::methods::{LevelSolution, Method, commuted_pairs, defect, solve_level};
+use super::methods::{LevelSolution, Method, commuted_pairs, defect, defect_on, solve_level};
 
 /// Defects above this are reported as warnings.
 pub const DEFECT_WARNING: f64 = 1e-8;
@@ -77,6 +78,10 @@ pub struct Defect {
     pub pair: [String; 2],
     /// `‖KaKb f - KbKa f‖/‖KaKb f‖` for `f = 1 + x` (None if `KaKb f = 0`).
     pub defect: Option<f64>,
+    /// The same for `f` = the system's solution for the target unknown
+    /// (for the commutative model: the ordered elimination's solution on the
+    /// same level); None if it could not be computed or `KaKb f = 0`.
+    pub defect_on_solution: Option<f64>,
 }
 
 /// A solved system.
@@ -395,8 +400,31 @@ fn report(
     }
     let mut warnings = Vec::new();
     let mut defects = Vec::new();
-    for (a, b) in commuted_pairs(sys, opts.method, s.target) {
+    let pairs = commuted_pairs(sys, opts.method, s.target);
+    // The defects are also measured on the system's own solution for the
+    // target: the method's, or for the commutative model (whose answer is
+    // not the system's) the ordered elimination's on the same level.
+    let solution = if pairs.is_empty() {
+        None
+    } else if opts.method == Method::Commutative {
+        solve_level(
+            &mut last.disc,
+            sys,
+            Method::Ordered,
+            s.target,
+            opts.max_cond,
+        )
+        .ok()
+        .and_then(|l| l.coefs[s.target].clone())
+    } else {
+        last.sol.coefs[s.target].clone()
+    };
+    for (a, b) in pairs {
         let d = defect(&mut last.disc, a, b)?;
+        let on_solution = match &solution {
+            Some(c) => defect_on(&mut last.disc, a, b, BasisId::Unknown(s.target), c)?,
+            None => None,
+        };
         let (na, nb) = (&sys.symbols[a], &sys.symbols[b]);
         if let Some(v) = d
             && v > DEFECT_WARNING
@@ -408,6 +436,7 @@ fn report(
         defects.push(Defect {
             pair: [na.clone(), nb.clone()],
             defect: d,
+            defect_on_solution: on_solution,
         });
     }
     let model = opts.method == Method::Commutative;
