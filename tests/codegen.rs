@@ -154,42 +154,30 @@ fn codegen_for_picks_the_target_and_errors_are_clear() {
     assert!(text.contains("--for q -o FILE.rs"), "header names --for");
 
     // Not an unknown: invalid input.
-    let out = lambdamat()
-        .args(["codegen", src, "--for", "r"])
-        .output()
-        .expect("runs");
-    assert_eq!(out.status.code(), Some(2));
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert!(err.contains("r is not an unknown"), "{err}");
-    assert!(out.stdout.is_empty());
-
+    refused(&["codegen", src, "--for", "r"], "r is not an unknown");
     // Abstract symbols have no kernels to generate.
-    let f = lmx_file("var k\nunknown p\nequation k p = x\n");
-    let out = lambdamat()
-        .arg("codegen")
-        .arg(f.path())
-        .output()
-        .expect("runs");
-    assert_eq!(out.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("`var`"));
-
+    let var = lmx_file("var k\nunknown p\nequation k p = x\n");
     // Unsupported kernels are refused as `solve` refuses them.
-    let f = lmx_file("operator k = int(x..1) 1/sqrt(t - x) dt\nunknown p\nequation k p = 1\n");
-    let out = lambdamat()
-        .arg("codegen")
-        .arg(f.path())
-        .output()
-        .expect("runs");
-    assert_eq!(out.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("operator k:"));
-
+    let singular =
+        lmx_file("operator k = int(x..1) 1/sqrt(t - x) dt\nunknown p\nequation k p = 1\n");
     // Syntax errors carry line and column.
-    let f = lmx_file("unknown p\nequation p = (x\n");
-    let out = lambdamat()
-        .arg("codegen")
-        .arg(f.path())
-        .output()
-        .expect("runs");
-    assert_eq!(out.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&out.stderr).contains(".lmx:3:1"));
+    let syntax = lmx_file("unknown p\nequation p = (x\n");
+    for (f, needle) in [
+        (&var, "`var`"),
+        (&singular, "operator k:"),
+        (&syntax, ".lmx:3:1"),
+    ] {
+        let path = f.path().to_str().expect("utf-8 path");
+        refused(&["codegen", path], needle);
+    }
+}
+
+/// `lambdamat ARGS` exits 2 with `needle` on standard error and nothing on
+/// standard output.
+fn refused(args: &[&str], needle: &str) {
+    let out = lambdamat().args(args).output().expect("runs");
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+    assert!(err.contains(needle), "{args:?}: {err}");
+    assert!(out.stdout.is_empty(), "{args:?}");
 }

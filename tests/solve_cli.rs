@@ -215,3 +215,18 @@ fn run_performs_the_solve_directive() {
     assert_eq!(r["result"]["method"], "ordered");
     assert!(max_error(&r["result"], "p", |_| 1.0) <= 1e-10);
 }
+
+#[test]
+fn solve_for_picks_the_eliminated_unknown() {
+    // The commutative model computes only the unknown it solves for.
+    let v = solve_json(&["examples/mms.lmx", "--method", "commutative", "--for", "q"]);
+    assert_eq!(v["target"], "q");
+    assert!(v["unknowns"].get("p").is_none());
+    assert!(v["unknowns"].get("q").is_some());
+    let out = lambdamat()
+        .args(["solve", "examples/mms.lmx", "--for", "r"])
+        .output()
+        .expect("runs");
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("r is not an unknown"));
+}

@@ -86,6 +86,9 @@ enum Command {
 pub struct SolveArgs {
     /// A lambdamat source file (.lmx).
     pub file: PathBuf,
+    /// The unknown the eliminations solve for (default: the file's `solve for`, else the first unknown).
+    #[arg(long = "for", value_name = "UNKNOWN")]
+    pub unknown: Option<String>,
     #[command(flatten)]
     pub flags: SolveFlags,
 }
@@ -183,15 +186,32 @@ pub fn read_source(path: &PathBuf) -> Result<(String, String), CliError> {
     Ok((text, name))
 }
 
+/// The command line parsed as `T`, or the exit code after clap printed
+/// help (0) or a usage error (1).
+pub fn parse_args<T: Parser>() -> Result<T, i32> {
+    T::try_parse().map_err(|e| {
+        let code = if e.use_stderr() { 1 } else { 0 };
+        let _ = e.print();
+        code
+    })
+}
+
+/// The exit code of a command's result, reporting an error on stderr.
+pub fn exit_code(result: Result<(), CliError>) -> i32 {
+    match result {
+        Ok(()) => 0,
+        Err(e) => {
+            e.report();
+            e.exit_code()
+        }
+    }
+}
+
 /// Entry point used by the binary; returns the process exit code.
 pub fn main() -> i32 {
-    let cli = match Cli::try_parse() {
+    let cli = match parse_args::<Cli>() {
         Ok(c) => c,
-        Err(e) => {
-            let code = if e.use_stderr() { 1 } else { 0 };
-            let _ = e.print();
-            return code;
-        }
+        Err(code) => return code,
     };
     let mut stdout = std::io::stdout().lock();
     let result = match cli.command {
@@ -203,11 +223,5 @@ pub fn main() -> i32 {
         Command::Hertz(a) => hertz::hertz_command(&a, &mut stdout),
     };
     let _ = stdout.flush();
-    match result {
-        Ok(()) => 0,
-        Err(e) => {
-            e.report();
-            e.exit_code()
-        }
-    }
+    exit_code(result)
 }

@@ -17,7 +17,7 @@ use crate::plan::{CompiledSystem, Method, PlanError, SolveOptions, SolveReport, 
 /// `lambdamat solve FILE …`.
 pub fn solve_command(a: &SolveArgs, w: &mut dyn Write) -> Result<(), CliError> {
     let prog = load(&a.file)?;
-    let sys = CompiledSystem::from_program(&prog, None)?;
+    let sys = CompiledSystem::from_program(&prog, a.unknown.as_deref())?;
     solve_and_report(&sys, &a.flags, w)
 }
 
@@ -70,27 +70,16 @@ struct SolverCli {
 /// `solve` flags, builds the system, solves and prints; returns the exit
 /// code (0 ok, 1 usage, 2 invalid system, 3 failed computation).
 pub fn solver_main(system: fn() -> Result<CompiledSystem, PlanError>) -> i32 {
-    use clap::Parser;
-    let cli = match SolverCli::try_parse() {
+    let cli = match super::parse_args::<SolverCli>() {
         Ok(c) => c,
-        Err(e) => {
-            let code = if e.use_stderr() { 1 } else { 0 };
-            let _ = e.print();
-            return code;
-        }
+        Err(code) => return code,
     };
     let mut stdout = std::io::stdout().lock();
     let result = system()
         .map_err(CliError::from)
         .and_then(|sys| solve_and_report(&sys, &cli.flags, &mut stdout));
     let _ = stdout.flush();
-    match result {
-        Ok(()) => 0,
-        Err(e) => {
-            e.report();
-            e.exit_code()
-        }
-    }
+    super::exit_code(result)
 }
 
 /// The JSON object: `method`, `unknowns`, `outputs`, `error_estimate`,
