@@ -7,6 +7,14 @@
 //! refinement to the tolerance, and the error estimate.
 //! Unknowns on [0, 1]; eliminations solve for `p`.
 //!
+//! Derived equations for `p` (`lambdamat reduce`):
+//!
+//! - ordered elimination, exact (`--method ordered`, the default; gj is
+//!   the right side of equation j):
+//!   `(k1 - k2 k4^-1 k3) p = g1 - k2 k4^-1 g2`
+//! - commutative eliminant, the seed's model (`--method commutative`):
+//!   `(k1*k4 - k2*k3) p = k4[sqrt(1 - x^2) + 1/3*(x^2 - 1/2)] - k2[1/3*x - x*sqrt(1 - x^2)]`
+//!
 //! The system (parameters substituted):
 //!
 //! ```text

@@ -230,6 +230,26 @@ fn header(out: &mut String, prog: &Program, sys: &CompiledSystem, from: &Provena
         "//! Unknowns on [{}, {}]; eliminations solve for `{}`.",
         sys.domain.0, sys.domain.1, sys.unknowns[sys.target]
     );
+    // The derived single equations (`lambdamat reduce`), for the reader.
+    if let Ok(r) = crate::reduce::reduce(prog, sys.target) {
+        let _ = writeln!(
+            out,
+            "//!\n//! Derived equations for `{}` (`lambdamat reduce`):\n//!",
+            r.unknown
+        );
+        if let Ok(o) = &r.ordered {
+            let _ = writeln!(
+                out,
+                "//! - ordered elimination, exact (`--method ordered`, the default; gj is\n//!   the right side of equation j):\n//!   `{}`",
+                o.text
+            );
+        }
+        let _ = writeln!(
+            out,
+            "//! - commutative eliminant, the seed's model (`--method commutative`):\n//!   `{}`",
+            r.eliminant_text()
+        );
+    }
     out.push_str("//!\n//! The system (parameters substituted):\n//!\n//! ```text\n");
     for line in crate::lang::pretty::pretty(prog).lines() {
         if line.is_empty() {

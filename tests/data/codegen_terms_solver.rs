@@ -7,6 +7,14 @@
 //! refinement to the tolerance, and the error estimate.
 //! Unknowns on [0, 1]; eliminations solve for `v`.
 //!
+//! Derived equations for `v` (`lambdamat reduce`):
+//!
+//! - ordered elimination, exact (`--method ordered`, the default; gj is
+//!   the right side of equation j):
+//!   `(h - m g^-1 h - m g^-1 - k g^-1 h - k g^-1) v = g1 + (-m g^-1 - k g^-1) g2`
+//! - commutative eliminant, the seed's model (`--method commutative`):
+//!   `(m*h + m + k*h + k - h*g) v = -g[1 + x] + (m + k)[x^2 - pi/8]`
+//!
 //! The system (parameters substituted):
 //!
 //! ```text
