@@ -184,12 +184,26 @@ pub fn commutator_defect(
     mid: &PanelBasis,
     f: &DVector<f64>,
 ) -> Result<f64, NumericError> {
-    let ab = product(ka, mid, kb)? * f;
-    let ba = product(kb, mid, ka)? * f;
+    commutator_defect_on(ka, kb, ka, kb, mid, f)
+}
+
+/// The same defect for coefficients `f` on another basis of the same
+/// nodes: `ka_f`, `kb_f` act on that basis, `ka`, `kb` on `mid`, and both
+/// products are formed through `mid`.
+pub fn commutator_defect_on(
+    ka: &DMatrix<f64>,
+    kb: &DMatrix<f64>,
+    ka_f: &DMatrix<f64>,
+    kb_f: &DMatrix<f64>,
+    mid: &PanelBasis,
+    f: &DVector<f64>,
+) -> Result<f64, NumericError> {
+    let ab = product(ka, mid, kb_f)? * f;
+    let ba = product(kb, mid, ka_f)? * f;
     let n = ab.amax();
-    if n == 0.0 {
+    if n == 0.0 || !n.is_finite() {
         return Err(NumericError::InvalidArgument(
-            "KaKb f vanishes; defect undefined".into(),
+            "KaKb f vanishes or is not finite; defect undefined".into(),
         ));
     }
     Ok((ab - ba).amax() / n)

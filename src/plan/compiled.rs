@@ -87,14 +87,7 @@ impl CompiledSystem {
     /// constant limits, the target from `target` (an unknown's name), else
     /// the file's `solve for`, else the first unknown.
     pub fn from_program(prog: &Program, target: Option<&str>) -> Result<CompiledSystem, PlanError> {
-        let n = prog.unknowns.len();
-        if n == 0 || prog.equations.len() != n {
-            return Err(PlanError::Invalid(format!(
-                "the solver needs as many equations as unknowns ({} equations, {} unknowns)",
-                prog.equations.len(),
-                n
-            )));
-        }
+        square(prog.equations.len(), prog.unknowns.len())?;
         let target = match target {
             Some(name) => prog
                 .unknowns
@@ -121,10 +114,7 @@ impl CompiledSystem {
                 .any(|eq| eq.lhs.iter().any(|p| p.contains_var(s)))
         };
         if let Some(s) = (0..prog.symbols.len()).find(|&s| used(s) && prog.operator(s).is_none()) {
-            return Err(PlanError::Unsupported {
-                operator: prog.symbols[s].clone(),
-                reason: "declared with `var`: it has no definition to discretise".into(),
-            });
+            return Err(no_definition(&prog.symbols[s]));
         }
         let (domain, interior) = interval(prog)?;
         let mut operators: Vec<Option<Operator>> = vec![None; prog.symbols.len()];
@@ -190,13 +180,7 @@ impl CompiledSystem {
     pub fn check(&self) -> Result<(), PlanError> {
         let n = self.unknowns.len();
         let invalid = |s: String| Err(PlanError::Invalid(s));
-        if n == 0 || self.equations.len() != n {
-            return invalid(format!(
-                "the solver needs as many equations as unknowns ({} equations, {} unknowns)",
-                self.equations.len(),
-                n
-            ));
-        }
+        square(self.equations.len(), n)?;
         if self.operators.len() != self.symbols.len() {
             return invalid(format!(
                 "{} operators for {} symbols",
@@ -223,11 +207,7 @@ impl CompiledSystem {
                 }
                 for (s, name) in self.symbols.iter().enumerate() {
                     if p.contains_var(s) && self.operators[s].is_none() {
-                        return Err(PlanError::Unsupported {
-                            operator: name.clone(),
-                            reason: "declared with `var`: it has no definition to discretise"
-                                .into(),
-                        });
+                        return Err(no_definition(name));
                     }
                 }
             }
@@ -249,6 +229,24 @@ impl CompiledSystem {
             }
         }
         Ok(())
+    }
+}
+
+/// One equation per unknown, and at least one.
+fn square(equations: usize, unknowns: usize) -> Result<(), PlanError> {
+    if unknowns == 0 || equations != unknowns {
+        return Err(PlanError::Invalid(format!(
+            "the solver needs as many equations as unknowns ({equations} equations, {unknowns} unknowns)"
+        )));
+    }
+    Ok(())
+}
+
+/// The error for a symbol the equations use that has no operator.
+fn no_definition(name: &str) -> PlanError {
+    PlanError::Unsupported {
+        operator: name.to_string(),
+        reason: "declared with `var`: it has no definition to discretise".into(),
     }
 }
 

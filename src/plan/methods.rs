@@ -17,7 +17,7 @@ use nalgebra::{DMatrix, DVector};
 use crate::algebra::matrix::Matrix;
 use crate::algebra::polyring::PolyRing;
 use crate::numeric::NumericError;
-use crate::numeric::elimination::{apply_to_values, product, solve_blocks};
+use crate::numeric::elimination::{apply_to_values, commutator_defect_on, product, solve_blocks};
 use crate::numeric::solve::CheckedLu;
 use crate::system::MPoly;
 
@@ -327,14 +327,11 @@ pub fn defect_on(
     id: BasisId,
     f: &DVector<f64>,
 ) -> Result<Option<f64>, PlanError> {
-    let ctx = || PlanError::numeric("commutator defect");
     let (ka, kb) = (d.symbol(a, BasisId::Mid)?, d.symbol(b, BasisId::Mid)?);
     let (ka_f, kb_f) = (d.symbol(a, id)?, d.symbol(b, id)?);
-    let ab = product(&ka, &d.mid, &kb_f).map_err(ctx())? * f;
-    let ba = product(&kb, &d.mid, &ka_f).map_err(ctx())? * f;
-    let n = ab.amax();
-    if n == 0.0 || !n.is_finite() {
-        return Ok(None);
+    match commutator_defect_on(&ka, &kb, &ka_f, &kb_f, &d.mid, f) {
+        Ok(v) => Ok(Some(v)),
+        Err(NumericError::InvalidArgument(_)) => Ok(None),
+        Err(e) => Err(PlanError::numeric("commutator defect")(e)),
     }
-    Ok(Some((ab - ba).amax() / n))
 }
