@@ -36,8 +36,39 @@ use std::path::PathBuf;
     after_help = "Exit codes: 0 ok, 1 usage error, 2 invalid input (with line:column), 3 a computation failed.\nThe language is documented in README.md; grammar/lambdamat.pest is its reference."
 )]
 pub struct Cli {
+    /// Override a parameter of the file for this command: `--set nu=0.25`
+    /// (integers, exact decimals and fractions `a/b`; repeatable).
+    #[arg(long = "set", global = true, value_name = "NAME=VALUE")]
+    set: Vec<String>,
     #[command(subcommand)]
     command: Command,
+}
+
+/// The `--set` overrides of this process, fixed once by [`main`] before any
+/// command runs (every command loads its file through `smith::load`).
+static OVERRIDES: std::sync::OnceLock<Vec<(String, num_rational::BigRational)>> =
+    std::sync::OnceLock::new();
+
+/// The `--set` overrides (empty when none were given or outside [`main`]).
+pub fn overrides() -> &'static [(String, num_rational::BigRational)] {
+    OVERRIDES.get().map_or(&[], Vec::as_slice)
+}
+
+/// Parses `NAME=VALUE` pairs.
+fn parse_sets(sets: &[String]) -> Result<Vec<(String, num_rational::BigRational)>, CliError> {
+    sets.iter()
+        .map(|s| {
+            let (n, v) = s.split_once('=').ok_or_else(|| {
+                CliError::Invalid(format!("--set {s}: expected NAME=VALUE, e.g. --set nu=0.25"))
+            })?;
+            let value = crate::lang::parser::parse_exact(v).ok_or_else(|| {
+                CliError::Invalid(format!(
+                    "--set {s}: `{v}` is not an exact number (write an integer, a decimal such as 0.1801, or a fraction such as 1/4)"
+                ))
+            })?;
+            Ok((n.trim().to_string(), value))
+        })
+        .collect()
 }
 
 #[derive(Subcommand, Debug)]
@@ -213,6 +244,12 @@ pub fn main() -> i32 {
         Ok(c) => c,
         Err(code) => return code,
     };
+    match parse_sets(&cli.set) {
+        Ok(sets) => {
+            let _ = OVERRIDES.set(sets);
+        }
+        Err(e) => return exit_code(Err(e)),
+    }
     let mut stdout = std::io::stdout().lock();
     let result = match cli.command {
         Command::Run(a) => run::run(&a.file, &a.out, &mut stdout),

@@ -22,10 +22,30 @@ pub fn to_matrix(symbols: &[String], m: &MatrixDef) -> Matrix<PolyRing> {
     )
 }
 
-/// Parses a file, mapping errors to [`CliError::Lang`].
+/// Parses a file with the command line's `--set` overrides, mapping
+/// errors to [`CliError::Lang`] (and a `--set` naming no parameter of the
+/// file to [`CliError::Invalid`]).
 pub fn load(path: &std::path::PathBuf) -> Result<Program, CliError> {
     let (text, name) = read_source(path)?;
-    parse_program(&text, &name).map_err(|e| CliError::Lang(Box::new(e)))
+    let sets = super::overrides();
+    if sets.is_empty() {
+        return parse_program(&text, &name).map_err(|e| CliError::Lang(Box::new(e)));
+    }
+    let ast = crate::lang::parse_ast(&text, &name).map_err(|e| CliError::Lang(Box::new(e)))?;
+    let names = crate::lang::param_names(&ast);
+    for (n, _) in sets {
+        if !names.contains(n) {
+            return Err(CliError::Invalid(format!(
+                "--set {n}: {name} defines no parameter `{n}` (parameters: {})",
+                if names.is_empty() {
+                    "none".to_string()
+                } else {
+                    names.join(", ")
+                }
+            )));
+        }
+    }
+    crate::lang::parse_program_with(&text, &name, sets).map_err(|e| CliError::Lang(Box::new(e)))
 }
 
 /// Resolves `--principal` against the file's symbols (the flag wins).

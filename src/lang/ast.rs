@@ -173,8 +173,8 @@ pub enum Stmt {
         /// Its value.
         value: Expr,
     },
-    /// `unknown p, q`
-    Unknown(Vec<Ident>),
+    /// `unknown p, q` (optionally `on [a, b]`)
+    Unknown(Vec<Ident>, Option<Interval>),
     /// `operator k1 = ...`
     Operator {
         /// The operator symbol.
@@ -188,6 +188,42 @@ pub enum Stmt {
         lhs: Vec<LhsTerm>,
         /// The right side, a function of x.
         rhs: Expr,
+        /// `on [a, b)`: where it holds (everywhere when `None`).
+        domain: Option<Interval>,
+    },
+    /// `relation q = mu*p on [c, 1]`
+    Relation {
+        /// The unknown that is expressed.
+        unknown: Ident,
+        /// The right side: a constant times another unknown.
+        value: Expr,
+        /// Where it holds.
+        domain: Interval,
+    },
+    /// `scalar c in (0, 1)`
+    Scalar {
+        /// The scalar's name.
+        name: Ident,
+        /// The range searched for it.
+        range: Interval,
+    },
+    /// `singular p at 1 ~ (1 - x)^(-alpha)` or `singular q at c- ~ B*g(x)`
+    Singular {
+        /// The unknown.
+        unknown: Ident,
+        /// The point.
+        at: Expr,
+        /// `-1` for `at c-`, `1` for `at c+`, `0` when no side is written.
+        side: i8,
+        /// The behaviour.
+        body: Expr,
+    },
+    /// `condition lhs = rhs`
+    Condition {
+        /// The left side.
+        lhs: Expr,
+        /// The right side.
+        rhs: Expr,
     },
     /// `solve for p`
     Solve(Ident),
@@ -198,6 +234,21 @@ pub enum Stmt {
         /// Its definition.
         body: Expr,
     },
+}
+
+/// An interval `[a, b)` with open or closed ends.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Interval {
+    /// Left end.
+    pub lo: Expr,
+    /// Right end.
+    pub hi: Expr,
+    /// Whether the left end belongs to it (`[`).
+    pub lo_closed: bool,
+    /// Whether the right end belongs to it (`]`).
+    pub hi_closed: bool,
+    /// The bracketed text.
+    pub span: Span,
 }
 
 /// One row of a matrix literal.

@@ -25,8 +25,17 @@ pub const KEYWORDS: &[&str] = &[
     "ln",
     "abs",
     "exp",
+    "atan",
+    "acot",
     "dt",
     "dx",
+    "relation",
+    "scalar",
+    "singular",
+    "condition",
+    "on",
+    "in",
+    "at",
 ];
 
 /// Whether `word` is reserved.

@@ -52,7 +52,9 @@ pub fn lower(file: &File, v: &Validated) -> Result<Program, LangError> {
         params: scope
             .params
             .iter()
-            .map(|(name, v)| Param {
+            .enumerate()
+            .filter(|(i, _)| !scope.is_real_param(*i))
+            .map(|(_, (name, v))| Param {
                 name: name.clone(),
                 value: v.clone().unwrap_or_else(BigRational::zero),
             })
@@ -61,6 +63,7 @@ pub fn lower(file: &File, v: &Validated) -> Result<Program, LangError> {
         operators: Vec::new(),
         equations: Vec::new(),
         outputs: Vec::new(),
+        contact: super::lower_contact::lower_contact(file, scope)?,
     };
     let unknown_index = |id: &Ident| match scope.get(&id.name) {
         Some(Entry {
@@ -126,7 +129,7 @@ pub fn lower(file: &File, v: &Validated) -> Result<Program, LangError> {
                     .collect();
                 program.operators.push(OperatorDef { symbol, terms });
             }
-            Stmt::Equation { lhs, rhs } => {
+            Stmt::Equation { lhs, rhs, .. } => {
                 let mut row = vec![MPoly::zero(n); scope.unknowns.len()];
                 for term in lhs {
                     let (product, unknown) = split_term(term);
@@ -151,7 +154,13 @@ pub fn lower(file: &File, v: &Validated) -> Result<Program, LangError> {
                 name: name.name.clone(),
                 terms: output_terms(body, scope)?,
             }),
-            Stmt::Var(_) | Stmt::Param { .. } | Stmt::Unknown(_) => {}
+            Stmt::Var(_)
+            | Stmt::Param { .. }
+            | Stmt::Unknown(..)
+            | Stmt::Relation { .. }
+            | Stmt::Scalar { .. }
+            | Stmt::Singular { .. }
+            | Stmt::Condition { .. } => {}
         }
     }
     program.operators.sort_by_key(|o| o.symbol);

@@ -69,10 +69,12 @@ pub mod diagnostics;
 pub mod error;
 pub mod keywords;
 pub mod lower;
+pub mod lower_contact;
 pub mod parser;
 pub mod pretty;
 pub mod scope;
 pub mod validate;
+pub mod validate_contact;
 pub mod validate_system;
 
 pub use crate::system::{Directive, MatrixDef, Program};
@@ -127,6 +129,79 @@ pub fn parse_program(src: &str, filename: &str) -> Result<Program, LangErrors> {
 /// [`parser::MAX_NESTING`] brackets and [`parser::MAX_DEPTH`] levels even in
 /// unoptimised builds (the memory is reserved, not used, until needed).
 pub const STACK_SIZE: usize = 256 << 20;
+
+/// [`parse_program`] with parameter overrides (`--set nu=1/4`): each named
+/// parameter's definition is replaced by the exact value before
+/// validation, so everything computed from it follows. Names that are not
+/// parameters of the file are ignored here (the caller checks them with
+/// [`param_names`]).
+///
+/// ```
+/// use num_rational::BigRational;
+/// let src = "param a = 1\nparam b = 2*a\nvar k\nmatrix A = [b*k]";
+/// let set = [("a".to_string(), BigRational::new(3.into(), 2.into()))];
+/// let p = lambdamat::lang::parse_program_with(src, "a.lmx", &set).expect("valid");
+/// assert_eq!(p.params[1].value.to_string(), "3");
+/// ```
+pub fn parse_program_with(
+    src: &str,
+    filename: &str,
+    sets: &[(String, num_rational::BigRational)],
+) -> Result<Program, LangErrors> {
+    std::thread::scope(|s| {
+        let worker = std::thread::Builder::new()
+            .name("lambdamat-front-end".into())
+            .stack_size(STACK_SIZE)
+            .spawn_scoped(s, || parse_program_set(src, filename, sets));
+        match worker {
+            Ok(handle) => handle.join().unwrap_or_else(|_| {
+                Err(LangErrors::new(
+                    filename,
+                    src,
+                    vec![LangError::new(
+                        ErrorKind::Syntax,
+                        "internal error in the front end",
+                        ast::Span::default(),
+                        "while reading this file",
+                    )],
+                ))
+            }),
+            Err(_) => parse_program_set(src, filename, sets),
+        }
+    })
+}
+
+/// The names of the parameters a file defines (for checking `--set`).
+pub fn param_names(file: &ast::File) -> Vec<String> {
+    file.statements
+        .iter()
+        .filter_map(|s| match &s.kind {
+            ast::Stmt::Param { name, .. } => Some(name.name.clone()),
+            _ => None,
+        })
+        .collect()
+}
+
+fn parse_program_set(
+    src: &str,
+    filename: &str,
+    sets: &[(String, num_rational::BigRational)],
+) -> Result<Program, LangErrors> {
+    let mut file = parser::parse_file(src).map_err(|e| LangErrors::new(filename, src, vec![e]))?;
+    for st in &mut file.statements {
+        if let ast::Stmt::Param { name, value } = &mut st.kind
+            && let Some((_, v)) = sets.iter().rev().find(|(n, _)| *n == name.name)
+        {
+            let span = value.span;
+            *value = ast::Expr {
+                kind: ast::ExprKind::Number(v.clone()),
+                span,
+            };
+        }
+    }
+    let checked = validate::validate(&file).map_err(|errs| LangErrors::new(filename, src, errs))?;
+    lower::lower(&file, &checked).map_err(|e| LangErrors::new(filename, src, vec![e]))
+}
 
 /// [`parse_program`] on the current thread.
 fn parse_program_here(src: &str, filename: &str) -> Result<Program, LangErrors> {

@@ -18,7 +18,8 @@ use pest::iterators::Pair;
 use pest::pratt_parser::{Assoc, Op, PrattParser};
 
 use super::ast::{
-    BinOp, Expr, ExprKind, File, Ident, IntVar, LhsTerm, MatrixRow, Sign, Span, Statement, Stmt,
+    BinOp, Expr, ExprKind, File, Ident, IntVar, Interval, LhsTerm, MatrixRow, Sign, Span,
+    Statement, Stmt,
 };
 use super::error::{ErrorKind, LangError};
 use super::keywords::{KEYWORDS, is_keyword};
@@ -119,7 +120,61 @@ fn statement(pair: Pair<'_, Rule>) -> Result<Statement, LangError> {
     let rule = pair.as_rule();
     let kind = match rule {
         Rule::var_decl => Stmt::Var(names(pair)),
-        Rule::unknown_decl => Stmt::Unknown(names(pair)),
+        Rule::unknown_decl => {
+            let mut domain = None;
+            let mut ids = Vec::new();
+            for p in pair.into_inner() {
+                match p.as_rule() {
+                    Rule::name => ids.push(ident(&p)),
+                    Rule::domain => domain = Some(interval_of_domain(p, span)?),
+                    _ => {}
+                }
+            }
+            Stmt::Unknown(ids, domain)
+        }
+        Rule::relation_def => {
+            let mut it = pair.into_inner().skip(1);
+            let unknown = ident(&next(&mut it, span)?);
+            let value = expr(next(&mut it, span)?)?;
+            let domain = interval_of_domain(next(&mut it, span)?, span)?;
+            Stmt::Relation {
+                unknown,
+                value,
+                domain,
+            }
+        }
+        Rule::scalar_decl => {
+            let mut it = pair.into_inner().skip(1);
+            let name = ident(&next(&mut it, span)?);
+            let _kw_in = next(&mut it, span)?;
+            let range = interval(next(&mut it, span)?, span)?;
+            Stmt::Scalar { name, range }
+        }
+        Rule::singular_decl => {
+            let mut it = pair.into_inner().skip(1);
+            let unknown = ident(&next(&mut it, span)?);
+            let _kw_at = next(&mut it, span)?;
+            let at = expr(next(&mut it, span)?)?;
+            let mut p = next(&mut it, span)?;
+            let mut side = 0;
+            if p.as_rule() == Rule::side {
+                side = if p.as_str() == "-" { -1 } else { 1 };
+                p = next(&mut it, span)?;
+            }
+            let body = expr(p)?;
+            Stmt::Singular {
+                unknown,
+                at,
+                side,
+                body,
+            }
+        }
+        Rule::condition_def => {
+            let mut it = pair.into_inner().skip(1);
+            let lhs = expr(next(&mut it, span)?)?;
+            let rhs = expr(next(&mut it, span)?)?;
+            Stmt::Condition { lhs, rhs }
+        }
         Rule::principal_decl | Rule::smith_cmd | Rule::solve_cmd => {
             let id = names(pair)
                 .into_iter()
@@ -175,11 +230,38 @@ fn statement(pair: Pair<'_, Rule>) -> Result<Statement, LangError> {
             let mut it = pair.into_inner().skip(1);
             let lhs = equation_lhs(next(&mut it, span)?)?;
             let rhs = expr(next(&mut it, span)?)?;
-            Stmt::Equation { lhs, rhs }
+            let domain = match it.next() {
+                Some(d) => Some(interval_of_domain(d, span)?),
+                None => None,
+            };
+            Stmt::Equation { lhs, rhs, domain }
         }
         _ => return Err(internal(span, "unexpected statement")),
     };
     Ok(Statement { kind, span })
+}
+
+/// The interval of a `domain` pair (`on [a, b)`).
+fn interval_of_domain(pair: Pair<'_, Rule>, span: Span) -> Result<Interval, LangError> {
+    let mut it = pair.into_inner().skip(1);
+    interval(next(&mut it, span)?, span)
+}
+
+/// An `interval` pair.
+fn interval(pair: Pair<'_, Rule>, span: Span) -> Result<Interval, LangError> {
+    let ispan = span_of(&pair);
+    let mut it = pair.into_inner();
+    let lo_closed = next(&mut it, span)?.as_rule() == Rule::lclosed;
+    let lo = expr(next(&mut it, span)?)?;
+    let hi = expr(next(&mut it, span)?)?;
+    let hi_closed = next(&mut it, span)?.as_rule() == Rule::rclosed;
+    Ok(Interval {
+        lo,
+        hi,
+        lo_closed,
+        hi_closed,
+        span: ispan,
+    })
 }
 
 fn equation_lhs(pair: Pair<'_, Rule>) -> Result<Vec<LhsTerm>, LangError> {
@@ -351,6 +433,45 @@ fn primary(pair: Pair<'_, Rule>) -> Result<Built, LangError> {
 }
 
 /// An integer or exact decimal literal as a rational (`0.25` → 1/4).
+/// An exact number as written on a command line: an optional `-`, then an
+/// integer, an exact decimal (`0.1801` is 1801/10000) or a fraction `a/b`.
+///
+/// ```
+/// use lambdamat::lang::parser::parse_exact;
+/// assert_eq!(parse_exact("0.25").unwrap().to_string(), "1/4");
+/// assert_eq!(parse_exact("-3/6").unwrap().to_string(), "-1/2");
+/// assert!(parse_exact("1e-3").is_none());
+/// ```
+pub fn parse_exact(text: &str) -> Option<BigRational> {
+    let text = text.trim();
+    let (neg, body) = match text.strip_prefix('-') {
+        Some(rest) => (true, rest),
+        None => (false, text),
+    };
+    let decimal = |t: &str| -> Option<BigRational> {
+        let (i, f) = t.split_once('.').unwrap_or((t, ""));
+        if i.is_empty()
+            || !i.bytes().all(|b| b.is_ascii_digit())
+            || !f.bytes().all(|b| b.is_ascii_digit())
+            || (t.contains('.') && f.is_empty())
+        {
+            return None;
+        }
+        parse_number(t, Span::default()).ok()
+    };
+    let v = match body.split_once('/') {
+        Some((a, b)) => {
+            let d = decimal(b.trim())?;
+            if d.is_zero() {
+                return None;
+            }
+            decimal(a.trim())? / d
+        }
+        None => decimal(body)?,
+    };
+    Some(if neg { -v } else { v })
+}
+
 fn parse_number(text: &str, span: Span) -> Result<BigRational, LangError> {
     let (int_part, frac_part) = text.split_once('.').unwrap_or((text, ""));
     let digits = format!("{int_part}{frac_part}");
@@ -410,7 +531,18 @@ fn describe_rule(rule: Rule) -> Option<&'static str> {
         | Rule::kw_operator
         | Rule::kw_equation
         | Rule::kw_solve
-        | Rule::kw_output => STATEMENT,
+        | Rule::kw_output
+        | Rule::kw_relation
+        | Rule::kw_scalar
+        | Rule::kw_singular
+        | Rule::kw_condition => STATEMENT,
+        Rule::kw_on => "`on`",
+        Rule::kw_in => "`in`",
+        Rule::kw_at => "`at`",
+        Rule::domain => "`on [a, b]`",
+        Rule::interval | Rule::lclosed | Rule::lopen => "an interval such as `[0, c)`",
+        Rule::rclosed | Rule::ropen => "`]` or `)` to close the interval",
+        Rule::side => "`-`, `+` or `~`",
         Rule::kw_with => "`with`",
         Rule::kw_for => "`for`",
         Rule::name => "a name",
@@ -425,7 +557,11 @@ fn describe_rule(rule: Rule) -> Option<&'static str> {
         | Rule::operator_def
         | Rule::equation
         | Rule::solve_cmd
-        | Rule::output_def => STATEMENT,
+        | Rule::output_def
+        | Rule::relation_def
+        | Rule::scalar_decl
+        | Rule::singular_decl
+        | Rule::condition_def => STATEMENT,
         Rule::number
         | Rule::paren
         | Rule::integral
@@ -448,7 +584,7 @@ fn describe_rule(rule: Rule) -> Option<&'static str> {
     })
 }
 
-const STATEMENT: &str = "a statement (`var`, `principal`, `matrix`, `smith`, `check`, `param`, `unknown`, `operator`, `equation`, `solve` or `output`)";
+const STATEMENT: &str = "a statement (`var`, `principal`, `matrix`, `smith`, `check`, `param`, `unknown`, `operator`, `equation`, `relation`, `scalar`, `singular`, `condition`, `solve` or `output`)";
 
 /// What is written at byte `pos`, in words.
 fn found_at(src: &str, pos: usize) -> (String, Option<String>, usize) {

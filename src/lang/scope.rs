@@ -23,6 +23,11 @@ pub enum Sort {
     Unknown(usize),
     /// An output functional.
     Output(usize),
+    /// An unknown scalar: index into [`Scope::scalars`].
+    Scalar(usize),
+    /// The coefficient of an exact singular term: index into
+    /// [`Scope::coefficients`].
+    Coefficient(usize),
 }
 
 impl Sort {
@@ -34,6 +39,8 @@ impl Sort {
             Sort::Param(_) => "a parameter",
             Sort::Unknown(_) => "an unknown",
             Sort::Output(_) => "an output",
+            Sort::Scalar(_) => "an unknown scalar",
+            Sort::Coefficient(_) => "a singular coefficient",
         }
     }
 }
@@ -62,6 +69,12 @@ pub struct Scope {
     pub unknowns: Vec<String>,
     /// Outputs in order.
     pub outputs: Vec<String>,
+    /// `real_params[i]`: parameter `i` is real (not an exact rational).
+    pub real_params: Vec<bool>,
+    /// Unknown scalars in order.
+    pub scalars: Vec<String>,
+    /// Singular coefficients in order.
+    pub coefficients: Vec<String>,
 }
 
 impl Scope {
@@ -124,6 +137,27 @@ impl Scope {
             s.outputs.push(name.to_string());
             Sort::Output(s.outputs.len() - 1)
         })
+    }
+
+    /// Declares an unknown scalar.
+    pub fn declare_scalar(&mut self, name: &str, span: Span) -> Result<Sort, Entry> {
+        self.declare(name, span, |s| {
+            s.scalars.push(name.to_string());
+            Sort::Scalar(s.scalars.len() - 1)
+        })
+    }
+
+    /// Declares a singular coefficient.
+    pub fn declare_coefficient(&mut self, name: &str, span: Span) -> Result<Sort, Entry> {
+        self.declare(name, span, |s| {
+            s.coefficients.push(name.to_string());
+            Sort::Coefficient(s.coefficients.len() - 1)
+        })
+    }
+
+    /// Whether parameter `i` is real (not an exact rational).
+    pub fn is_real_param(&self, i: usize) -> bool {
+        self.real_params.get(i).copied().unwrap_or(false)
     }
 
     /// The value of parameter `i`, if known.

@@ -120,7 +120,7 @@ impl Validator {
                         self.err(duplicate("parameter", name, first));
                     }
                 }
-                Stmt::Unknown(names) => {
+                Stmt::Unknown(names, _) => {
                     for id in names {
                         self.not_reserved(id, "an unknown");
                         if let Err(first) = self.scope.declare_unknown(&id.name, id.span) {
@@ -140,6 +140,20 @@ impl Validator {
                         self.err(duplicate("output", name, first));
                     }
                 }
+                Stmt::Scalar { name, .. } => {
+                    self.not_reserved(name, "a scalar");
+                    if let Err(first) = self.scope.declare_scalar(&name.name, name.span) {
+                        self.err(duplicate("scalar", name, first));
+                    }
+                }
+                Stmt::Singular { body, .. } => {
+                    if let Some((id, _)) = super::validate_contact::coefficient_term(body)
+                        && self.scope.get(&id.name).is_none()
+                    {
+                        self.not_reserved(&id, "a coefficient");
+                        let _ = self.scope.declare_coefficient(&id.name, id.span);
+                    }
+                }
                 _ => {}
             }
         }
@@ -150,7 +164,21 @@ impl Validator {
     fn parameters(&mut self, file: &File) {
         for st in &file.statements {
             if let Stmt::Param { name, value } = &st.kind {
+                // A value that is not an exact rational but a valid real
+                // expression (functions, scalars, real parameters) makes a
+                // real parameter: its errors as a rational are dropped.
+                let before = self.errors.len();
                 let val = self.constant(value);
+                let mut real = false;
+                if val.is_none() && self.errors.len() > before {
+                    let exact_errors = self.errors.split_off(before);
+                    if self.real_expr(value, false) {
+                        real = true;
+                    } else {
+                        self.errors.truncate(before);
+                        self.errors.extend(exact_errors);
+                    }
+                }
                 if let Some(Entry {
                     sort: Sort::Param(i),
                     span,
@@ -161,6 +189,10 @@ impl Validator {
                         if let Some(slot) = self.scope.params.get_mut(i) {
                             slot.1 = val;
                         }
+                        if self.scope.real_params.len() <= i {
+                            self.scope.real_params.resize(i + 1, false);
+                        }
+                        self.scope.real_params[i] = real;
                         if self.processed_params.len() <= i {
                             self.processed_params.resize(i + 1, false);
                         }
@@ -283,10 +315,26 @@ impl Validator {
                     }
                 }
                 Stmt::Operator { body, .. } => self.operator_body(body),
-                Stmt::Equation { lhs, rhs } => self.equation(lhs, rhs),
+                Stmt::Equation { lhs, rhs, domain } => {
+                    self.equation(lhs, rhs);
+                    if let Some(d) = domain {
+                        self.interval(d);
+                    }
+                }
                 Stmt::Solve(id) => self.solve_target(id),
                 Stmt::Output { body, .. } => self.output_body(body),
-                Stmt::Var(_) | Stmt::Param { .. } | Stmt::Unknown(_) => {}
+                Stmt::Unknown(_, Some(d)) => self.interval(d),
+                Stmt::Relation {
+                    unknown,
+                    value,
+                    domain,
+                } => self.relation(unknown, value, domain),
+                Stmt::Scalar { range, .. } => self.scalar_range(range),
+                Stmt::Singular {
+                    unknown, at, body, ..
+                } => self.singular(unknown, at, body),
+                Stmt::Condition { lhs, rhs } => self.condition(lhs, rhs),
+                Stmt::Var(_) | Stmt::Param { .. } | Stmt::Unknown(_, None) => {}
             }
         }
         self.square(file);
@@ -631,6 +679,21 @@ impl Validator {
                     ..
                 }) => {
                     let v = self.scope.param_value(i).cloned();
+                    if self.scope.is_real_param(i) {
+                        self.err(
+                            LangError::new(
+                                ErrorKind::WrongSort,
+                                format!(
+                                    "`{}` is a real (not exactly rational) parameter, but an exact rational is needed here",
+                                    id.name
+                                ),
+                                id.span,
+                                "real parameter",
+                            )
+                            .with_help("real parameters may be used in relations, singular declarations, conditions, intervals and other real parameters"),
+                        );
+                        return None;
+                    }
                     if v.is_none() && !self.param_defined_with_error(i) {
                         self.err(
                             LangError::new(
@@ -774,6 +837,12 @@ impl Validator {
 
     /// Whether parameter `i`'s definition was already evaluated, so that a
     /// missing value means an error there, already reported.
+    pub(super) fn param_processed(&self, i: usize) -> bool {
+        self.param_defined_with_error(i)
+    }
+
+    /// Whether parameter `i`'s definition was already evaluated (see
+    /// [`Validator::param_processed`]).
     fn param_defined_with_error(&self, i: usize) -> bool {
         self.processed_params.get(i).copied().unwrap_or(false)
     }

@@ -255,9 +255,25 @@ impl Validator {
         }
         match self.scope.get(&id.name) {
             Some(Entry {
-                sort: Sort::Param(_),
+                sort: Sort::Param(i),
                 ..
-            }) => {}
+            }) => {
+                if self.scope.is_real_param(i) {
+                    self.err(
+                        LangError::new(
+                            ErrorKind::WrongSort,
+                            format!(
+                                "`{}` is a real (not exactly rational) parameter; it cannot appear inside {} yet",
+                                id.name,
+                                place.what()
+                            ),
+                            id.span,
+                            "real parameter",
+                        )
+                        .with_help("kernels, right sides and outputs take exact parameters; real ones go into relations, singular declarations and conditions"),
+                    );
+                }
+            }
             Some(Entry {
                 sort: Sort::Unknown(_),
                 ..
@@ -804,7 +820,7 @@ impl Validator {
         let first_unknown_decl = file
             .statements
             .iter()
-            .find(|s| matches!(s.kind, Stmt::Unknown(_)));
+            .find(|s| matches!(s.kind, Stmt::Unknown(..)));
         let at = first_unknown_decl
             .or(equations.first().copied())
             .map(|s| s.span);

@@ -8,8 +8,10 @@
 //! * [`program`]: [`Program`], [`MatrixDef`], [`Directive`], equations,
 //!   parameters and outputs;
 //! * [`operator`]: the operator table (integral terms, multipliers, identity);
+//! * [`contact`]: split domains, relations, scalars, singular behaviour;
 //! * [`expr`]: expression trees in `x` and `t` with `eval`.
 
+pub mod contact;
 pub mod expr;
 pub mod operator;
 pub mod program;

@@ -7,6 +7,7 @@
 
 use num_rational::BigRational;
 
+use super::contact::Contact;
 use super::expr::Expr;
 use super::operator::OperatorDef;
 use crate::algebra::mpoly::MPoly;
@@ -37,6 +38,9 @@ pub struct Program {
     pub equations: Vec<Equation>,
     /// Output functionals, in definition order.
     pub outputs: Vec<Output>,
+    /// Split domains, relations, scalars and singular behaviour (contact
+    /// problems); empty for a system on one interval.
+    pub contact: Contact,
 }
 
 impl Program {

@@ -1,0 +1,241 @@
+//! Validated split-domain statements → [`Contact`]: intervals, relations,
+//! scalars, real parameters, singular declarations and conditions, with
+//! names mapped to unknown indices and value slots. It trusts the
+//! validator and never panics (anything unexpected is an internal error);
+//! it must not check user errors itself.
+use num_traits::ToPrimitive;
+
+use super::ast::{BinOp, Expr, ExprKind, File, Ident, Interval, Stmt};
+use super::error::{ErrorKind, LangError};
+use super::lower::constant;
+use super::scope::{Entry, Scope, Sort};
+use super::validate_contact::{coefficient_term, is_inf, relation_form, weight_form};
+use crate::system::contact::{
+    Condition, Contact, Interval as CInterval, RBin, RExpr, RFunc, RealParam, Relation, Scalar,
+    Singular, SingularKind,
+};
+
+fn internal(span: super::ast::Span, what: &str) -> LangError {
+    LangError::new(
+        ErrorKind::WrongSort,
+        format!("internal error: {what} passed validation but cannot be lowered"),
+        span,
+        "here",
+    )
+}
+
+/// Slot of each real parameter (`None` for rational ones).
+fn real_slots(scope: &Scope) -> Vec<Option<usize>> {
+    let base = scope.scalars.len();
+    let mut k = 0;
+    (0..scope.params.len())
+        .map(|i| {
+            scope.is_real_param(i).then(|| {
+                k += 1;
+                base + k - 1
+            })
+        })
+        .collect()
+}
+
+/// The [`RExpr`] of a validated real expression.
+fn rexpr(e: &Expr, scope: &Scope, slots: &[Option<usize>]) -> Result<RExpr, LangError> {
+    Ok(match &e.kind {
+        ExprKind::Number(q) => RExpr::Const(q.clone()),
+        ExprKind::Pi => RExpr::Pi,
+        ExprKind::Name(id) if id.name == "x" => RExpr::X,
+        ExprKind::Name(id) => match scope.get(&id.name) {
+            Some(Entry {
+                sort: Sort::Param(i),
+                ..
+            }) => match slots.get(i).copied().flatten() {
+                Some(s) => RExpr::Var(s),
+                None => RExpr::Const(
+                    scope
+                        .param_value(i)
+                        .cloned()
+                        .ok_or_else(|| internal(e.span, "a parameter"))?,
+                ),
+            },
+            Some(Entry {
+                sort: Sort::Scalar(i),
+                ..
+            }) => RExpr::Var(i),
+            _ => return Err(internal(e.span, "a name")),
+        },
+        ExprKind::Neg(a) => RExpr::Neg(Box::new(rexpr(a, scope, slots)?)),
+        ExprKind::Binary(op, a, b) => RExpr::Bin(
+            match op {
+                BinOp::Add => RBin::Add,
+                BinOp::Sub => RBin::Sub,
+                BinOp::Mul => RBin::Mul,
+                BinOp::Div => RBin::Div,
+                BinOp::Pow => RBin::Pow,
+            },
+            Box::new(rexpr(a, scope, slots)?),
+            Box::new(rexpr(b, scope, slots)?),
+        ),
+        ExprKind::Call(f, a) => RExpr::Call(
+            RFunc::from_name(&f.name).ok_or_else(|| internal(f.span, "a function"))?,
+            Box::new(rexpr(a, scope, slots)?),
+        ),
+        _ => return Err(internal(e.span, "an expression")),
+    })
+}
+
+fn interval(i: &Interval, scope: &Scope, slots: &[Option<usize>]) -> Result<CInterval, LangError> {
+    Ok(CInterval {
+        lo: rexpr(&i.lo, scope, slots)?,
+        hi: rexpr(&i.hi, scope, slots)?,
+        lo_closed: i.lo_closed,
+        hi_closed: i.hi_closed,
+    })
+}
+
+fn unknown(id: &Ident, scope: &Scope) -> Result<usize, LangError> {
+    match scope.get(&id.name) {
+        Some(Entry {
+            sort: Sort::Unknown(i),
+            ..
+        }) => Ok(i),
+        _ => Err(internal(id.span, "an unknown")),
+    }
+}
+
+fn end(e: &Expr, scope: &Scope, infinite: f64) -> Result<f64, LangError> {
+    if is_inf(e) {
+        return Ok(infinite);
+    }
+    constant(e, scope)
+        .and_then(|q| q.to_f64())
+        .ok_or_else(|| internal(e.span, "a range end"))
+}
+
+/// Builds the split-domain part of a validated file.
+pub fn lower_contact(file: &File, scope: &Scope) -> Result<Contact, LangError> {
+    let slots = real_slots(scope);
+    let mut c = Contact {
+        coefficients: scope.coefficients.clone(),
+        unknown_domains: vec![None; scope.unknowns.len()],
+        ..Contact::default()
+    };
+    for st in &file.statements {
+        match &st.kind {
+            Stmt::Param { name, value } => {
+                if let Some(Entry {
+                    sort: Sort::Param(i),
+                    span,
+                }) = scope.get(&name.name)
+                    && span == name.span
+                    && scope.is_real_param(i)
+                {
+                    c.reals.push(RealParam {
+                        name: name.name.clone(),
+                        value: rexpr(value, scope, &slots)?,
+                    });
+                }
+            }
+            Stmt::Scalar { name, range } => c.scalars.push(Scalar {
+                name: name.name.clone(),
+                range: (
+                    end(&range.lo, scope, f64::NEG_INFINITY)?,
+                    end(&range.hi, scope, f64::INFINITY)?,
+                ),
+            }),
+            Stmt::Unknown(names, Some(d)) => {
+                let d = interval(d, scope, &slots)?;
+                for id in names {
+                    let i = unknown(id, scope)?;
+                    if let Some(slot) = c.unknown_domains.get_mut(i) {
+                        *slot = Some(d.clone());
+                    }
+                }
+            }
+            Stmt::Equation { domain, .. } => c.equation_domains.push(match domain {
+                Some(d) => Some(interval(d, scope, &slots)?),
+                None => None,
+            }),
+            Stmt::Relation {
+                unknown: u,
+                value,
+                domain,
+            } => {
+                let is_unknown = |n: &str| {
+                    matches!(
+                        scope.get(n),
+                        Some(Entry {
+                            sort: Sort::Unknown(_),
+                            ..
+                        })
+                    )
+                };
+                let (factor, other) = relation_form(value, is_unknown)
+                    .ok_or_else(|| internal(value.span, "a relation"))?;
+                c.relations.push(Relation {
+                    unknown: unknown(u, scope)?,
+                    coeff: match factor {
+                        Some(k) => rexpr(k, scope, &slots)?,
+                        None => RExpr::Const(num_traits::One::one()),
+                    },
+                    other: unknown(other, scope)?,
+                    domain: interval(domain, scope, &slots)?,
+                });
+            }
+            Stmt::Singular {
+                unknown: u,
+                at,
+                side,
+                body,
+            } => {
+                let term = coefficient_term(body);
+                let coefficient = term.as_ref().and_then(|(id, g)| match scope.get(&id.name) {
+                    Some(Entry {
+                        sort: Sort::Coefficient(k),
+                        span,
+                    }) if span == id.span => Some((k, g)),
+                    _ => None,
+                });
+                let kind = match coefficient {
+                    Some((k, g)) => SingularKind::Term {
+                        coefficient: k,
+                        func: rexpr(g, scope, &slots)?,
+                    },
+                    None => {
+                        let (_, exp) =
+                            weight_form(body).ok_or_else(|| internal(body.span, "a weight"))?;
+                        SingularKind::Weight {
+                            exponent: rexpr(exp, scope, &slots)?,
+                        }
+                    }
+                };
+                c.singulars.push(Singular {
+                    unknown: unknown(u, scope)?,
+                    at: rexpr(at, scope, &slots)?,
+                    side: *side,
+                    kind,
+                });
+            }
+            Stmt::Condition { lhs, rhs } => {
+                let k = match &lhs.kind {
+                    ExprKind::Name(id) => match scope.get(&id.name) {
+                        Some(Entry {
+                            sort: Sort::Coefficient(k),
+                            ..
+                        }) => k,
+                        _ => return Err(internal(lhs.span, "a condition")),
+                    },
+                    _ => return Err(internal(lhs.span, "a condition")),
+                };
+                c.conditions.push(Condition {
+                    coefficient: k,
+                    value: rexpr(rhs, scope, &slots)?,
+                });
+            }
+            _ => {}
+        }
+    }
+    if c.equation_domains.iter().all(Option::is_none) && !c.is_split() {
+        c.equation_domains.clear();
+    }
+    Ok(c)
+}

@@ -1,0 +1,317 @@
+//! The split-domain part of a lowered program (contact problems): where
+//! unknowns live and equations hold, relations substituted on
+//! subintervals, unknown scalars with their ranges, real parameters
+//! (expressions of parameters and scalars that are not exact rationals),
+//! declared singular behaviour of unknowns at points and the conditions
+//! that fix the scalars. Data and evaluation only; built by `lang::lower`,
+//! solved by `plan::contact`. It must not discretise anything.
+use num_rational::BigRational;
+use num_traits::ToPrimitive;
+
+/// A real expression of the real parameters, the scalars and `x`.
+#[derive(Clone, Debug, PartialEq)]
+pub enum RExpr {
+    /// An exact constant (rational parameters are substituted).
+    Const(BigRational),
+    /// π.
+    Pi,
+    /// The variable `x`.
+    X,
+    /// Slot `i` of the value vector ([`Contact::slots`]).
+    Var(usize),
+    /// `-a`
+    Neg(Box<RExpr>),
+    /// A binary operation.
+    Bin(RBin, Box<RExpr>, Box<RExpr>),
+    /// `f(a)`.
+    Call(RFunc, Box<RExpr>),
+}
+
+/// Binary operations of [`RExpr`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RBin {
+    /// `+`
+    Add,
+    /// `-`
+    Sub,
+    /// `*`
+    Mul,
+    /// `/`
+    Div,
+    /// `^` (real power)
+    Pow,
+}
+
+/// Elementary functions of [`RExpr`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RFunc {
+    /// √
+    Sqrt,
+    /// ln
+    Ln,
+    /// |·|
+    Abs,
+    /// exp
+    Exp,
+    /// arctan
+    Atan,
+    /// arccot, with values in (0, π) (`acot(0) = π/2`).
+    Acot,
+}
+
+impl RFunc {
+    /// The function with this source name.
+    pub fn from_name(name: &str) -> Option<RFunc> {
+        Some(match name {
+            "sqrt" => RFunc::Sqrt,
+            "ln" => RFunc::Ln,
+            "abs" => RFunc::Abs,
+            "exp" => RFunc::Exp,
+            "atan" => RFunc::Atan,
+            "acot" => RFunc::Acot,
+            _ => return None,
+        })
+    }
+
+    fn apply(self, v: f64) -> f64 {
+        match self {
+            RFunc::Sqrt => v.sqrt(),
+            RFunc::Ln => v.ln(),
+            RFunc::Abs => v.abs(),
+            RFunc::Exp => v.exp(),
+            RFunc::Atan => v.atan(),
+            RFunc::Acot => {
+                if v == 0.0 {
+                    std::f64::consts::FRAC_PI_2
+                } else if v > 0.0 {
+                    (1.0 / v).atan()
+                } else {
+                    std::f64::consts::PI + (1.0 / v).atan()
+                }
+            }
+        }
+    }
+}
+
+impl RExpr {
+    /// The value for slot values `vars` at `x` (IEEE semantics).
+    ///
+    /// ```
+    /// use lambdamat::system::contact::{RExpr, RFunc};
+    /// let e = RExpr::Call(RFunc::Acot, Box::new(RExpr::Var(0)));
+    /// assert!((e.eval(&[1.0], 0.0) - std::f64::consts::FRAC_PI_4).abs() < 1e-16);
+    /// ```
+    pub fn eval(&self, vars: &[f64], x: f64) -> f64 {
+        match self {
+            RExpr::Const(q) => q.to_f64().unwrap_or(f64::NAN),
+            RExpr::Pi => std::f64::consts::PI,
+            RExpr::X => x,
+            RExpr::Var(i) => vars.get(*i).copied().unwrap_or(f64::NAN),
+            RExpr::Neg(a) => -a.eval(vars, x),
+            RExpr::Bin(op, a, b) => {
+                let (a, b) = (a.eval(vars, x), b.eval(vars, x));
+                match op {
+                    RBin::Add => a + b,
+                    RBin::Sub => a - b,
+                    RBin::Mul => a * b,
+                    RBin::Div => a / b,
+                    RBin::Pow => {
+                        if b.fract() == 0.0 && b.abs() <= 64.0 {
+                            a.powi(b as i32)
+                        } else {
+                            a.powf(b)
+                        }
+                    }
+                }
+            }
+            RExpr::Call(f, a) => f.apply(a.eval(vars, x)),
+        }
+    }
+
+    /// Whether `x` occurs.
+    pub fn uses_x(&self) -> bool {
+        match self {
+            RExpr::X => true,
+            RExpr::Const(_) | RExpr::Pi | RExpr::Var(_) => false,
+            RExpr::Neg(a) | RExpr::Call(_, a) => a.uses_x(),
+            RExpr::Bin(_, a, b) => a.uses_x() || b.uses_x(),
+        }
+    }
+}
+
+/// An interval with expression ends.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Interval {
+    /// Left end.
+    pub lo: RExpr,
+    /// Right end.
+    pub hi: RExpr,
+    /// `[` (true) or `(`.
+    pub lo_closed: bool,
+    /// `]` (true) or `)`.
+    pub hi_closed: bool,
+}
+
+impl Interval {
+    /// The ends for slot values `vars`.
+    pub fn eval(&self, vars: &[f64]) -> (f64, f64) {
+        (self.lo.eval(vars, 0.0), self.hi.eval(vars, 0.0))
+    }
+}
+
+/// `unknown = coeff · other` on `domain`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Relation {
+    /// Index of the unknown that is substituted.
+    pub unknown: usize,
+    /// The constant factor.
+    pub coeff: RExpr,
+    /// Index of the unknown it is expressed by.
+    pub other: usize,
+    /// Where it holds.
+    pub domain: Interval,
+}
+
+/// An unknown scalar.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Scalar {
+    /// Its name.
+    pub name: String,
+    /// The range searched (ends may be infinite).
+    pub range: (f64, f64),
+}
+
+/// What is declared singular about an unknown at a point.
+#[derive(Clone, Debug, PartialEq)]
+pub enum SingularKind {
+    /// `(P - x)^e` or `(x - P)^e`: the weight `|x - P|^e` is factored out.
+    Weight {
+        /// The exponent `e`.
+        exponent: RExpr,
+    },
+    /// `B * g(x)`: an exact singular term with a free coefficient.
+    Term {
+        /// Index of the coefficient in [`Contact::coefficients`].
+        coefficient: usize,
+        /// `g(x)`.
+        func: RExpr,
+    },
+}
+
+/// `singular u at P± ~ …`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Singular {
+    /// Index of the unknown.
+    pub unknown: usize,
+    /// The point.
+    pub at: RExpr,
+    /// `-1` below the point, `1` above, `0` not said.
+    pub side: i8,
+    /// The behaviour.
+    pub kind: SingularKind,
+}
+
+/// `condition coefficient = value`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Condition {
+    /// Index of the coefficient.
+    pub coefficient: usize,
+    /// Its required value.
+    pub value: RExpr,
+}
+
+/// A real parameter: a value computed numerically from other parameters
+/// and the scalars.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RealParam {
+    /// Its name.
+    pub name: String,
+    /// Its definition.
+    pub value: RExpr,
+}
+
+/// The split-domain declarations of a program (all empty for an ordinary
+/// system on one interval).
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct Contact {
+    /// Unknown scalars; slot `i` of the value vector for `i < scalars.len()`.
+    pub scalars: Vec<Scalar>,
+    /// Real parameters in definition order; slot `scalars.len() + i`.
+    pub reals: Vec<RealParam>,
+    /// Per unknown, the interval it lives on, if declared.
+    pub unknown_domains: Vec<Option<Interval>>,
+    /// Per equation, where it holds (everywhere when `None`).
+    pub equation_domains: Vec<Option<Interval>>,
+    /// Relations.
+    pub relations: Vec<Relation>,
+    /// Declared singular behaviour.
+    pub singulars: Vec<Singular>,
+    /// Names of the coefficients of exact singular terms.
+    pub coefficients: Vec<String>,
+    /// Conditions fixing the scalars.
+    pub conditions: Vec<Condition>,
+}
+
+impl Contact {
+    /// Whether the program uses any split-domain feature.
+    pub fn is_split(&self) -> bool {
+        !(self.scalars.is_empty()
+            && self.relations.is_empty()
+            && self.singulars.is_empty()
+            && self.conditions.is_empty()
+            && self.equation_domains.iter().all(Option::is_none))
+    }
+
+    /// Names of the value slots: scalars, then real parameters.
+    pub fn slots(&self) -> Vec<String> {
+        self.scalars
+            .iter()
+            .map(|s| s.name.clone())
+            .chain(self.reals.iter().map(|r| r.name.clone()))
+            .collect()
+    }
+
+    /// The slot values for the scalar values `scalars`: the scalars, then
+    /// every real parameter evaluated in order.
+    pub fn values(&self, scalars: &[f64]) -> Vec<f64> {
+        let mut v: Vec<f64> = scalars.to_vec();
+        v.resize(self.scalars.len(), f64::NAN);
+        for r in &self.reals {
+            let x = r.value.eval(&v, 0.0);
+            v.push(x);
+        }
+        v
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn acot_branch_and_reals_in_order() {
+        let acot = |v: f64| {
+            RExpr::Call(
+                RFunc::Acot,
+                Box::new(RExpr::Const(BigRational::from_float(v).unwrap_or_default())),
+            )
+            .eval(&[], 0.0)
+        };
+        assert!((acot(0.0) - std::f64::consts::FRAC_PI_2).abs() < 1e-16);
+        assert!((acot(-1.0) - 0.75 * std::f64::consts::PI).abs() < 1e-15);
+        let c = Contact {
+            scalars: vec![Scalar {
+                name: "mu".into(),
+                range: (0.0, f64::INFINITY),
+            }],
+            reals: vec![RealParam {
+                name: "a".into(),
+                value: RExpr::Bin(RBin::Mul, Box::new(RExpr::Var(0)), Box::new(RExpr::Pi)),
+            }],
+            ..Contact::default()
+        };
+        assert_eq!(c.slots(), ["mu", "a"]);
+        let v = c.values(&[2.0]);
+        assert!((v[1] - 2.0 * std::f64::consts::PI).abs() < 1e-15);
+    }
+}
