@@ -11,6 +11,7 @@
 //! * [`reduce`]: the `reduce` command and the `solve for` part of `run`;
 //! * [`run`]: the `run` command (everything a file asks for);
 //! * [`solve`]: the `solve` command (numerical solution of the file's system);
+//! * [`split`]: the report of a split-domain (contact) problem;
 //! * [`codegen`]: the `codegen` command (a Rust solver for the file's system).
 
 pub mod codegen;
@@ -22,6 +23,7 @@ pub mod render;
 pub mod run;
 pub mod smith;
 pub mod solve;
+pub mod split;
 
 use clap::{Args, Parser, Subcommand};
 use error::CliError;

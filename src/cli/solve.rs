@@ -17,6 +17,9 @@ use crate::plan::{CompiledSystem, Method, PlanError, SolveOptions, SolveReport, 
 /// `lambdamat solve FILE …`.
 pub fn solve_command(a: &SolveArgs, w: &mut dyn Write) -> Result<(), CliError> {
     let prog = load(&a.file)?;
+    if prog.contact.is_split() {
+        return super::split::solve_split_and_report(&prog, &a.flags, w);
+    }
     let sys = CompiledSystem::from_program(&prog, a.unknown.as_deref())?;
     solve_and_report(&sys, &a.flags, w)
 }

@@ -10,6 +10,7 @@
 //!   multipliers, identity) with kernels as closures;
 //! * [`assemble`]: collocation matrices of operators;
 //! * [`lu`]: blocked LU with partial pivoting (and transposed solves);
+//! * [`roots`]: bracketing, Brent and warm-started secant iterations;
 //! * [`solve`]: dense solves that refuse singular or ill-conditioned
 //!   systems;
 //! * [`elimination`]: coupled, ordered and commutative solves of 2×2
@@ -28,6 +29,7 @@ pub mod lu;
 pub mod mesh;
 pub mod operator;
 pub mod product;
+pub mod roots;
 pub mod solve;
 
 pub use assemble::Assembler;

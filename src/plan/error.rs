@@ -31,6 +31,15 @@ pub enum PlanError {
     },
 }
 
+impl From<NumericError> for PlanError {
+    fn from(source: NumericError) -> PlanError {
+        PlanError::Numeric {
+            context: "root finding".into(),
+            source,
+        }
+    }
+}
+
 impl PlanError {
     /// Wraps a numeric error with what was being computed.
     pub fn numeric(context: impl Into<String>) -> impl FnOnce(NumericError) -> PlanError {

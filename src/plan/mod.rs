@@ -13,7 +13,9 @@
 //! * [`operators`]: operator definitions → numeric operators;
 //! * [`discrete`]: one discretisation level (mesh, bases, matrices);
 //! * [`methods`]: coupled, ordered and commutative solves, commutator defects;
-//! * [`refine`]: the refinement ladder, error estimates and outputs.
+//! * [`refine`]: the refinement ladder, error estimates and outputs;
+//! * [`split`]: one discretisation of a split-domain (contact) problem;
+//! * [`split_solve`]: its scalar root solve and refinement ladder.
 
 pub mod compile;
 pub mod compiled;
@@ -22,8 +24,11 @@ pub mod error;
 pub mod methods;
 pub mod operators;
 pub mod refine;
+pub mod split;
+pub mod split_solve;
 
 pub use compiled::CompiledSystem;
 pub use error::PlanError;
 pub use methods::Method;
 pub use refine::{Defect, SolveOptions, SolveReport, UnknownValues, solve_program, solve_system};
+pub use split_solve::{SplitOptions, SplitReport, solve_split};

@@ -1,0 +1,111 @@
+//! The report of a split-domain (contact) problem for `lambdamat solve`:
+//! scalars, outputs and singular coefficients, each with its error
+//! estimate, as text or one JSON object (`"scalars": {"c": …}` beside
+//! `"outputs"`). An answer that did not reach its tolerance is printed and
+//! then refused with an error (non-zero exit). It does no numerics itself.
+use std::io::Write;
+
+use serde_json::{Map, Value, json};
+
+use super::SolveFlags;
+use super::error::CliError;
+use crate::numeric::NumericError;
+use crate::plan::split_solve::Estimate;
+use crate::plan::{PlanError, SplitOptions, SplitReport, solve_split};
+use crate::system::Program;
+
+/// Solves `prog` and prints the report as `flags` ask.
+pub fn solve_split_and_report(
+    prog: &Program,
+    flags: &SolveFlags,
+    w: &mut dyn Write,
+) -> Result<(), CliError> {
+    let opts = SplitOptions {
+        tol: flags.tol,
+        max_level: flags.max_level.max(8),
+    };
+    let r = solve_split(prog, &opts)?;
+    if flags.json {
+        writeln!(
+            w,
+            "{}",
+            serde_json::to_string_pretty(&to_json(&r))
+                .map_err(|e| CliError::Invalid(e.to_string()))?
+        )?;
+    } else {
+        write_text(&r, w)?;
+    }
+    if !r.converged {
+        return Err(CliError::Plan(PlanError::Numeric {
+            context: "split-domain solve".into(),
+            source: NumericError::NoConvergence(format!(
+                "successive levels differ by {:.2e} > tol {:.1e} after {} levels",
+                r.error_estimate, r.tol, r.levels
+            )),
+        }));
+    }
+    Ok(())
+}
+
+fn values(list: &[Estimate]) -> Map<String, Value> {
+    list.iter()
+        .map(|e| (e.name.clone(), json!(e.value)))
+        .collect()
+}
+
+/// The JSON object: `scalars`, `outputs`, `coefficients` (name → value),
+/// `error_estimates` (name → estimate) and diagnostics.
+pub fn to_json(r: &SplitReport) -> Value {
+    let errors: Map<String, Value> = r
+        .scalars
+        .iter()
+        .chain(&r.outputs)
+        .chain(&r.coefficients)
+        .map(|e| (e.name.clone(), json!(e.error)))
+        .collect();
+    json!({
+        "method": "split-domain collocation",
+        "scalars": values(&r.scalars),
+        "outputs": values(&r.outputs),
+        "coefficients": values(&r.coefficients),
+        "error_estimates": errors,
+        "error_estimate": r.error_estimate,
+        "converged": r.converged,
+        "tol": r.tol,
+        "levels": r.levels,
+        "dim": r.dim,
+        "cond": r.cond,
+        "singular_exponents": r.singular_exponents,
+    })
+}
+
+/// The text report.
+pub fn write_text(r: &SplitReport, w: &mut dyn Write) -> Result<(), CliError> {
+    writeln!(w, "method: split-domain collocation")?;
+    writeln!(
+        w,
+        "level {}: {} coefficients, condition ≈ {:.2e}",
+        r.levels - 1,
+        r.dim,
+        r.cond
+    )?;
+    writeln!(
+        w,
+        "error estimate: {:.2e}{}",
+        r.error_estimate,
+        if r.converged { "" } else { " (not converged)" }
+    )?;
+    for (kind, list) in [
+        ("scalar", &r.scalars),
+        ("output", &r.outputs),
+        ("coefficient", &r.coefficients),
+    ] {
+        for e in list {
+            writeln!(w, "{kind} {} = {:.15} ± {:.1e}", e.name, e.value, e.error)?;
+        }
+    }
+    for (u, at, beta) in &r.singular_exponents {
+        writeln!(w, "singular term of {u} at {at}: measured exponent -{beta}")?;
+    }
+    Ok(())
+}

@@ -1,0 +1,794 @@
+//! One discretisation of a split-domain problem (a contact problem) at
+//! fixed values of its unknown scalars: the subintervals cut by every
+//! breakpoint (ends of `on` intervals, singular points), which unknown is
+//! free or substituted by a relation on each, one mesh graded toward every
+//! interior breakpoint from both sides and toward every declared singular
+//! point from its side, per unknown a weighted panel basis on the
+//! subintervals where it is free (weights from `singular … ~ (P - x)^e`),
+//! per exact singular term `B·g(x)` one extra unknown `B` with `g`
+//! represented on a basis weighted by its measured exponent, collocation of
+//! each equation at the nodes of the unknown it is paired with on each
+//! subinterval (in written order), and one extra collocation point per
+//! singular term at the point's side (the one-sided limit of the paired
+//! equation there). Owns this discretisation; root finding and the
+//! refinement ladder are `split_solve.rs`'s.
+//!
+//! The Hertz problem (`examples/hertz.lmx`) gets exactly the
+//! discretisation of the hand-written solver in `crate::hertz::system`.
+use std::f64::consts::PI;
+
+use nalgebra::{DMatrix, DVector};
+
+use super::compiled::{CompiledSystem, Fn1, OutputTerm};
+use super::error::PlanError;
+use crate::numeric::operator::Term as NTerm;
+use crate::numeric::solve::{CheckedLu, DEFAULT_MAX_COND};
+use crate::numeric::{
+    Assembler, Factor, Grading, Limits, Mesh, Operator, PanelBasis, Side, Singularity,
+};
+use crate::system::Program;
+use crate::system::contact::{Contact, SingularKind};
+
+/// Mesh and degree parameters of one refinement level.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SplitLevel {
+    /// Geometric layers toward each graded point (per side).
+    pub layers: usize,
+    /// Grading ratio.
+    pub sigma: f64,
+    /// Nodes on panels touching a graded point.
+    pub n_min: usize,
+    /// Extra nodes per layer away from it.
+    pub slope: f64,
+    /// Most nodes on a panel.
+    pub n_max: usize,
+}
+
+impl SplitLevel {
+    /// Level `k` of the ladder: two more layers and one more node at most
+    /// per level (the ladder measured on the Hertz problem: errors fall by
+    /// about 15 per level; at most 20 layers, the smallest panel stays
+    /// above ~1e-12 of its neighbourhood).
+    pub fn level(k: usize) -> SplitLevel {
+        SplitLevel {
+            layers: (6 + 2 * k).min(20),
+            sigma: 0.25,
+            n_min: 3,
+            slope: 0.75,
+            n_max: 7 + k,
+        }
+    }
+}
+
+/// The problem, compiled once: operators per equation and unknown.
+pub struct SplitProblem {
+    /// The compiled operator system (operators, right sides, outputs).
+    pub sys: CompiledSystem,
+    /// The split-domain declarations.
+    pub contact: Contact,
+    /// The unknowns' interval.
+    pub domain: (f64, f64),
+    /// `ops[e][j]`: the operator of equation `e` on unknown `j`.
+    ops: Vec<Vec<Option<Operator>>>,
+}
+
+/// How an unknown is represented on one subinterval.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Status {
+    Free,
+    Related { coeff: f64, other: usize },
+}
+
+/// An exact singular term `B·g(x)` as discretised.
+pub struct SingularTerm {
+    /// The unknown it belongs to.
+    pub unknown: usize,
+    /// Index of its coefficient.
+    pub coefficient: usize,
+    /// The point and side (`-1` below, `1` above).
+    pub at: f64,
+    /// Side.
+    pub side: i8,
+    /// The measured exponent `β` of `|x - at|^(-β)`.
+    pub beta: f64,
+    /// Basis with the weight `|x - at|^(-β)` on the term's support.
+    pub basis: PanelBasis,
+    /// `g` on that basis.
+    pub phi: Vec<f64>,
+}
+
+/// A discrete solution at fixed scalars.
+pub struct Discrete {
+    /// The slot values (scalars, then real parameters).
+    pub vars: Vec<f64>,
+    /// Subinterval ends.
+    pub breaks: Vec<f64>,
+    /// Per unknown, its basis on the subintervals where it is free.
+    pub bases: Vec<Option<PanelBasis>>,
+    status: Vec<Vec<Status>>,
+    /// The exact singular terms.
+    pub terms: Vec<SingularTerm>,
+    offsets: Vec<usize>,
+    /// All coefficients.
+    pub solution: DVector<f64>,
+    /// Residual of each condition (zero at the solution of the scalars).
+    pub residuals: Vec<f64>,
+    /// Condition estimate.
+    pub cond: f64,
+}
+
+fn invalid(s: String) -> PlanError {
+    PlanError::Invalid(s)
+}
+
+fn num(context: &str) -> impl FnOnce(crate::numeric::NumericError) -> PlanError {
+    PlanError::numeric(context.to_string())
+}
+
+impl SplitProblem {
+    /// Compiles `prog` (which must have split-domain declarations).
+    pub fn new(prog: &Program) -> Result<SplitProblem, PlanError> {
+        let sys = CompiledSystem::from_program(prog, None)?;
+        let contact = prog.contact.clone();
+        let nan = vec![f64::NAN; contact.scalars.len()];
+        let vars = contact.values(&nan);
+        let domain = match contact.unknown_domains.first().cloned().flatten() {
+            Some(d) => {
+                if contact
+                    .unknown_domains
+                    .iter()
+                    .any(|o| o.as_ref() != Some(&d))
+                {
+                    return Err(invalid(
+                        "all unknowns must live on the same interval (`unknown p, q on [0, 1]`)"
+                            .into(),
+                    ));
+                }
+                d.eval(&vars)
+            }
+            None => sys.domain,
+        };
+        if !(domain.0.is_finite() && domain.1.is_finite() && domain.0 < domain.1) {
+            return Err(invalid(format!(
+                "the unknowns' interval [{}, {}] must have constant finite ends",
+                domain.0, domain.1
+            )));
+        }
+        let n = sys.unknowns.len();
+        let mut ops = Vec::new();
+        for eq in &sys.equations {
+            let mut row = Vec::with_capacity(n);
+            for p in &eq.lhs {
+                let mut op: Option<Operator> = None;
+                for (mono, c) in p.terms() {
+                    let c = super::compile::rational(c);
+                    let deg: u32 = mono.iter().sum();
+                    let piece = match deg {
+                        0 => Operator::identity().scaled(c),
+                        1 => {
+                            let s = mono.iter().position(|&e| e == 1).unwrap_or(0);
+                            sys.operators
+                                .get(s)
+                                .cloned()
+                                .flatten()
+                                .ok_or_else(|| invalid(format!("operator #{s} has no definition")))?
+                                .scaled(c)
+                        }
+                        _ => {
+                            return Err(PlanError::Unsupported {
+                                operator: mono
+                                    .iter()
+                                    .enumerate()
+                                    .filter(|(_, e)| **e > 0)
+                                    .map(|(i, _)| sys.symbols[i].clone())
+                                    .collect::<Vec<_>>()
+                                    .join("*"),
+                                reason: "products of operators in a split-domain problem are not supported yet".into(),
+                            });
+                        }
+                    };
+                    op = Some(match op {
+                        Some(o) => o + piece,
+                        None => piece,
+                    });
+                }
+                row.push(op);
+            }
+            ops.push(row);
+        }
+        if contact.conditions.len() != contact.scalars.len() {
+            return Err(invalid(format!(
+                "{} conditions for {} unknown scalars: each scalar needs one condition",
+                contact.conditions.len(),
+                contact.scalars.len()
+            )));
+        }
+        Ok(SplitProblem {
+            sys,
+            contact,
+            domain,
+            ops,
+        })
+    }
+
+    /// Solves the closed problem at scalar values `scalars` on level `lvl`.
+    pub fn discretise(&self, scalars: &[f64], lvl: &SplitLevel) -> Result<Discrete, PlanError> {
+        let c = &self.contact;
+        let vars = c.values(scalars);
+        let (a, b) = self.domain;
+        let nu = self.sys.unknowns.len();
+        // Breakpoints and graded points.
+        let mut pts = vec![a, b];
+        let mut gradings = Vec::new();
+        let inside = |z: f64| z > a && z < b;
+        let add_break = |z: f64, what: &str, pts: &mut Vec<f64>| -> Result<(), PlanError> {
+            if !z.is_finite() || z < a || z > b {
+                return Err(invalid(format!(
+                    "{what} = {z} is outside the unknowns' interval [{a}, {b}]"
+                )));
+            }
+            pts.push(z);
+            Ok(())
+        };
+        for d in c.equation_domains.iter().flatten() {
+            let (lo, hi) = d.eval(&vars);
+            add_break(lo, "an equation's interval end", &mut pts)?;
+            add_break(hi, "an equation's interval end", &mut pts)?;
+        }
+        for r in &c.relations {
+            let (lo, hi) = r.domain.eval(&vars);
+            add_break(lo, "a relation's interval end", &mut pts)?;
+            add_break(hi, "a relation's interval end", &mut pts)?;
+        }
+        for s in &c.singulars {
+            let z = s.at.eval(&vars, 0.0);
+            add_break(z, "a singular point", &mut pts)?;
+            let side = match s.side {
+                -1 => Side::Left,
+                1 => Side::Right,
+                _ if z == b => Side::Left,
+                _ if z == a => Side::Right,
+                _ => Side::Both,
+            };
+            gradings.push(Grading {
+                at: z,
+                side,
+                layers: lvl.layers,
+            });
+        }
+        pts.sort_by(f64::total_cmp);
+        pts.dedup();
+        for &z in pts.iter().filter(|&&z| inside(z)) {
+            gradings.push(Grading {
+                at: z,
+                side: Side::Both,
+                layers: lvl.layers,
+            });
+        }
+        let breaks = pts;
+        let npieces = breaks.len() - 1;
+        let mid = |k: usize| 0.5 * (breaks[k] + breaks[k + 1]);
+        let holds = |d: &crate::system::contact::Interval, m: f64| {
+            let (lo, hi) = d.eval(&vars);
+            lo < m && m < hi
+        };
+        // Status of every unknown on every piece.
+        let mut status = vec![vec![Status::Free; npieces]; nu];
+        for r in &c.relations {
+            let coeff = r.coeff.eval(&vars, 0.0);
+            if !coeff.is_finite() {
+                return Err(invalid(format!("a relation's factor is {coeff}")));
+            }
+            for (k, st) in status[r.unknown].iter_mut().enumerate() {
+                if holds(&r.domain, mid(k)) {
+                    *st = Status::Related {
+                        coeff,
+                        other: r.other,
+                    };
+                }
+            }
+        }
+        // The mesh.
+        let mesh = Mesh::graded(a, b, &gradings, lvl.sigma).map_err(num("mesh"))?;
+        let counts: Vec<usize> = mesh
+            .levels
+            .iter()
+            .map(|&l| {
+                ((lvl.n_min as f64 + lvl.slope * l as f64).round() as usize).clamp(1, lvl.n_max)
+            })
+            .collect();
+        let sub_mesh = |lo: f64, hi: f64| -> Result<(Mesh, Vec<usize>), PlanError> {
+            let i0 = mesh.breaks.iter().position(|&z| z == lo);
+            let i1 = mesh.breaks.iter().position(|&z| z == hi);
+            match (i0, i1) {
+                (Some(i0), Some(i1)) if i0 < i1 => Ok((
+                    Mesh {
+                        breaks: mesh.breaks[i0..=i1].to_vec(),
+                        levels: mesh.levels[i0..i1].to_vec(),
+                    },
+                    counts[i0..i1].to_vec(),
+                )),
+                _ => Err(invalid(format!(
+                    "[{lo}, {hi}] is not a union of mesh panels"
+                ))),
+            }
+        };
+        // Bases on the free support of every unknown.
+        let mut supports: Vec<Option<(f64, f64)>> = vec![None; nu];
+        let mut bases: Vec<Option<PanelBasis>> = vec![None; nu];
+        for u in 0..nu {
+            let free: Vec<usize> = (0..npieces)
+                .filter(|&k| status[u][k] == Status::Free)
+                .collect();
+            let (Some(&k0), Some(&k1)) = (free.first(), free.last()) else {
+                continue;
+            };
+            if free.len() != k1 - k0 + 1 {
+                return Err(invalid(format!(
+                    "unknown {} must be free on one interval (it is substituted between pieces where it is free)",
+                    self.sys.unknowns[u]
+                )));
+            }
+            let (lo, hi) = (breaks[k0], breaks[k1 + 1]);
+            let (m, cnt) = sub_mesh(lo, hi)?;
+            let mut weight = Vec::new();
+            for s in c.singulars.iter().filter(|s| s.unknown == u) {
+                if let SingularKind::Weight { exponent } = &s.kind {
+                    let at = s.at.eval(&vars, 0.0);
+                    let e = exponent.eval(&vars, 0.0);
+                    if !(e.is_finite() && e > -1.0) {
+                        return Err(invalid(format!(
+                            "the weight exponent of {} at {at} is {e}: it must be a number > -1",
+                            self.sys.unknowns[u]
+                        )));
+                    }
+                    if at >= lo && at <= hi && e != 0.0 {
+                        weight.push(Factor { at, exponent: e });
+                    }
+                }
+            }
+            bases[u] = Some(PanelBasis::new(&m, &cnt, weight).map_err(num("basis"))?);
+            supports[u] = Some((lo, hi));
+        }
+        // Exact singular terms.
+        let mut terms = Vec::new();
+        for s in &c.singulars {
+            let SingularKind::Term { coefficient, func } = &s.kind else {
+                continue;
+            };
+            let u = s.unknown;
+            let name = &self.sys.unknowns[u];
+            let at = s.at.eval(&vars, 0.0);
+            let Some((lo, hi)) = supports[u] else {
+                return Err(invalid(format!(
+                    "{name} is nowhere free: it cannot carry a singular term"
+                )));
+            };
+            let side = match s.side {
+                0 if at == hi => -1,
+                0 if at == lo => 1,
+                0 => {
+                    return Err(invalid(format!(
+                        "say on which side of {at} the singular term of {name} lives (`at c-` or `at c+`)"
+                    )));
+                }
+                sd => sd,
+            };
+            let (s0, s1) = if side < 0 { (lo, at) } else { (at, hi) };
+            if !(s0 < s1) {
+                return Err(invalid(format!(
+                    "the singular term of {name} at {at} has no room on that side of the point in [{lo}, {hi}]"
+                )));
+            }
+            let g = |x: f64| func.eval(&vars, x);
+            let beta = singular_exponent(&g, at, side, s1 - s0).ok_or_else(|| {
+                invalid(format!(
+                    "the singular term of {name} at {at}: cannot measure a power singularity |x - {at}|^(-β) with 0 < β < 1 (β must be a fraction with denominator ≤ 12)"
+                ))
+            })?;
+            let (m, cnt) = sub_mesh(s0, s1)?;
+            let basis = PanelBasis::new(
+                &m,
+                &cnt,
+                vec![Factor {
+                    at,
+                    exponent: -beta,
+                }],
+            )
+            .map_err(num("singular basis"))?;
+            let phi = basis.interpolate(g);
+            if phi.iter().any(|v| !v.is_finite()) {
+                return Err(invalid(format!(
+                    "the singular term of {name} is not finite on its support"
+                )));
+            }
+            terms.push(SingularTerm {
+                unknown: u,
+                coefficient: *coefficient,
+                at,
+                side,
+                beta,
+                basis,
+                phi,
+            });
+        }
+        // Collocation: pair equations with free unknowns on every piece.
+        let neq = self.sys.equations.len();
+        let mut points: Vec<Vec<f64>> = vec![Vec::new(); neq];
+        let mut paired: Vec<Vec<Option<usize>>> = vec![vec![None; npieces]; nu];
+        for k in 0..npieces {
+            let m = mid(k);
+            let eqs: Vec<usize> = (0..neq)
+                .filter(
+                    |&e| match c.equation_domains.get(e).and_then(Option::as_ref) {
+                        Some(d) => holds(d, m),
+                        None => true,
+                    },
+                )
+                .collect();
+            let free: Vec<usize> = (0..nu).filter(|&u| status[u][k] == Status::Free).collect();
+            if eqs.len() != free.len() {
+                return Err(invalid(format!(
+                    "on ({}, {}) {} equations hold for {} free unknowns: they must match",
+                    breaks[k],
+                    breaks[k + 1],
+                    eqs.len(),
+                    free.len()
+                )));
+            }
+            for (&e, &u) in eqs.iter().zip(&free) {
+                paired[u][k] = Some(e);
+                if let Some(basis) = &bases[u] {
+                    for p in basis
+                        .panels
+                        .iter()
+                        .filter(|p| p.a >= breaks[k] && p.b <= breaks[k + 1])
+                    {
+                        points[e].extend(p.nodes.iter().copied());
+                    }
+                }
+            }
+        }
+        // Columns.
+        let mut offsets = Vec::with_capacity(nu + 1);
+        let mut dim = 0;
+        for b in &bases {
+            offsets.push(dim);
+            dim += b.as_ref().map_or(0, PanelBasis::dim);
+        }
+        offsets.push(dim);
+        let nt = terms.len();
+        let ncols = dim + nt;
+        let nrows: usize = points.iter().map(Vec::len).sum::<usize>() + nt;
+        if nrows != ncols {
+            return Err(invalid(format!(
+                "the discretisation has {nrows} collocation conditions for {ncols} coefficients"
+            )));
+        }
+        let asms: Vec<Option<Assembler>> = bases
+            .iter()
+            .map(|b| b.as_ref().map(Assembler::new).transpose())
+            .collect::<Result<_, _>>()
+            .map_err(num("assembly"))?;
+        let term_asms: Vec<Assembler> = terms
+            .iter()
+            .map(|t| Assembler::new(&t.basis))
+            .collect::<Result<_, _>>()
+            .map_err(num("assembly"))?;
+        let mut mat = DMatrix::zeros(nrows, ncols);
+        let mut rhs = DVector::zeros(nrows);
+        let mut r0 = 0;
+        for e in 0..neq {
+            let xs = &points[e];
+            if xs.is_empty() {
+                continue;
+            }
+            let f = &self.sys.equations[e].rhs;
+            for (i, &x) in xs.iter().enumerate() {
+                rhs[r0 + i] = f(x);
+            }
+            for j in 0..nu {
+                let Some(op) = &self.ops[e][j] else { continue };
+                if let (Some(asm), Some(sup)) = (&asms[j], supports[j]) {
+                    let blk = asm.matrix_on(op, xs, sup).map_err(num("assembly"))?;
+                    let mut v = mat.view_mut((r0, offsets[j]), (xs.len(), blk.ncols()));
+                    v += &blk;
+                }
+                for k in 0..npieces {
+                    if let Status::Related { coeff, other } = status[j][k] {
+                        let win = (breaks[k], breaks[k + 1]);
+                        let asm = self.related_basis(&asms, &status, other, k, j)?;
+                        let blk = asm.matrix_on(op, xs, win).map_err(num("assembly"))? * coeff;
+                        let mut v = mat.view_mut((r0, offsets[other]), (xs.len(), blk.ncols()));
+                        v += &blk;
+                    }
+                }
+                for (ti, t) in terms.iter().enumerate().filter(|(_, t)| t.unknown == j) {
+                    let sup = t.basis.support();
+                    let blk = term_asms[ti]
+                        .matrix_on(op, xs, sup)
+                        .map_err(num("assembly"))?;
+                    let col = blk * DVector::from_column_slice(&t.phi);
+                    let mut v = mat.view_mut((r0, dim + ti), (xs.len(), 1));
+                    v += &col;
+                }
+            }
+            r0 += xs.len();
+        }
+        // One-sided limits of the paired equations at the singular points.
+        for (ti, t) in terms.iter().enumerate() {
+            let row = r0 + ti;
+            let k = if t.side < 0 {
+                breaks
+                    .iter()
+                    .position(|&z| z == t.at)
+                    .and_then(|i| i.checked_sub(1))
+            } else {
+                breaks
+                    .iter()
+                    .position(|&z| z == t.at)
+                    .filter(|&i| i < npieces)
+            }
+            .ok_or_else(|| invalid(format!("no subinterval beside the singular point {}", t.at)))?;
+            let e = paired[t.unknown][k].ok_or_else(|| {
+                invalid(format!(
+                    "no equation holds beside the singular point {}",
+                    t.at
+                ))
+            })?;
+            rhs[row] = (self.sys.equations[e].rhs)(t.at);
+            for j in 0..nu {
+                let Some(op) = &self.ops[e][j] else { continue };
+                if let (Some(asm), Some(sup)) = (&asms[j], supports[j]) {
+                    let mut r = vec![0.0; asm.basis().dim()];
+                    asm.row_into(op, t.at, sup, &mut r)
+                        .map_err(num("assembly"))?;
+                    for (q, v) in r.iter().enumerate() {
+                        mat[(row, offsets[j] + q)] += v;
+                    }
+                }
+                for kk in 0..npieces {
+                    if let Status::Related { coeff, other } = status[j][kk] {
+                        let asm = self.related_basis(&asms, &status, other, kk, j)?;
+                        let mut r = vec![0.0; asm.basis().dim()];
+                        asm.row_into(op, t.at, (breaks[kk], breaks[kk + 1]), &mut r)
+                            .map_err(num("assembly"))?;
+                        for (q, v) in r.iter().enumerate() {
+                            mat[(row, offsets[other] + q)] += coeff * v;
+                        }
+                    }
+                }
+                for (tj, u) in terms.iter().enumerate().filter(|(_, u)| u.unknown == j) {
+                    let v = if tj == ti {
+                        one_sided_limit(op, t, &term_asms[tj])?
+                    } else {
+                        let mut r = vec![0.0; u.basis.dim()];
+                        term_asms[tj]
+                            .row_into(op, t.at, u.basis.support(), &mut r)
+                            .map_err(num("assembly"))?;
+                        r.iter().zip(&u.phi).map(|(a, b)| a * b).sum()
+                    };
+                    mat[(row, dim + tj)] += v;
+                }
+            }
+        }
+        let lu = CheckedLu::new(&mat, DEFAULT_MAX_COND).map_err(num("split-domain system"))?;
+        let solution = lu.solve(&rhs).map_err(num("split-domain system"))?;
+        let residuals = c
+            .conditions
+            .iter()
+            .map(|cond| {
+                let k = terms
+                    .iter()
+                    .position(|t| t.coefficient == cond.coefficient)
+                    .ok_or_else(|| {
+                        invalid("a condition's coefficient has no singular term".into())
+                    })?;
+                Ok(solution[dim + k] - cond.value.eval(&vars, 0.0))
+            })
+            .collect::<Result<Vec<f64>, PlanError>>()?;
+        Ok(Discrete {
+            vars,
+            breaks,
+            bases,
+            status,
+            terms,
+            offsets,
+            solution,
+            residuals,
+            cond: lu.cond(),
+        })
+    }
+
+    /// The assembler of `other` on piece `k` where unknown `j` is
+    /// substituted by it.
+    fn related_basis<'a>(
+        &self,
+        asms: &'a [Option<Assembler<'a>>],
+        status: &[Vec<Status>],
+        other: usize,
+        k: usize,
+        j: usize,
+    ) -> Result<&'a Assembler<'a>, PlanError> {
+        match (&asms[other], status[other][k]) {
+            (Some(a), Status::Free) => Ok(a),
+            _ => Err(invalid(format!(
+                "{} is substituted by {} where {} is not free",
+                self.sys.unknowns[j], self.sys.unknowns[other], self.sys.unknowns[other]
+            ))),
+        }
+    }
+
+    /// The value of output `o` for a discrete solution.
+    pub fn output(&self, d: &Discrete, o: usize) -> Result<f64, PlanError> {
+        let mut total = 0.0;
+        for t in &self.sys.outputs[o].terms {
+            match t {
+                OutputTerm::Constant(c) => total += c,
+                OutputTerm::Integral {
+                    coeff,
+                    lower,
+                    upper,
+                    weight,
+                    unknown,
+                } => total += coeff * self.integral(d, *unknown, *lower, *upper, weight)?,
+            }
+        }
+        Ok(total)
+    }
+
+    /// `∫_lower^upper w(x) u(x) dx` for unknown `u` of `d`.
+    fn integral(
+        &self,
+        d: &Discrete,
+        u: usize,
+        lower: f64,
+        upper: f64,
+        w: &Fn1,
+    ) -> Result<f64, PlanError> {
+        let (lo, hi, sign) = if lower <= upper {
+            (lower, upper, 1.0)
+        } else {
+            (upper, lower, -1.0)
+        };
+        let piece = |basis: &PanelBasis, coef: &[f64], a: f64, b: f64| -> Result<f64, PlanError> {
+            let (a, b) = (a.max(lo), b.min(hi));
+            if !(a < b) {
+                return Ok(0.0);
+            }
+            let w = w.clone();
+            let asm = Assembler::new(basis).map_err(num("output"))?;
+            let row = asm.functional(move |t| w(t), a, b).map_err(num("output"))?;
+            Ok(row.iter().zip(coef).map(|(x, y)| x * y).sum())
+        };
+        let mut total = 0.0;
+        if let Some(b) = &d.bases[u] {
+            let (a, bb) = b.support();
+            total += piece(b, self.coefs(d, u), a, bb)?;
+        }
+        for k in 0..d.breaks.len() - 1 {
+            if let Status::Related { coeff, other } = d.status[u][k]
+                && let Some(b) = &d.bases[other]
+            {
+                total += coeff * piece(b, self.coefs(d, other), d.breaks[k], d.breaks[k + 1])?;
+            }
+        }
+        let dim = d.offsets[d.offsets.len() - 1];
+        for (ti, t) in d.terms.iter().enumerate().filter(|(_, t)| t.unknown == u) {
+            let (a, b) = t.basis.support();
+            total += d.solution[dim + ti] * piece(&t.basis, &t.phi, a, b)?;
+        }
+        Ok(sign * total)
+    }
+
+    fn coefs<'a>(&self, d: &'a Discrete, u: usize) -> &'a [f64] {
+        &d.solution.as_slice()[d.offsets[u]..d.offsets[u + 1]]
+    }
+
+    /// The coefficient of singular term `k` (in declaration order of the
+    /// coefficients), if it has a term.
+    pub fn coefficient(&self, d: &Discrete, k: usize) -> Option<f64> {
+        let dim = d.offsets[d.offsets.len() - 1];
+        d.terms
+            .iter()
+            .position(|t| t.coefficient == k)
+            .map(|i| d.solution[dim + i])
+    }
+
+    /// Number of coefficients of `d`.
+    pub fn size(d: &Discrete) -> usize {
+        d.solution.len()
+    }
+}
+
+/// The exponent `β` of `g(x) ~ |x - at|^(-β)` on the given side, measured
+/// from two points close to `at` and snapped to the nearest fraction with
+/// denominator at most 12 (`None` if none is within 1e-3 or `β ∉ (0, 1)`).
+fn singular_exponent(g: &dyn Fn(f64) -> f64, at: f64, side: i8, len: f64) -> Option<f64> {
+    let s = f64::from(side);
+    let h1 = 1e-7 * len;
+    let h2 = 2e-7 * len;
+    let (g1, g2) = (g(at + s * h1).abs(), g(at + s * h2).abs());
+    if !(g1.is_finite() && g2.is_finite() && g1 > 0.0 && g2 > 0.0) {
+        return None;
+    }
+    let beta = (g1 / g2).ln() / (h2 / h1).ln();
+    let mut best: Option<(f64, f64)> = None;
+    for den in 1..=12u32 {
+        let k = (beta * f64::from(den)).round();
+        let cand = k / f64::from(den);
+        let err = (beta - cand).abs();
+        if best.is_none_or(|(e, _)| err < e) {
+            best = Some((err, cand));
+        }
+    }
+    let (err, cand) = best?;
+    (err < 1e-3 && cand > 0.0 && cand < 1.0).then_some(cand)
+}
+
+/// The one-sided limit at `t.at` of `op` applied to the singular term
+/// `g` of `t`: for an Abel term whose range runs into the point from the
+/// term's side, `a(P,P)·φ(P)·π/√(2|P|)` when `β = 1/2` (the integral
+/// `∫ (s-x)^(-1/2)(P-s)^(-1/2) ds = π`) and `0` when `β < 1/2`; smooth
+/// terms are evaluated by product integration; anything that diverges is
+/// refused.
+fn one_sided_limit(op: &Operator, t: &SingularTerm, asm: &Assembler) -> Result<f64, PlanError> {
+    let p = t.at;
+    let sup = t.basis.support();
+    // φ(P): the polynomial of the panel touching P, evaluated at P.
+    let panel = if t.side < 0 {
+        t.basis.panels.last()
+    } else {
+        t.basis.panels.first()
+    }
+    .ok_or_else(|| invalid("empty singular basis".into()))?;
+    let mut l = vec![0.0; panel.nodes.len()];
+    panel.lagrange(p, &mut l);
+    let phi_p: f64 = l
+        .iter()
+        .zip(&t.phi[panel.offset..panel.offset + l.len()])
+        .map(|(a, b)| a * b)
+        .sum();
+    let mut total = 0.0;
+    let diverges = || {
+        invalid(format!(
+            "an operator is unbounded on the singular term at {p} from its side: the extra collocation point cannot be used"
+        ))
+    };
+    for (c, term) in &op.terms {
+        match term {
+            NTerm::Multiply(_) => return Err(diverges()),
+            NTerm::Integral {
+                limits,
+                singularity: Singularity::AbelSqrt,
+                kernel,
+            } => {
+                // Does the range reach the point from the term's side
+                // without the diagonal merging into it?
+                let clean = matches!(
+                    (limits, t.side),
+                    (Limits::Upper { .. }, -1) | (Limits::Lower { .. }, 1)
+                );
+                if clean {
+                    if (t.beta - 0.5).abs() < 1e-12 {
+                        total += c * kernel(p, p) * phi_p * PI / (2.0 * p.abs()).sqrt();
+                    } else if t.beta > 0.5 {
+                        return Err(diverges());
+                    }
+                } else {
+                    return Err(diverges());
+                }
+            }
+            NTerm::Integral { .. } => {
+                let single = Operator {
+                    terms: vec![(*c, term.clone())],
+                };
+                let mut r = vec![0.0; t.basis.dim()];
+                asm.row_into(&single, p, sup, &mut r)
+                    .map_err(num("assembly"))?;
+                total += r.iter().zip(&t.phi).map(|(a, b)| a * b).sum::<f64>();
+            }
+        }
+    }
+    Ok(total)
+}
