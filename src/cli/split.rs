@@ -22,7 +22,7 @@ pub fn solve_split_and_report(
 ) -> Result<(), CliError> {
     let opts = SplitOptions {
         tol: flags.tol,
-        max_level: flags.max_level.max(8),
+        max_level: flags.max_level,
     };
     let r = solve_split(prog, &opts)?;
     if flags.json {
