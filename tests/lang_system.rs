@@ -406,8 +406,12 @@ fn division_by_zero_in_params_kernels_and_outputs() {
 }
 
 #[test]
-fn parameters_must_be_exact_and_defined_first() {
-    let all = summary("param a = b + 1\nparam b = 2\nparam c = pi\nparam d = sqrt(2)\n");
+fn parameters_must_be_defined_first_and_real_ones_stay_out_of_exact_places() {
+    // `pi` and `sqrt(2)` make real parameters (numerics only); using one
+    // where an exact rational is needed (a matrix entry) is an error.
+    let all = summary(
+        "param a = b + 1\nparam b = 2\nparam c = pi\nparam d = sqrt(2)\nvar x\nmatrix M = [d*x]\n",
+    );
     let got: Vec<_> = all
         .iter()
         .map(|(k, m, l, c)| (*k, m.as_str(), *l, *c))
@@ -423,15 +427,9 @@ fn parameters_must_be_exact_and_defined_first() {
             ),
             (
                 ErrorKind::WrongSort,
-                "a constant here must be an exact rational",
-                3,
-                11
-            ),
-            (
-                ErrorKind::WrongSort,
-                "a constant here must be an exact rational",
-                4,
-                11
+                "`d` is a real (not exactly rational) parameter, but an exact rational is needed here",
+                6,
+                13
             ),
         ]
     );

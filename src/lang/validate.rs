@@ -170,7 +170,7 @@ impl Validator {
                 let before = self.errors.len();
                 let val = self.constant(value);
                 let mut real = false;
-                if val.is_none() && self.errors.len() > before {
+                if val.is_none() && self.errors.len() > before && self.needs_real(value) {
                     let exact_errors = self.errors.split_off(before);
                     if self.real_expr(value, false) {
                         real = true;
@@ -488,10 +488,26 @@ impl Validator {
                 Some(Entry {
                     sort: Sort::Param(i),
                     ..
-                }) => Size {
-                    degree: 0,
-                    bits: self.scope.param_value(i).map_or(1, bits_of),
-                },
+                }) => {
+                    if self.scope.is_real_param(i) {
+                        self.err(
+                            LangError::new(
+                                ErrorKind::WrongSort,
+                                format!(
+                                    "`{}` is a real (not exactly rational) parameter, but an exact rational is needed here",
+                                    id.name
+                                ),
+                                id.span,
+                                "real parameter",
+                            )
+                            .with_help("the algebra takes exact parameters only"),
+                        );
+                    }
+                    Size {
+                        degree: 0,
+                        bits: self.scope.param_value(i).map_or(1, bits_of),
+                    }
+                }
                 Some(Entry {
                     sort: Sort::Unknown(_),
                     ..

@@ -179,6 +179,37 @@ impl Validator {
         }
     }
 
+    /// Whether `e` can only be real, not exactly rational: it uses `pi`, a
+    /// function, a power that is not an integer literal, a real parameter
+    /// or a scalar. (Other failures of exact evaluation, such as a division
+    /// by zero, stay errors.)
+    pub(super) fn needs_real(&self, e: &Expr) -> bool {
+        match &e.kind {
+            ExprKind::Pi | ExprKind::Call(..) => true,
+            ExprKind::Number(_) | ExprKind::Identity | ExprKind::Integral { .. } => false,
+            ExprKind::Name(id) => match self.scope.get(&id.name) {
+                Some(Entry {
+                    sort: Sort::Param(i),
+                    ..
+                }) => self.scope.is_real_param(i),
+                Some(Entry {
+                    sort: Sort::Scalar(_),
+                    ..
+                }) => true,
+                _ => false,
+            },
+            ExprKind::Neg(a) => self.needs_real(a),
+            ExprKind::Binary(BinOp::Pow, a, b) => {
+                let lit = match &b.kind {
+                    ExprKind::Neg(inner) => inner.as_ref(),
+                    _ => b.as_ref(),
+                };
+                !matches!(&lit.kind, ExprKind::Number(q) if q.is_integer()) || self.needs_real(a)
+            }
+            ExprKind::Binary(_, a, b) => self.needs_real(a) || self.needs_real(b),
+        }
+    }
+
     /// Checks an interval whose ends are real constants.
     pub(super) fn interval(&mut self, i: &Interval) {
         self.real_expr(&i.lo, false);

@@ -306,11 +306,16 @@ where
         (-3..4).map(|i| lo + 2f64.powi(i)).collect()
     };
     let mut pts: Vec<(f64, f64)> = Vec::new();
+    let mut first_err: Option<PlanError> = None;
     for &x in &grid {
-        if let Ok(v) = f(x)
-            && v.is_finite()
-        {
-            pts.push((x, v));
+        match f(x) {
+            Ok(v) if v.is_finite() => pts.push((x, v)),
+            Ok(_) => {}
+            // A fault of the input fails everywhere: report it at once.
+            Err(e) if e.is_input_error() => return Err(e),
+            Err(e) => {
+                first_err.get_or_insert(e);
+            }
         }
     }
     let changes: Vec<usize> = (1..pts.len())
@@ -334,6 +339,9 @@ where
         return Ok((a, fa, b, fb));
     }
     let (Some(&first), Some(&last)) = (pts.first(), pts.last()) else {
+        if let Some(e) = first_err {
+            return Err(e);
+        }
         return Err(PlanError::Numeric {
             context: "scalar root".into(),
             source: NumericError::NoConvergence(
