@@ -1,0 +1,47 @@
+//! The Hertz problem through the language (`examples/hertz.lmx`,
+//! `examples/hertz_given_c.lmx`, the split-domain solver) beside the
+//! hand-written solver, in the same run, at tol 1e-10. Short runs:
+//! `cargo bench --bench split -- --warm-up-time 1 --measurement-time 3`.
+use std::time::Duration;
+
+use criterion::{Criterion, criterion_group, criterion_main};
+use lambdamat::hertz::{HertzOptions, solve_given_c, solve_given_mu};
+use lambdamat::lang::parse_program_with;
+use lambdamat::lang::parser::parse_exact;
+use lambdamat::plan::{SplitOptions, solve_split};
+
+fn program(path: &str, sets: &[(&str, &str)]) -> lambdamat::lang::Program {
+    let src = std::fs::read_to_string(path).expect("example");
+    let sets: Vec<_> = sets
+        .iter()
+        .map(|(n, v)| (n.to_string(), parse_exact(v).expect("exact")))
+        .collect();
+    parse_program_with(&src, path, &sets).expect("valid")
+}
+
+fn split(c: &mut Criterion) {
+    let opts = SplitOptions::default();
+    let hopts = HertzOptions::default();
+    let given_mu = program("examples/hertz.lmx", &[("nu", "0.25"), ("mu", "0.1801")]);
+    let given_c = program("examples/hertz_given_c.lmx", &[("nu", "0"), ("c", "0.5")]);
+    let mut g = c.benchmark_group("split");
+    g.sample_size(10)
+        .warm_up_time(Duration::from_secs(1))
+        .measurement_time(Duration::from_secs(3));
+    g.bench_function("language (nu,mu)=(0.25,0.1801)", |b| {
+        b.iter(|| solve_split(&given_mu, &opts))
+    });
+    g.bench_function("built-in (nu,mu)=(0.25,0.1801)", |b| {
+        b.iter(|| solve_given_mu(0.25, 0.1801, &hopts))
+    });
+    g.bench_function("language (nu,c)=(0,0.5)", |b| {
+        b.iter(|| solve_split(&given_c, &opts))
+    });
+    g.bench_function("built-in (nu,c)=(0,0.5)", |b| {
+        b.iter(|| solve_given_c(0.0, 0.5, &hopts))
+    });
+    g.finish();
+}
+
+criterion_group!(benches, split);
+criterion_main!(benches);
