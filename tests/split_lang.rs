@@ -100,3 +100,24 @@ fn cli_reports_split_errors_with_exit_2() {
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("2 equations hold for 1 free unknowns"));
 }
+
+#[test]
+fn reduce_shows_each_subinterval() {
+    let v = common::cli::json(&["reduce", "examples/hertz_given_c.lmx"]);
+    let pieces = v["pieces"].as_array().expect("pieces");
+    assert_eq!(pieces.len(), 2);
+    assert_eq!(pieces[0]["interval"], "[0, 1/2)");
+    assert_eq!(pieces[1]["interval"], "[1/2, 1]");
+    assert_eq!(pieces[1]["substituted"][0], "q = mu*p");
+    // Stick zone: the seed's (3.3) as the eliminant, k4·E1 - k2·E2.
+    let stick = &pieces[0]["reduction"];
+    assert_eq!(stick["eliminant"]["lhs"], "k1*k4 - k2*k3");
+    // Slip zone: the seed's (2.4), (k1 + μ k2) p = 1, with μ a symbol.
+    let slip = &pieces[1]["reduction"];
+    assert_eq!(slip["eliminant"]["lhs"], "k1 + k2*mu");
+    assert!(pieces[1]["note"].as_str().expect("note").contains("(2.4)"));
+    // A rational μ is substituted exactly.
+    let t = common::cli::stdout(&["reduce", "examples/hertz.lmx", "--set", "mu=1/5"]);
+    assert!(t.contains("on [c, 1] with q = 1/5*p substituted"), "{t}");
+    assert!(t.contains("A = [ k1 + 1/5*k2 ]"), "{t}");
+}

@@ -16,9 +16,75 @@ use std::io::Write;
 /// `lambdamat reduce FILE [--for u] [--json] [--latex]`.
 pub fn reduce_command(a: &ReduceArgs, w: &mut dyn Write) -> Result<(), CliError> {
     let p = load(&a.file)?;
+    if p.contact.is_split() {
+        return reduce_split(&p, a, w);
+    }
     let u = choose_unknown(&p, a.unknown.as_deref())?;
     let r = reduce(&p, u)?;
     print_reduction(&r, &a.out, w)
+}
+
+/// `reduce` of a split-domain file: one reduction per subinterval (with the
+/// relations of that subinterval substituted), for the chosen unknown
+/// where it is free, else for the first free unknown.
+fn reduce_split(
+    p: &crate::system::Program,
+    a: &ReduceArgs,
+    w: &mut dyn Write,
+) -> Result<(), CliError> {
+    let u = choose_unknown(p, a.unknown.as_deref())?;
+    let target = &p.unknowns[u];
+    let pieces = crate::reduce::split::pieces(p).map_err(|e| CliError::Invalid(e.to_string()))?;
+    let mut json_pieces = Vec::new();
+    for (i, piece) in pieces.iter().enumerate() {
+        let q = &piece.program;
+        let v = q.unknowns.iter().position(|n| n == target).unwrap_or(0);
+        let r = reduce(q, v)?;
+        let subst = if piece.substituted.is_empty() {
+            String::new()
+        } else {
+            format!(" with {} substituted", piece.substituted.join(", "))
+        };
+        if a.out.json {
+            json_pieces.push(json!({
+                "interval": piece.label,
+                "substituted": piece.substituted,
+                "note": if piece.substituted.is_empty() { Value::Null } else { json!("the substitution holds on this piece only; operators integrating beyond it see the other pieces' unknowns, so the single equation is a model there (the seed's (2.4))") },
+                "reduction": to_json(&r),
+            }));
+        } else if a.out.latex {
+            writeln!(w, "% on {}{subst}", piece.label)?;
+            write!(w, "{}", latex(&r))?;
+        } else {
+            if i > 0 {
+                writeln!(w)?;
+            }
+            writeln!(
+                w,
+                "━━ on {}{subst}: {} equation(s) in {} ━━",
+                piece.label,
+                q.equations.len(),
+                q.unknowns.join(", ")
+            )?;
+            if !piece.substituted.is_empty() {
+                writeln!(
+                    w,
+                    "note: the substitution holds on {} only; operators integrating beyond it see the other pieces' unknowns, so this single equation is a model there (the seed's (2.4)); `solve` keeps the pieces coupled",
+                    piece.label
+                )?;
+            }
+            write!(w, "{}", text(&r))?;
+        }
+    }
+    if a.out.json {
+        writeln!(
+            w,
+            "{}",
+            serde_json::to_string_pretty(&json!({"pieces": json_pieces}))
+                .map_err(|e| CliError::Invalid(e.to_string()))?
+        )?;
+    }
+    Ok(())
 }
 
 /// Prints a reduction in the requested form.

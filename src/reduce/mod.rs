@@ -6,9 +6,11 @@
 //! ([`expand`]). It returns printable strings and structure; it must not
 //! parse, print to a stream or evaluate anything numerically.
 //!
-//! * [`expand`]: operator words → iterated integrals (text, LaTeX).
+//! * [`expand`]: operator words → iterated integrals (text, LaTeX);
+//! * [`split`]: the subintervals of a split-domain program as systems.
 
 pub mod expand;
+pub mod split;
 
 use crate::algebra::eliminate::{EliminateError, eliminate};
 use crate::algebra::matrix::Matrix;

@@ -128,6 +128,56 @@ impl RExpr {
         }
     }
 
+    /// Source text, with slot names `slots` (fully parenthesised where
+    /// precedence is not obvious).
+    ///
+    /// ```
+    /// use lambdamat::system::contact::{RBin, RExpr};
+    /// let e = RExpr::Bin(RBin::Mul, Box::new(RExpr::Var(0)), Box::new(RExpr::X));
+    /// assert_eq!(e.to_text(&["mu".to_string()]), "mu*x");
+    /// ```
+    pub fn to_text(&self, slots: &[String]) -> String {
+        let atom = |e: &RExpr| match e {
+            RExpr::Bin(..) | RExpr::Neg(_) => format!("({})", e.to_text(slots)),
+            RExpr::Const(q) if !q.is_integer() || q < &BigRational::from_integer(0.into()) => {
+                format!("({})", e.to_text(slots))
+            }
+            _ => e.to_text(slots),
+        };
+        match self {
+            RExpr::Const(q) => q.to_string(),
+            RExpr::Pi => "pi".into(),
+            RExpr::X => "x".into(),
+            RExpr::Var(i) => slots.get(*i).cloned().unwrap_or_else(|| format!("#{i}")),
+            RExpr::Neg(a) => format!("-{}", atom(a)),
+            RExpr::Bin(op, a, b) => {
+                let sym = match op {
+                    RBin::Add => " + ",
+                    RBin::Sub => " - ",
+                    RBin::Mul => "*",
+                    RBin::Div => "/",
+                    RBin::Pow => "^",
+                };
+                match op {
+                    RBin::Add => format!("{}{sym}{}", a.to_text(slots), b.to_text(slots)),
+                    RBin::Sub => format!("{}{sym}{}", a.to_text(slots), atom(b)),
+                    _ => format!("{}{sym}{}", atom(a), atom(b)),
+                }
+            }
+            RExpr::Call(f, a) => {
+                let name = match f {
+                    RFunc::Sqrt => "sqrt",
+                    RFunc::Ln => "ln",
+                    RFunc::Abs => "abs",
+                    RFunc::Exp => "exp",
+                    RFunc::Atan => "atan",
+                    RFunc::Acot => "acot",
+                };
+                format!("{name}({})", a.to_text(slots))
+            }
+        }
+    }
+
     /// Whether `x` occurs.
     pub fn uses_x(&self) -> bool {
         match self {
