@@ -42,7 +42,7 @@ use lambdamat::numeric::Operator;
 use lambdamat::numeric::Singularity::{AbelSqrt, Smooth};
 use lambdamat::plan::PlanError;
 use lambdamat::plan::compiled::{
-    CompiledEquation, CompiledOutput, CompiledSystem, OutputTerm, poly,
+    CompiledEquation, CompiledOutput, CompiledSystem, OutputTerm, words,
 };
 
 /// Operator `k1`, kernel `t/sqrt(t^2 - x^2)`: its smooth factor a(x, t) with kernel = a(x, t)/√|t² - x²|.
@@ -102,19 +102,13 @@ pub fn system() -> Result<CompiledSystem, PlanError> {
     op_k3 = op_k3 + Operator::integral(Lower { a: 0.0 }, AbelSqrt, kernel_k3);
     let mut op_k4 = Operator::zero();
     op_k4 = op_k4 + Operator::integral(Upper { b: 1.0 }, AbelSqrt, kernel_k4);
-    let lhs_1 = vec![
-        poly(4, &[(&[1, 0, 0, 0], "1")])?,
-        poly(4, &[(&[0, 1, 0, 0], "1")])?,
-    ];
+    let lhs_1 = vec![words(&[(&[0], "1")])?, words(&[(&[1], "1")])?];
     let equation_1 = CompiledEquation {
         lhs: lhs_1,
         rhs: Arc::new(rhs_1),
         rhs_text: "sqrt(1 - x^2) + 1/3*(x^2 - 1/2)".into(),
     };
-    let lhs_2 = vec![
-        poly(4, &[(&[0, 0, 1, 0], "1")])?,
-        poly(4, &[(&[0, 0, 0, 1], "1")])?,
-    ];
+    let lhs_2 = vec![words(&[(&[2], "1")])?, words(&[(&[3], "1")])?];
     let equation_2 = CompiledEquation {
         lhs: lhs_2,
         rhs: Arc::new(rhs_2),

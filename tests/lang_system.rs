@@ -660,8 +660,11 @@ fn manufactured_system_has_residual_zero_at_the_exact_solution() {
             let mut lhs = 0.0;
             for (j, poly) in eq.lhs.iter().enumerate() {
                 // Here every entry is a single operator symbol or zero.
-                for (mono, coeff) in poly.terms() {
-                    let sym = mono.iter().position(|&e| e == 1).expect("one symbol");
+                for (word, coeff) in poly.terms() {
+                    let [sym] = word.as_slice() else {
+                        panic!("one symbol per term")
+                    };
+                    let sym = *sym;
                     let c = num_traits::ToPrimitive::to_f64(coeff).unwrap_or(f64::NAN);
                     let terms = &p.operator(sym).expect("defined").terms;
                     lhs += c * apply(terms, exact[j], x);
@@ -676,4 +679,23 @@ fn manufactured_system_has_residual_zero_at_the_exact_solution() {
     }
     let names: Vec<&str> = p.outputs.iter().map(|o| o.name.as_str()).collect();
     assert_eq!(names, ["P", "Q"]);
+}
+
+#[test]
+fn products_keep_the_order_written_and_the_lambda_matrix_is_their_image() {
+    let p = ok("var a, b\nunknown u, v\n\
+         equation b*a u - a*b u + 2*b^2*a v = x\nequation a u + v = 1\n");
+    let e = &p.equations[0];
+    // The commutator b a - a b is kept, not cancelled.
+    assert_eq!(e.lhs[0].to_string_with(&p.symbols), "-a b + b a");
+    assert_eq!(e.lhs[1].to_string_with(&p.symbols), "2*b^2 a");
+    let a = p.lambda_matrix();
+    assert!(
+        a.entries[0].is_zero(),
+        "commutative image of the commutator"
+    );
+    assert_eq!(a.entries[1].to_string_with(&p.symbols), "2*a*b^2");
+    // The printed program reads back as the same ordered system.
+    let again = ok(&lambdamat::lang::pretty::pretty(&p));
+    assert_eq!(again, p);
 }

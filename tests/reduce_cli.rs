@@ -178,7 +178,7 @@ fn run_performs_solve_for_by_printing_the_reduction_then_solving() {
 }
 
 #[test]
-fn products_inside_the_lambda_matrix_are_flagged() {
+fn products_out_of_table_order_are_shown_beside_their_image() {
     let dir = tempfile::tempdir().expect("temp dir");
     let path = dir.path().join("prod.lmx");
     std::fs::write(
@@ -195,7 +195,7 @@ fn products_inside_the_lambda_matrix_are_flagged() {
         notes[0]
             .as_str()
             .expect("text")
-            .contains("equation 1 applies the product k1*k2 to p")
+            .contains("equation 1 applies k2 k1 to p in this order; the λ-matrix holds its commutative image k1*k2")
     );
     // The seed system has no such products.
     let v = json(&["reduce", "examples/hertz_stick.lmx"]);

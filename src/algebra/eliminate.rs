@@ -106,6 +106,26 @@ pub struct Eliminant {
 /// assert_eq!((e.commuted_pairs[0].a, e.commuted_pairs[0].b), (1, 3)); // k2, k4
 /// ```
 pub fn eliminate(a: &Matrix<PolyRing>, unknown: usize) -> Result<Eliminant, EliminateError> {
+    let words: Vec<Vec<NcPoly>> = (0..a.rows())
+        .map(|i| {
+            (0..a.cols())
+                .map(|j| NcPoly::from_mpoly(a.get(i, j)))
+                .collect()
+        })
+        .collect();
+    eliminate_ordered(a, &words, unknown)
+}
+
+/// The eliminant of unknown `unknown` of the system whose ordered
+/// operators are `words` (row `i`, column `j`; products in the order
+/// written) and whose λ-matrix `a` is their commutative image: the
+/// multipliers come from `a`, the ordered coefficients (the operator really
+/// applied, the dropped terms and so the commuted pairs) from `words`.
+pub fn eliminate_ordered(
+    a: &Matrix<PolyRing>,
+    words: &[Vec<NcPoly>],
+    unknown: usize,
+) -> Result<Eliminant, EliminateError> {
     let n = a.rows();
     if a.cols() != n {
         return Err(EliminateError::NotSquare {
@@ -139,7 +159,12 @@ pub fn eliminate(a: &Matrix<PolyRing>, unknown: usize) -> Result<Eliminant, Elim
     let ordered_coeff = |k: usize| {
         let mut acc = NcPoly::zero();
         for (j, c) in multipliers.iter().enumerate() {
-            acc = &acc + &(&NcPoly::from_mpoly(c) * &NcPoly::from_mpoly(a.get(j, k)));
+            let a_jk = words
+                .get(j)
+                .and_then(|r| r.get(k))
+                .cloned()
+                .unwrap_or_else(|| NcPoly::from_mpoly(a.get(j, k)));
+            acc = &acc + &(&NcPoly::from_mpoly(c) * &a_jk);
         }
         acc
     };

@@ -83,6 +83,67 @@ impl NcPoly {
         self.terms.is_empty()
     }
 
+    /// The value if this is a constant (the empty word only, or zero).
+    pub fn as_constant(&self) -> Option<Q> {
+        match self.terms.iter().next() {
+            None => Some(Q::zero()),
+            Some((w, c)) if w.is_empty() && self.terms.len() == 1 => Some(c.clone()),
+            _ => None,
+        }
+    }
+
+    /// Whether symbol `s` occurs in some word.
+    pub fn contains_var(&self, s: usize) -> bool {
+        self.terms.keys().any(|w| w.contains(&s))
+    }
+
+    /// Number of terms (distinct words with a nonzero coefficient).
+    pub fn len(&self) -> usize {
+        self.terms.len()
+    }
+
+    /// Whether there are no terms (same as [`NcPoly::is_zero`]).
+    pub fn is_empty(&self) -> bool {
+        self.terms.is_empty()
+    }
+
+    /// The longest word's length (0 for constants and zero).
+    pub fn degree(&self) -> usize {
+        self.terms.keys().map(Vec::len).max().unwrap_or(0)
+    }
+
+    /// The sum of `c · w` over the given (word, coefficient) pairs.
+    pub fn from_terms(terms: impl IntoIterator<Item = (Word, Q)>) -> Self {
+        let mut out = NcPoly::zero();
+        for (w, c) in terms {
+            out.add_term(w, c);
+        }
+        out
+    }
+
+    /// `c · self`.
+    pub fn scale(&self, c: &Q) -> Self {
+        NcPoly::from_terms(self.terms.iter().map(|(w, k)| (w.clone(), k * c)))
+    }
+
+    /// `self^k` (`k` factors of `self` in a row; `self^0 = 1`).
+    pub fn pow(&self, k: u32) -> Self {
+        let mut out = NcPoly::constant(Q::one());
+        for _ in 0..k {
+            out = &out * self;
+        }
+        out
+    }
+
+    /// Whether every word lists its symbols in table order; exactly then
+    /// the polynomial equals [`NcPoly::from_mpoly`] of its commutative
+    /// image (distinct sorted words have distinct images).
+    pub fn is_table_ordered(&self) -> bool {
+        self.terms
+            .keys()
+            .all(|w| w.windows(2).all(|p| p[0] <= p[1]))
+    }
+
     /// The terms (word, coefficient), in the printing order: by the
     /// commutative monomial (as [`MPoly`] orders it), then by word.
     pub fn terms(&self) -> Vec<(&Word, &Q)> {

@@ -9,6 +9,7 @@
 
 use super::matrix::Matrix;
 use super::mpoly::{MPoly, latex_name};
+use super::ncpoly::NcPoly;
 use super::polyring::PolyRing;
 use super::ratfunc::{RatFunc, RatFuncField};
 use super::rational::{Q, fmt_q, latex_q};
@@ -62,6 +63,15 @@ impl NcExpr {
         out
     }
 
+    /// An ordered polynomial, word by word.
+    pub fn from_ncpoly(p: &NcPoly) -> Self {
+        let mut out = NcExpr::zero();
+        for (w, c) in p.terms() {
+            out = out.plus_term(c.clone(), w.iter().map(|&s| Factor::Sym(s)).collect());
+        }
+        out
+    }
+
     fn plus_term(mut self, c: Q, fs: Vec<Factor>) -> Self {
         if c.is_zero() {
             return self;
@@ -103,6 +113,11 @@ impl NcExpr {
             },
             _ => None,
         }
+    }
+
+    /// Whether one term is a nonzero constant (no factors).
+    pub fn has_constant_term(&self) -> bool {
+        self.terms.iter().any(|(_, fs)| fs.is_empty())
     }
 
     /// Number of terms of the sum.
@@ -392,23 +407,30 @@ pub enum OrderedError {
 /// Sort key of a candidate pivot: (class, off the diagonal, unknown, equation).
 type PivotKey = (u8, bool, usize, usize);
 
-/// Pivot preference: lower is better.
+/// Pivot preference: lower is better. After constants and the principal
+/// symbol come entries of the second kind, `c + K` with a nonzero
+/// constant `c` (identity plus operators: invertible in the cases that
+/// matter and well conditioned), then single symbols (first kind), single
+/// products, anything else.
 fn pivot_class(e: &NcExpr, principal: Option<usize>) -> u8 {
     if e.as_constant().is_some() {
         0
     } else if let Some((_, s)) = e.as_scaled_symbol() {
-        if Some(s) == principal { 1 } else { 2 }
+        if Some(s) == principal { 1 } else { 3 }
+    } else if e.has_constant_term() {
+        2
     } else if e.len() == 1 {
-        3
-    } else {
         4
+    } else {
+        5
     }
 }
 
 /// Eliminates every unknown but `unknown` by Schur complements, choosing
-/// as pivot a constant if possible, else the principal symbol, else a
-/// single symbol, else a single product, else any nonzero entry (ties:
-/// the diagonal, then the first unknown, then the first equation).
+/// as pivot a constant if possible, else the principal symbol, else an
+/// entry of the second kind (`c + K`), else a single symbol, else a single
+/// product, else any nonzero entry (ties: the diagonal, then the first
+/// unknown, then the first equation).
 ///
 /// ```
 /// use lambdamat::algebra::{matrix::Matrix, mpoly::MPoly, polyring::PolyRing};
@@ -424,6 +446,25 @@ pub fn ordered_elimination(
     unknown: usize,
     principal: Option<usize>,
 ) -> Result<OrderedElimination, OrderedError> {
+    let words: Vec<Vec<NcPoly>> = (0..a.rows())
+        .map(|i| {
+            (0..a.cols())
+                .map(|j| NcPoly::from_mpoly(a.get(i, j)))
+                .collect()
+        })
+        .collect();
+    ordered_elimination_of(a, &words, unknown, principal)
+}
+
+/// [`ordered_elimination`] of the system whose ordered operators are
+/// `words` (row `i`, column `j`, products in the order written) and whose
+/// commutative image is `a`.
+pub fn ordered_elimination_of(
+    a: &Matrix<PolyRing>,
+    words: &[Vec<NcPoly>],
+    unknown: usize,
+    principal: Option<usize>,
+) -> Result<OrderedElimination, OrderedError> {
     let n = a.rows();
     if a.cols() != n {
         return Err(OrderedError::NotSquare {
@@ -436,7 +477,14 @@ pub fn ordered_elimination(
     }
     // Current system: m[r][c] over live rows/cols, rhs[r][j] coefficient of g_j.
     let mut m: Vec<Vec<NcExpr>> = (0..n)
-        .map(|i| (0..n).map(|j| NcExpr::from_mpoly(a.get(i, j))).collect())
+        .map(|i| {
+            (0..n)
+                .map(|j| match words.get(i).and_then(|r| r.get(j)) {
+                    Some(w) => NcExpr::from_ncpoly(w),
+                    None => NcExpr::from_mpoly(a.get(i, j)),
+                })
+                .collect()
+        })
         .collect();
     let mut rhs: Vec<Vec<NcExpr>> = (0..n)
         .map(|i| {

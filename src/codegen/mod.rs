@@ -295,7 +295,7 @@ fn imports(code: &str) -> String {
                 "CompiledOutput",
                 "CompiledSystem",
                 "OutputTerm",
-                "poly",
+                "words",
             ],
         ),
     ];
@@ -331,7 +331,6 @@ fn system_fn(
     rhs_fns: &[String],
     output_terms: &[Vec<String>],
 ) {
-    let nvars = prog.symbols.len();
     out.push_str("\n/// The compiled system, ready for `lambdamat::plan::solve_system`.\n");
     out.push_str("pub fn system() -> Result<CompiledSystem, PlanError> {\n");
     out.push_str(setup);
@@ -344,12 +343,12 @@ fn system_fn(
                 let terms: Vec<String> = p
                     .terms()
                     .iter()
-                    .map(|(m, c)| {
-                        let exps: Vec<String> = m.iter().map(u32::to_string).collect();
-                        format!("(&[{}], \"{c}\")", exps.join(", "))
+                    .map(|(w, c)| {
+                        let letters: Vec<String> = w.iter().map(usize::to_string).collect();
+                        format!("(&[{}], \"{c}\")", letters.join(", "))
                     })
                     .collect();
-                format!("poly({nvars}, &[{}])?", terms.join(", "))
+                format!("words(&[{}])?", terms.join(", "))
             })
             .collect();
         let lhs_var = format!("lhs_{}", i + 1);

@@ -1,5 +1,7 @@
 //! Validated AST → span-free [`Program`]: the only place that maps names to
-//! indices for the algebra and builds the [`MPoly`] entries. It trusts the
+//! indices for the algebra and builds the [`MPoly`] entries of matrices and
+//! the ordered [`NcPoly`] operators of equations (products kept in the
+//! order written). It trusts the
 //! validator (every name resolved, every divisor a nonzero constant, every
 //! exponent a small literal) but still never panics: anything unexpected
 //! becomes an internal error. It must not check user errors itself.
@@ -13,6 +15,7 @@ use super::scope::{Entry, Scope, Sort};
 use super::validate::Validated;
 use super::validate_system::{contains_operator, split_term};
 use crate::algebra::mpoly::MPoly;
+use crate::algebra::ncpoly::NcPoly;
 use crate::system::expr::{Expr as SExpr, Func};
 use crate::system::{
     Directive, Equation, FunctionalTerm, Limit, MatrixDef, OperatorDef, Output, Param, Program,
@@ -130,17 +133,17 @@ pub fn lower(file: &File, v: &Validated) -> Result<Program, LangError> {
                 program.operators.push(OperatorDef { symbol, terms });
             }
             Stmt::Equation { lhs, rhs, .. } => {
-                let mut row = vec![MPoly::zero(n); scope.unknowns.len()];
+                let mut row = vec![NcPoly::zero(); scope.unknowns.len()];
                 for term in lhs {
                     let (product, unknown) = split_term(term);
                     let u = unknown.ok_or_else(|| internal(&term.product))?;
                     let j = unknown_index(u)?;
                     let mut c = match product {
-                        Some(p) => poly(p, scope, n)?,
-                        None => MPoly::one(n),
+                        Some(p) => ncpoly(p, scope, n)?,
+                        None => NcPoly::constant(BigRational::one()),
                     };
                     if term.sign == Sign::Minus {
-                        c = -c;
+                        c = c.scale(&-BigRational::one());
                     }
                     let slot = row.get_mut(j).ok_or_else(|| internal_name(u))?;
                     *slot = &*slot + &c;
@@ -556,6 +559,47 @@ pub(crate) fn poly(e: &Expr, scope: &Scope, n: usize) -> Result<MPoly, LangError
                 }
                 .ok_or_else(|| internal(b))?;
                 poly(a, scope, n)?.pow(k)
+            }
+        },
+        _ => return Err(internal(e)),
+    })
+}
+
+/// The ordered operator an expression denotes: products keep the order
+/// written (`k2*k1` is the word `k2 k1`), powers repeat the factor.
+pub(crate) fn ncpoly(e: &Expr, scope: &Scope, n: usize) -> Result<NcPoly, LangError> {
+    Ok(match &e.kind {
+        ExprKind::Number(q) => NcPoly::constant(q.clone()),
+        ExprKind::Name(id) => match scope.get(&id.name) {
+            Some(Entry {
+                sort: Sort::Symbol(i),
+                ..
+            }) if i < n => NcPoly::var(i),
+            Some(Entry {
+                sort: Sort::Param(i),
+                ..
+            }) => NcPoly::constant(scope.param_value(i).cloned().ok_or_else(|| internal(e))?),
+            _ => return Err(internal(e)),
+        },
+        ExprKind::Neg(a) => ncpoly(a, scope, n)?.scale(&-BigRational::one()),
+        ExprKind::Binary(op, a, b) => match op {
+            BinOp::Add => &ncpoly(a, scope, n)? + &ncpoly(b, scope, n)?,
+            BinOp::Sub => &ncpoly(a, scope, n)? - &ncpoly(b, scope, n)?,
+            BinOp::Mul => &ncpoly(a, scope, n)? * &ncpoly(b, scope, n)?,
+            BinOp::Div => {
+                let c = constant(b, scope).ok_or_else(|| internal(b))?;
+                if c.is_zero() {
+                    return Err(internal(b));
+                }
+                ncpoly(a, scope, n)?.scale(&c.recip())
+            }
+            BinOp::Pow => {
+                let k = match &b.kind {
+                    ExprKind::Number(q) if q.is_integer() => q.to_integer().to_u32(),
+                    _ => None,
+                }
+                .ok_or_else(|| internal(b))?;
+                ncpoly(a, scope, n)?.pow(k)
             }
         },
         _ => return Err(internal(e)),

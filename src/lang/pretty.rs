@@ -8,9 +8,38 @@ use std::fmt::Write;
 
 use num_traits::{One, Signed};
 
+use crate::algebra::ncpoly::word_text;
+use crate::algebra::rational::fmt_q;
 use crate::system::{
-    Directive, Expr, FunctionalTerm, Limit, MatrixDef, OperatorDef, Program, Term,
+    Directive, Expr, FunctionalTerm, Limit, MatrixDef, NcPoly, OperatorDef, Program, Term,
 };
+
+/// An ordered operator in source syntax: `k2*k1 - 1/3*k4^2*k3` (products
+/// in the order they are applied from the left, as written).
+fn operator_source(c: &NcPoly, names: &[String]) -> String {
+    let mut out = String::new();
+    for (i, (w, k)) in c.terms().into_iter().enumerate() {
+        out.push_str(match (i, k.is_negative()) {
+            (0, true) => "-",
+            (0, false) => "",
+            (_, true) => " - ",
+            (_, false) => " + ",
+        });
+        let a = k.abs();
+        let word = word_text(w, names).replace(' ', "*");
+        match (word.is_empty(), a.is_one()) {
+            (true, _) => out.push_str(&fmt_q(&a)),
+            (false, true) => out.push_str(&word),
+            (false, false) => {
+                let _ = write!(out, "{}*{word}", fmt_q(&a));
+            }
+        }
+    }
+    if out.is_empty() {
+        out.push('0');
+    }
+    out
+}
 
 /// Prints `program` as lambdamat source.
 ///
@@ -58,9 +87,9 @@ pub fn pretty(program: &Program) -> String {
                 if c.as_constant().is_some_and(|v| v.is_one()) {
                     u.clone()
                 } else if single_positive {
-                    format!("{} {u}", c.to_string_with(names))
+                    format!("{} {u}", operator_source(c, names))
                 } else {
-                    format!("({}) {u}", c.to_string_with(names))
+                    format!("({}) {u}", operator_source(c, names))
                 }
             })
             .collect();

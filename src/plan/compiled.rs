@@ -1,6 +1,7 @@
 //! A system ready for the numerics: operators as [`Operator`]s with their
 //! kernels compiled, right sides and output weights as closures, the
-//! operator polynomials of the equations as exact [`MPoly`]s, the target
+//! ordered operators of the equations as exact [`NcPoly`]s (products in
+//! the order written), the target
 //! unknown and the unknowns' interval. It is what [`super::solve_system`]
 //! solves, and it can be built two ways: from a parsed [`Program`]
 //! ([`CompiledSystem::from_program`], kernels compiled to closures) or by
@@ -11,7 +12,7 @@ use std::sync::Arc;
 
 use num_rational::BigRational;
 
-use crate::system::{Directive, FunctionalTerm, Limit, MPoly, Program, Term};
+use crate::system::{Directive, FunctionalTerm, Limit, NcPoly, Program, Term};
 
 use super::compile::{compile_x, constant_value, rational};
 use super::error::PlanError;
@@ -24,8 +25,9 @@ pub type Fn1 = Arc<dyn Fn(f64) -> f64 + Send + Sync>;
 /// One equation `Σ_j lhs[j] u_j = rhs`.
 #[derive(Clone)]
 pub struct CompiledEquation {
-    /// The operator polynomial applied to each unknown.
-    pub lhs: Vec<MPoly>,
+    /// The ordered operator applied to each unknown (words in the order
+    /// written, the last symbol of a word applied first).
+    pub lhs: Vec<NcPoly>,
     /// The right side.
     pub rhs: Fn1,
     /// The right side as written (for error messages).
@@ -64,7 +66,7 @@ pub struct CompiledOutput {
 /// A system ready for [`super::solve_system`].
 #[derive(Clone)]
 pub struct CompiledSystem {
-    /// Operator symbol names (the variables of the [`MPoly`]s).
+    /// Operator symbol names (the letters of the [`NcPoly`] words).
     pub symbols: Vec<String>,
     /// The operator of each symbol the equations use (`None` otherwise).
     pub operators: Vec<Option<Operator>>,
@@ -197,11 +199,10 @@ impl CompiledSystem {
                 ));
             }
             for p in &eq.lhs {
-                if p.nvars() != self.symbols.len() {
+                if let Some(s) = p.symbols().into_iter().find(|&s| s >= self.symbols.len()) {
                     return invalid(format!(
-                        "equation {}: a polynomial in {} variables for {} symbols",
+                        "equation {}: symbol #{s} of {} symbols",
                         i + 1,
-                        p.nvars(),
                         self.symbols.len()
                     ));
                 }
@@ -289,30 +290,25 @@ fn interval(prog: &Program) -> Result<((f64, f64), Vec<f64>), PlanError> {
     Ok(((lo, hi), interior))
 }
 
-/// An operator polynomial from its terms: each term is the exponent of
-/// every symbol and an exact rational coefficient written `"p"` or
-/// `"p/q"` (the form `lambdamat codegen` writes).
+/// An ordered operator from its terms: each term is a word (symbol
+/// indices, applied right to left: `&[1, 0]` is `s1 s0`, `s0` first) and
+/// an exact rational coefficient written `"p"` or `"p/q"` (the form
+/// `lambdamat codegen` writes).
 ///
 /// ```
-/// use lambdamat::plan::compiled::poly;
-/// let p = poly(2, &[(&[1, 0], "1"), (&[0, 2], "-1/3")]).unwrap();
-/// assert_eq!(p.to_string_with(&["a", "b"]), "a - 1/3*b^2");
+/// use lambdamat::plan::compiled::words;
+/// let p = words(&[(&[1, 0], "1"), (&[0, 1], "-1/3")]).unwrap();
+/// assert_eq!(p.to_string_with(&["a", "b"]), "-1/3*a b + b a");
 /// ```
-pub fn poly(nvars: usize, terms: &[(&[u32], &str)]) -> Result<MPoly, PlanError> {
+pub fn words(terms: &[(&[usize], &str)]) -> Result<NcPoly, PlanError> {
     let mut out = Vec::with_capacity(terms.len());
-    for (mono, c) in terms {
-        if mono.len() != nvars {
-            return Err(PlanError::Invalid(format!(
-                "a monomial with {} exponents in a polynomial of {nvars} variables",
-                mono.len()
-            )));
-        }
+    for (w, c) in terms {
         let q: BigRational = c
             .parse()
             .map_err(|_| PlanError::Invalid(format!("{c} is not a rational number")))?;
-        out.push((mono.to_vec(), q));
+        out.push((w.to_vec(), q));
     }
-    Ok(MPoly::from_terms(nvars, out))
+    Ok(NcPoly::from_terms(out))
 }
 
 #[cfg(test)]
@@ -350,8 +346,10 @@ mod tests {
         let mut s = CompiledSystem::from_program(&p, None).unwrap();
         s.domain = (1.0, 1.0);
         assert!(s.check().unwrap_err().to_string().contains("empty"));
-        assert!(poly(2, &[(&[1], "1")]).is_err());
-        assert!(poly(1, &[(&[1], "1/0")]).is_err());
-        assert!(poly(1, &[(&[1], "x")]).is_err());
+        assert!(words(&[(&[0], "1/0")]).is_err());
+        assert!(words(&[(&[0], "x")]).is_err());
+        let mut s = CompiledSystem::from_program(&p, None).unwrap();
+        s.equations[0].lhs[0] = words(&[(&[1], "1")]).unwrap();
+        assert!(s.check().unwrap_err().to_string().contains("symbol #1"));
     }
 }

@@ -3,9 +3,9 @@
 //! constant limits), one weighted trial basis per unknown and one
 //! unweighted intermediate basis (`mid`) on the same mesh, so every matrix
 //! is square with rows at the common collocation nodes. Operator symbols
-//! are assembled once per basis and cached; an operator polynomial (an
-//! [`MPoly`] over the symbols) becomes a sum of products of these matrices
-//! through `mid`. This file owns the level and its matrices; it must not
+//! are assembled once per basis and cached; an ordered operator (an
+//! [`NcPoly`] over the symbols) becomes a sum of products of these matrices
+//! through `mid`, every word in its written order. This file owns the level and its matrices; it must not
 //! choose methods or refine.
 use std::collections::HashMap;
 
@@ -13,7 +13,7 @@ use nalgebra::{DMatrix, DVector};
 
 use crate::numeric::elimination::product;
 use crate::numeric::{Assembler, Factor, Grading, Mesh, Operator, PanelBasis, Side};
-use crate::system::MPoly;
+use crate::system::NcPoly;
 
 use super::compiled::Fn1;
 use super::error::PlanError;
@@ -184,15 +184,13 @@ impl Discretisation {
         Ok(m)
     }
 
-    /// The matrix of an operator polynomial on basis `id`: every monomial
-    /// is read as printed (symbols in declaration order, the last one
-    /// applied first).
-    pub fn poly(&mut self, p: &MPoly, id: BasisId) -> Result<DMatrix<f64>, PlanError> {
+    /// The matrix of an ordered operator on basis `id`: every word is
+    /// applied as written (its last symbol first).
+    pub fn poly(&mut self, p: &NcPoly, id: BasisId) -> Result<DMatrix<f64>, PlanError> {
         let n = self.dim();
         let mut out = DMatrix::zeros(n, n);
-        for (mono, c) in p.terms() {
-            let word = monomial_word(mono);
-            let m = self.word(&word, id)?;
+        for (word, c) in p.terms() {
+            let m = self.word(word, id)?;
             out += m * super::compile::rational(c);
         }
         Ok(out)
@@ -228,12 +226,4 @@ fn split_long(m: Mesh, h: f64) -> Mesh {
         }
     }
     Mesh { breaks, levels }
-}
-
-/// The symbols of a monomial with multiplicity, in declaration order.
-pub fn monomial_word(mono: &[u32]) -> Vec<usize> {
-    mono.iter()
-        .enumerate()
-        .flat_map(|(s, &e)| std::iter::repeat_n(s, e as usize))
-        .collect()
 }

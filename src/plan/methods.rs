@@ -19,7 +19,7 @@ use crate::algebra::polyring::PolyRing;
 use crate::numeric::NumericError;
 use crate::numeric::elimination::{apply_to_values, commutator_defect_on, product, solve_blocks};
 use crate::numeric::solve::CheckedLu;
-use crate::system::MPoly;
+use crate::system::{MPoly, NcPoly};
 
 use super::compiled::CompiledSystem;
 use super::discrete::{BasisId, Discretisation};
@@ -198,10 +198,11 @@ fn algebra(
 ) -> Result<(Matrix<PolyRing>, MPoly, Matrix<PolyRing>), PlanError> {
     let n = prog.unknowns.len();
     let ring = PolyRing::new(prog.symbols.clone());
+    let nvars = prog.symbols.len();
     let entries = prog
         .equations
         .iter()
-        .flat_map(|e| e.lhs.iter().cloned())
+        .flat_map(|e| e.lhs.iter().map(|w| w.commutative_image(nvars)))
         .collect();
     let a = Matrix::new(ring, n, n, entries);
     let det = a
@@ -246,8 +247,8 @@ fn commutative(
     let mut rhs = DVector::zeros(dim);
     let ctx = || PlanError::numeric("commutative model");
     for (k, gk) in g.iter().enumerate().take(n) {
-        let adj_ik = d.poly(adj.get(i, k), BasisId::Mid)?;
-        let a_ki = d.poly(a.get(k, i), BasisId::Unknown(i))?;
+        let adj_ik = d.poly(&NcPoly::from_mpoly(adj.get(i, k)), BasisId::Mid)?;
+        let a_ki = d.poly(&prog.equations[k].lhs[i], BasisId::Unknown(i))?;
         l += product(&adj_ik, &d.mid, &a_ki).map_err(ctx())?;
         rhs += apply_to_values(&adj_ik, &d.mid, gk).map_err(ctx())?;
     }
@@ -265,10 +266,10 @@ fn commutative(
 }
 
 /// The symbol pairs whose order the method fixed without knowing that
-/// they commute: distinct symbols inside one monomial of an equation (the
-/// language's operator polynomials are commutative) and, for the
-/// commutative model, every symbol of `adj_ik` with every symbol of `A_kj`
-/// (the terms `j ≠ i` are the ones the model drops). Sorted, each once.
+/// they commute: none for `coupled` and `ordered` (every product is applied
+/// as written); for the commutative model, every symbol of `adj_ik` with
+/// every symbol of `A_kj` (the terms `j ≠ i` are the ones the model
+/// drops). Sorted, each once.
 pub fn commuted_pairs(prog: &CompiledSystem, method: Method, target: usize) -> Vec<(usize, usize)> {
     let mut pairs = BTreeSet::new();
     let vars = |p: &MPoly| -> BTreeSet<usize> {
@@ -281,26 +282,14 @@ pub fn commuted_pairs(prog: &CompiledSystem, method: Method, target: usize) -> V
             pairs.insert((a.min(b), a.max(b)));
         }
     };
-    for eq in &prog.equations {
-        for p in &eq.lhs {
-            for (mono, _) in p.terms() {
-                let s: Vec<usize> = (0..mono.len()).filter(|&v| mono[v] > 0).collect();
-                for &a in &s {
-                    for &b in &s {
-                        add(a, b);
-                    }
-                }
-            }
-        }
-    }
     if method == Method::Commutative
-        && let Ok((a, _, adj)) = algebra(prog)
+        && let Ok((_, _, adj)) = algebra(prog)
     {
         let n = prog.unknowns.len();
         for k in 0..n {
             for j in 0..n {
                 for x in vars(adj.get(target, k)) {
-                    for y in vars(a.get(k, j)) {
+                    for y in prog.equations[k].lhs[j].symbols() {
                         add(x, y);
                     }
                 }

@@ -160,27 +160,22 @@ impl SplitProblem {
             let mut row = Vec::with_capacity(n);
             for p in &eq.lhs {
                 let mut op: Option<Operator> = None;
-                for (mono, c) in p.terms() {
+                for (word, c) in p.terms() {
                     let c = super::compile::rational(c);
-                    let deg: u32 = mono.iter().sum();
-                    let piece = match deg {
-                        0 => Operator::identity().scaled(c),
-                        1 => {
-                            let s = mono.iter().position(|&e| e == 1).unwrap_or(0);
-                            sys.operators
-                                .get(s)
-                                .cloned()
-                                .flatten()
-                                .ok_or_else(|| invalid(format!("operator #{s} has no definition")))?
-                                .scaled(c)
-                        }
+                    let piece = match word.as_slice() {
+                        [] => Operator::identity().scaled(c),
+                        [s] => sys
+                            .operators
+                            .get(*s)
+                            .cloned()
+                            .flatten()
+                            .ok_or_else(|| invalid(format!("operator #{s} has no definition")))?
+                            .scaled(c),
                         _ => {
                             return Err(PlanError::Unsupported {
-                                operator: mono
+                                operator: word
                                     .iter()
-                                    .enumerate()
-                                    .filter(|(_, e)| **e > 0)
-                                    .map(|(i, _)| sys.symbols[i].clone())
+                                    .map(|&i| sys.symbols[i].clone())
                                     .collect::<Vec<_>>()
                                     .join("*"),
                                 reason: "products of operators in a split-domain problem are not supported yet".into(),

@@ -12,10 +12,10 @@
 pub mod expand;
 pub mod split;
 
-use crate::algebra::eliminate::{EliminateError, eliminate};
+use crate::algebra::eliminate::{EliminateError, eliminate_ordered};
 use crate::algebra::matrix::Matrix;
 use crate::algebra::mpoly::MPoly;
-use crate::algebra::ordered::ordered_elimination;
+use crate::algebra::ordered::ordered_elimination_of;
 use crate::algebra::polyring::PolyRing;
 use crate::algebra::rational::fmt_q;
 use crate::algebra::smith::certify::Check;
@@ -185,7 +185,8 @@ pub fn reduce(p: &Program, unknown: usize) -> Result<Reduction, ReduceError> {
         .get(unknown)
         .cloned()
         .ok_or(ReduceError::NoSystem)?;
-    let e = eliminate(&a, unknown).map_err(|source| ReduceError::Eliminate {
+    let words = p.ordered_matrix();
+    let e = eliminate_ordered(&a, &words, unknown).map_err(|source| ReduceError::Eliminate {
         unknown: uname.clone(),
         source,
     })?;
@@ -214,7 +215,7 @@ pub fn reduce(p: &Program, unknown: usize) -> Result<Reduction, ReduceError> {
         None => (Vec::new(), Vec::new(), Vec::new()),
     };
     let expanded = expand_all(p, &e, unknown).map_err(|x| x.to_string());
-    let ordered = ordered_elimination(&a, unknown, p.principal)
+    let ordered = ordered_elimination_of(&a, &words, unknown, p.principal)
         .map(|o| OrderedForm {
             text: o.to_string_with(names, &uname),
             latex: o.to_latex_with(names, &uname),
@@ -279,29 +280,25 @@ pub fn reduce(p: &Program, unknown: usize) -> Result<Reduction, ReduceError> {
             .iter()
             .map(|q| (q.name.clone(), fmt_q(&q.value)))
             .collect(),
-        notes: product_notes(&a, p),
+        notes: product_notes(p),
     })
 }
 
-/// A note for every λ-matrix entry with a product of distinct symbols:
-/// the lowering keeps such products as commutative monomials, so their
-/// source order is not known here and they are read in table order.
-fn product_notes(a: &Matrix<PolyRing>, p: &Program) -> Vec<String> {
+/// A note for every equation operator whose written order is not the
+/// symbol-table order: the λ-matrix holds its commutative image, the
+/// ordered form keeps the order written.
+fn product_notes(p: &Program) -> Vec<String> {
     let mut out = Vec::new();
-    for i in 0..a.rows() {
-        for j in 0..a.cols() {
-            let e = a.get(i, j);
-            let mixed = e
-                .terms()
-                .iter()
-                .any(|(m, _)| m.iter().filter(|&&k| k > 0).count() > 1);
-            if mixed {
+    let n = p.symbols.len();
+    for (i, eq) in p.equations.iter().enumerate() {
+        for (j, w) in eq.lhs.iter().enumerate() {
+            if !w.is_table_ordered() {
                 out.push(format!(
-                    "equation {} applies the product {} to {}; the λ-matrix stores it commutatively, so it is read in declaration order ({}) and its own order is one more commutation",
+                    "equation {} applies {} to {} in this order; the λ-matrix holds its commutative image {}",
                     i + 1,
-                    e.to_string_with(&p.symbols),
+                    w.to_string_with(&p.symbols),
                     p.unknowns[j],
-                    crate::algebra::ncpoly::NcPoly::from_mpoly(e).to_string_with(&p.symbols)
+                    w.commutative_image(n).to_string_with(&p.symbols)
                 ));
             }
         }

@@ -9,9 +9,9 @@
 //! representative value of every scalar (the middle of its range); the
 //! labels keep the written ends. It must not print or solve anything.
 use num_rational::BigRational;
-use num_traits::One;
 
 use crate::algebra::mpoly::MPoly;
+use crate::algebra::ncpoly::NcPoly;
 use crate::system::contact::{Interval, RExpr};
 use crate::system::{Equation, Program};
 
@@ -129,16 +129,16 @@ pub fn pieces(p: &Program) -> Result<Vec<Piece>, PieceError> {
                 Factor::Symbol(name) => Some(add_symbol(&mut program, name)),
                 Factor::Exact(_) => None,
             };
-            let n = program.symbols.len();
             for eq in &mut program.equations {
                 let col = eq.lhs[r.unknown].clone();
+                // k (κ v): the factor is applied first, so it is written last.
                 let scaled = match (&factor, sym) {
                     (Factor::Exact(q), _) => col.scale(q),
-                    (_, Some(s)) => col * MPoly::var(s, n),
+                    (_, Some(s)) => &col * &NcPoly::var(s),
                     _ => col,
                 };
                 eq.lhs[r.other] = &eq.lhs[r.other] + &scaled;
-                eq.lhs[r.unknown] = MPoly::zero(n);
+                eq.lhs[r.unknown] = NcPoly::zero();
             }
             removed[r.unknown] = true;
             substituted.push(format!(
@@ -174,7 +174,8 @@ enum Factor {
     Symbol(String),
 }
 
-/// Adds a commuting symbol (if new) and widens every polynomial.
+/// Adds a commuting symbol (if new) and widens the matrices' polynomials
+/// (operator words need no widening).
 fn add_symbol(p: &mut Program, name: &str) -> usize {
     if let Some(i) = p.symbols.iter().position(|s| s == name) {
         return i;
@@ -191,16 +192,10 @@ fn add_symbol(p: &mut Program, name: &str) -> usize {
             }),
         )
     };
-    for eq in &mut p.equations {
-        for col in &mut eq.lhs {
-            *col = widen(col);
-        }
-    }
     for m in &mut p.matrices {
         for e in &mut m.entries {
             *e = widen(e);
         }
     }
-    let _ = BigRational::one();
     n - 1
 }

@@ -1,7 +1,10 @@
 //! The lowered program: symbol table, principal symbol, matrices of
 //! polynomials, parameters, the operator system (unknowns, operator table,
-//! equations as rows of a λ-matrix with right sides, outputs) and
-//! directives, all indexed, all span-free. This file defines data only;
+//! equations as rows of operator words in the order written, with right
+//! sides, outputs) and directives, all indexed, all span-free. An
+//! equation's operators are elements of the free algebra over the symbols
+//! ([`NcPoly`]: `k2*k1` ≠ `k1*k2`); the λ-matrix over commuting symbols is
+//! their image ([`Program::lambda_matrix`]). This file defines data only;
 //! building it is `lang::lower`'s job and printing it back as source is
 //! `lang::pretty`'s.
 
@@ -11,6 +14,7 @@ use super::contact::Contact;
 use super::expr::Expr;
 use super::operator::OperatorDef;
 use crate::algebra::mpoly::MPoly;
+use crate::algebra::ncpoly::NcPoly;
 
 /// Everything a file says, ready for the algebra and the numerics.
 #[derive(Clone, Debug, PartialEq)]
@@ -34,7 +38,8 @@ pub struct Program {
     /// none: they are purely algebraic).
     pub operators: Vec<OperatorDef>,
     /// The equations in source order; equation `i` is row `i` of the
-    /// λ-matrix.
+    /// ordered matrix ([`Program::ordered_matrix`]) and of its commutative
+    /// image, the λ-matrix.
     pub equations: Vec<Equation>,
     /// Output functionals, in definition order.
     pub outputs: Vec<Output>,
@@ -45,8 +50,11 @@ pub struct Program {
 
 impl Program {
     /// The λ-matrix of the operator system: one row per equation, one
-    /// column per unknown.
+    /// column per unknown, each entry the commutative image of the
+    /// equation's ordered operator (what Smith forms and the commutative
+    /// eliminant work on).
     pub fn lambda_matrix(&self) -> MatrixDef {
+        let n = self.symbols.len();
         MatrixDef {
             name: "A".to_string(),
             rows: self.equations.len(),
@@ -54,9 +62,15 @@ impl Program {
             entries: self
                 .equations
                 .iter()
-                .flat_map(|e| e.lhs.iter().cloned())
+                .flat_map(|e| e.lhs.iter().map(|w| w.commutative_image(n)))
                 .collect(),
         }
+    }
+
+    /// The ordered operators of the system, row by row (equation `i`,
+    /// unknown `j`): products in the order written.
+    pub fn ordered_matrix(&self) -> Vec<Vec<NcPoly>> {
+        self.equations.iter().map(|e| e.lhs.clone()).collect()
     }
 
     /// The definition of symbol `i`, if it is a defined operator.
@@ -77,9 +91,12 @@ pub struct Param {
 /// One equation `Σ_j lhs[j] u_j = rhs`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Equation {
-    /// The operator polynomial applied to each unknown (one per unknown,
-    /// zero where the unknown does not occur).
-    pub lhs: Vec<MPoly>,
+    /// The operator applied to each unknown (one per unknown, zero where
+    /// the unknown does not occur), as a polynomial in non-commuting
+    /// symbols: every product keeps the order written (`k2*k1 p` is the
+    /// word `k2 k1`, `k1` applied first), and terms of one unknown are
+    /// summed (`k2*k1 p - k1*k2 p` is the commutator, not zero).
+    pub lhs: Vec<NcPoly>,
     /// The right side, a function of `x`.
     pub rhs: Expr,
 }

@@ -42,7 +42,7 @@ use lambdamat::numeric::Operator;
 use lambdamat::numeric::Singularity::{AbelSqrt, Smooth};
 use lambdamat::plan::PlanError;
 use lambdamat::plan::compiled::{
-    CompiledEquation, CompiledOutput, CompiledSystem, OutputTerm, poly,
+    CompiledEquation, CompiledOutput, CompiledSystem, OutputTerm, words,
 };
 
 /// Multiplier of operator `m`: `x`.
@@ -99,19 +99,13 @@ pub fn system() -> Result<CompiledSystem, PlanError> {
     op_h = op_h + Operator::integral(Fixed { a: 0.0, b: 0.5 }, Smooth, kernel_h);
     let mut op_g = Operator::zero();
     op_g = op_g + Operator::integral(Lower { a: 0.0 }, AbelSqrt, kernel_g);
-    let lhs_1 = vec![
-        poly(4, &[(&[1, 0, 0, 0], "1"), (&[0, 1, 0, 0], "1")])?,
-        poly(4, &[(&[0, 0, 1, 0], "1")])?,
-    ];
+    let lhs_1 = vec![words(&[(&[0], "1"), (&[1], "1")])?, words(&[(&[2], "1")])?];
     let equation_1 = CompiledEquation {
         lhs: lhs_1,
         rhs: Arc::new(rhs_1),
         rhs_text: "1 + x".into(),
     };
-    let lhs_2 = vec![
-        poly(4, &[(&[0, 0, 0, 1], "1")])?,
-        poly(4, &[(&[0, 0, 1, 0], "1"), (&[0, 0, 0, 0], "1")])?,
-    ];
+    let lhs_2 = vec![words(&[(&[3], "1")])?, words(&[(&[2], "1"), (&[], "1")])?];
     let equation_2 = CompiledEquation {
         lhs: lhs_2,
         rhs: Arc::new(rhs_2),
