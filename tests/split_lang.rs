@@ -121,3 +121,21 @@ fn reduce_shows_each_subinterval() {
     assert!(t.contains("on [c, 1] with q = 1/5*p substituted"), "{t}");
     assert!(t.contains("A = [ k1 + 1/5*k2 ]"), "{t}");
 }
+
+#[test]
+fn run_uses_the_split_solver_and_codegen_refuses_split_files() {
+    let v = common::cli::json(&["run", "examples/hertz_split_mms.lmx"]);
+    let results = v["results"].as_array().expect("results");
+    let solve = results
+        .iter()
+        .find(|r| r["kind"] == "solve")
+        .expect("a solve result");
+    let c = solve["result"]["scalars"]["c"].as_f64().expect("c");
+    assert!((c - 0.5).abs() <= 1e-10);
+    let out = lambdamat()
+        .args(["codegen", "examples/hertz.lmx"])
+        .output()
+        .expect("runs");
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("split-domain"));
+}

@@ -33,58 +33,92 @@ fn reduce_split(
     w: &mut dyn Write,
 ) -> Result<(), CliError> {
     let u = choose_unknown(p, a.unknown.as_deref())?;
+    let list = split_reductions(p, u)?;
+    if a.out.json {
+        writeln!(
+            w,
+            "{}",
+            serde_json::to_string_pretty(&split_json(&list))
+                .map_err(|e| CliError::Invalid(e.to_string()))?
+        )?;
+    } else {
+        write!(w, "{}", split_text(&list, a.out.latex))?;
+    }
+    Ok(())
+}
+
+/// The reduction of every subinterval of a split-domain program for
+/// unknown `u` (where it is free; else the first free unknown there).
+pub fn split_reductions(
+    p: &crate::system::Program,
+    u: usize,
+) -> Result<Vec<(crate::reduce::split::Piece, Reduction)>, CliError> {
     let target = &p.unknowns[u];
     let pieces = crate::reduce::split::pieces(p).map_err(|e| CliError::Invalid(e.to_string()))?;
-    let mut json_pieces = Vec::new();
-    for (i, piece) in pieces.iter().enumerate() {
-        let q = &piece.program;
-        let v = q.unknowns.iter().position(|n| n == target).unwrap_or(0);
-        let r = reduce(q, v)?;
+    pieces
+        .into_iter()
+        .map(|piece| {
+            let v = piece
+                .program
+                .unknowns
+                .iter()
+                .position(|n| n == target)
+                .unwrap_or(0);
+            let r = reduce(&piece.program, v)?;
+            Ok((piece, r))
+        })
+        .collect()
+}
+
+const MODEL_NOTE: &str = "the substitution holds on this piece only; operators integrating beyond it see the other pieces' unknowns, so the single equation is a model there (the seed's (2.4)); `solve` keeps the pieces coupled";
+
+/// The JSON object `{"pieces": [...]}` of [`split_reductions`].
+pub fn split_json(list: &[(crate::reduce::split::Piece, Reduction)]) -> Value {
+    let pieces: Vec<Value> = list
+        .iter()
+        .map(|(piece, r)| {
+            json!({
+                "interval": piece.label,
+                "substituted": piece.substituted,
+                "note": if piece.substituted.is_empty() { Value::Null } else { json!(MODEL_NOTE) },
+                "reduction": to_json(r),
+            })
+        })
+        .collect();
+    json!({ "pieces": pieces })
+}
+
+/// Text (or LaTeX) of [`split_reductions`].
+pub fn split_text(list: &[(crate::reduce::split::Piece, Reduction)], as_latex: bool) -> String {
+    let mut s = String::new();
+    for (i, (piece, r)) in list.iter().enumerate() {
         let subst = if piece.substituted.is_empty() {
             String::new()
         } else {
             format!(" with {} substituted", piece.substituted.join(", "))
         };
-        if a.out.json {
-            json_pieces.push(json!({
-                "interval": piece.label,
-                "substituted": piece.substituted,
-                "note": if piece.substituted.is_empty() { Value::Null } else { json!("the substitution holds on this piece only; operators integrating beyond it see the other pieces' unknowns, so the single equation is a model there (the seed's (2.4))") },
-                "reduction": to_json(&r),
-            }));
-        } else if a.out.latex {
-            writeln!(w, "% on {}{subst}", piece.label)?;
-            write!(w, "{}", latex(&r))?;
-        } else {
-            if i > 0 {
-                writeln!(w)?;
-            }
-            writeln!(
-                w,
-                "━━ on {}{subst}: {} equation(s) in {} ━━",
-                piece.label,
-                q.equations.len(),
-                q.unknowns.join(", ")
-            )?;
-            if !piece.substituted.is_empty() {
-                writeln!(
-                    w,
-                    "note: the substitution holds on {} only; operators integrating beyond it see the other pieces' unknowns, so this single equation is a model there (the seed's (2.4)); `solve` keeps the pieces coupled",
-                    piece.label
-                )?;
-            }
-            write!(w, "{}", text(&r))?;
+        if as_latex {
+            let _ = writeln!(s, "% on {}{subst}", piece.label);
+            s.push_str(&latex(r));
+            continue;
         }
+        if i > 0 {
+            s.push('\n');
+        }
+        let q = &piece.program;
+        let _ = writeln!(
+            s,
+            "━━ on {}{subst}: {} equation(s) in {} ━━",
+            piece.label,
+            q.equations.len(),
+            q.unknowns.join(", ")
+        );
+        if !piece.substituted.is_empty() {
+            let _ = writeln!(s, "note: on {}, {MODEL_NOTE}", piece.label);
+        }
+        s.push_str(&text(r));
     }
-    if a.out.json {
-        writeln!(
-            w,
-            "{}",
-            serde_json::to_string_pretty(&json!({"pieces": json_pieces}))
-                .map_err(|e| CliError::Invalid(e.to_string()))?
-        )?;
-    }
-    Ok(())
+    s
 }
 
 /// Prints a reduction in the requested form.

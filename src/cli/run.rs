@@ -50,6 +50,22 @@ pub fn run(file: &PathBuf, out: &OutputArgs, w: &mut dyn Write) -> Result<(), Cl
                     write!(w, "{}", render::check_text(&c))?;
                 }
             }
+            Directive::Solve { unknown } if p.contact.is_split() => {
+                let list = super::reduce::split_reductions(&p, *unknown)?;
+                let r = crate::plan::solve_split(&p, &crate::plan::SplitOptions::default())?;
+                if out.json {
+                    results.push(
+                        json!({"kind": "reduce", "result": super::reduce::split_json(&list)}),
+                    );
+                    results.push(json!({"kind": "solve", "result": super::split::to_json(&r)}));
+                } else {
+                    sep(w, &mut first)?;
+                    write!(w, "{}", super::reduce::split_text(&list, out.latex))?;
+                    sep(w, &mut first)?;
+                    super::split::write_text(&r, w)?;
+                }
+                super::split::require_converged(&r)?;
+            }
             Directive::Solve { unknown } => {
                 let red = reduce(&p, *unknown)?;
                 if out.json {

@@ -35,6 +35,12 @@ pub fn solve_split_and_report(
     } else {
         write_text(&r, w)?;
     }
+    require_converged(&r)
+}
+
+/// An error unless `r` reached its tolerance (the report is printed first,
+/// so a result that did not converge never exits 0).
+pub fn require_converged(r: &SplitReport) -> Result<(), CliError> {
     if !r.converged {
         return Err(CliError::Plan(PlanError::Numeric {
             context: "split-domain solve".into(),

@@ -89,6 +89,11 @@ impl CompiledSystem {
     /// constant limits, the target from `target` (an unknown's name), else
     /// the file's `solve for`, else the first unknown.
     pub fn from_program(prog: &Program, target: Option<&str>) -> Result<CompiledSystem, PlanError> {
+        if prog.contact.is_split() {
+            return Err(PlanError::Invalid(
+                "this file has split-domain declarations (on-intervals, relations, scalars, singular terms, conditions): `lambdamat solve` solves it with the split-domain solver; `codegen` does not support such files yet".into(),
+            ));
+        }
         square(prog.equations.len(), prog.unknowns.len())?;
         let target = match target {
             Some(name) => prog

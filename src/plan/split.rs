@@ -128,7 +128,9 @@ fn num(context: &str) -> impl FnOnce(crate::numeric::NumericError) -> PlanError 
 impl SplitProblem {
     /// Compiles `prog` (which must have split-domain declarations).
     pub fn new(prog: &Program) -> Result<SplitProblem, PlanError> {
-        let sys = CompiledSystem::from_program(prog, None)?;
+        let mut plain = prog.clone();
+        plain.contact = Contact::default();
+        let sys = CompiledSystem::from_program(&plain, None)?;
         let contact = prog.contact.clone();
         let nan = vec![f64::NAN; contact.scalars.len()];
         let vars = contact.values(&nan);
