@@ -139,3 +139,17 @@ fn run_uses_the_split_solver_and_codegen_refuses_split_files() {
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("split-domain"));
 }
+
+#[test]
+fn split_files_print_back_to_the_same_program() {
+    for path in [
+        "examples/hertz.lmx",
+        "examples/hertz_given_c.lmx",
+        "examples/hertz_split_mms.lmx",
+    ] {
+        let src = std::fs::read_to_string(path).expect("example");
+        let p = ok(&src);
+        let text = lambdamat::lang::pretty::pretty(&p);
+        assert_eq!(ok(&text), p, "{path} printed as:\n{text}");
+    }
+}

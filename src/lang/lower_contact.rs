@@ -40,6 +40,12 @@ fn real_slots(scope: &Scope) -> Vec<Option<usize>> {
 
 /// The [`RExpr`] of a validated real expression.
 fn rexpr(e: &Expr, scope: &Scope, slots: &[Option<usize>]) -> Result<RExpr, LangError> {
+    // Exact subexpressions are folded to one rational.
+    if !matches!(e.kind, ExprKind::Number(_))
+        && let Some(q) = constant(e, scope)
+    {
+        return Ok(RExpr::Const(q));
+    }
     Ok(match &e.kind {
         ExprKind::Number(q) => RExpr::Const(q.clone()),
         ExprKind::Pi => RExpr::Pi,
@@ -64,17 +70,24 @@ fn rexpr(e: &Expr, scope: &Scope, slots: &[Option<usize>]) -> Result<RExpr, Lang
             _ => return Err(internal(e.span, "a name")),
         },
         ExprKind::Neg(a) => RExpr::Neg(Box::new(rexpr(a, scope, slots)?)),
-        ExprKind::Binary(op, a, b) => RExpr::Bin(
-            match op {
-                BinOp::Add => RBin::Add,
-                BinOp::Sub => RBin::Sub,
-                BinOp::Mul => RBin::Mul,
-                BinOp::Div => RBin::Div,
-                BinOp::Pow => RBin::Pow,
-            },
-            Box::new(rexpr(a, scope, slots)?),
-            Box::new(rexpr(b, scope, slots)?),
-        ),
+        ExprKind::Binary(op, a, b) => {
+            let (a, b) = (rexpr(a, scope, slots)?, rexpr(b, scope, slots)?);
+            match (op, &a) {
+                // `1*e` (left by a coefficient `B*e` with B = 1) is `e`.
+                (BinOp::Mul, RExpr::Const(q)) if num_traits::One::is_one(q) => b,
+                _ => RExpr::Bin(
+                    match op {
+                        BinOp::Add => RBin::Add,
+                        BinOp::Sub => RBin::Sub,
+                        BinOp::Mul => RBin::Mul,
+                        BinOp::Div => RBin::Div,
+                        BinOp::Pow => RBin::Pow,
+                    },
+                    Box::new(a),
+                    Box::new(b),
+                ),
+            }
+        }
         ExprKind::Call(f, a) => RExpr::Call(
             RFunc::from_name(&f.name).ok_or_else(|| internal(f.span, "a function"))?,
             Box::new(rexpr(a, scope, slots)?),

@@ -41,6 +41,67 @@ fn operator_source(c: &NcPoly, names: &[String]) -> String {
     out
 }
 
+/// An interval in source syntax.
+fn interval(d: &crate::system::contact::Interval, slots: &[String]) -> String {
+    format!(
+        "{}{}, {}{}",
+        if d.lo_closed { "[" } else { "(" },
+        d.lo.to_text(slots),
+        d.hi.to_text(slots),
+        if d.hi_closed { "]" } else { ")" }
+    )
+}
+
+/// Relations, singular declarations and conditions.
+fn contact(program: &Program, slots: &[String], out: &mut String) {
+    use crate::system::contact::SingularKind;
+    let c = &program.contact;
+    let unknown = |i: usize| program.unknowns.get(i).map_or("?", String::as_str);
+    for r in &c.relations {
+        let _ = writeln!(
+            out,
+            "relation {} = ({})*{} on {}",
+            unknown(r.unknown),
+            r.coeff.to_text(slots),
+            unknown(r.other),
+            interval(&r.domain, slots)
+        );
+    }
+    for s in &c.singulars {
+        let at = s.at.to_text(slots);
+        let side = match s.side {
+            -1 => "-",
+            1 => "+",
+            _ => "",
+        };
+        let body = match &s.kind {
+            SingularKind::Weight { exponent } => {
+                format!("({at} - x)^({})", exponent.to_text(slots))
+            }
+            SingularKind::Term { coefficient, func } => format!(
+                "{}*({})",
+                c.coefficients.get(*coefficient).map_or("?", String::as_str),
+                func.to_text(slots)
+            ),
+        };
+        let _ = writeln!(
+            out,
+            "singular {} at ({at}){side} ~ {body}",
+            unknown(s.unknown)
+        );
+    }
+    for k in &c.conditions {
+        let _ = writeln!(
+            out,
+            "condition {} = {}",
+            c.coefficients
+                .get(k.coefficient)
+                .map_or("?", String::as_str),
+            k.value.to_text(slots)
+        );
+    }
+}
+
 /// Prints `program` as lambdamat source.
 ///
 /// ```
@@ -55,6 +116,27 @@ pub fn pretty(program: &Program) -> String {
     let names = &program.symbols;
     for p in &program.params {
         let _ = writeln!(out, "param {} = {}", p.name, Expr::Const(p.value.clone()));
+    }
+    let c = &program.contact;
+    let slots = c.slots();
+    for s in &c.scalars {
+        let end = |v: f64| {
+            if v.is_infinite() {
+                "inf".to_string()
+            } else {
+                format!("{v}")
+            }
+        };
+        let _ = writeln!(
+            out,
+            "scalar {} in ({}, {})",
+            s.name,
+            end(s.range.0),
+            end(s.range.1)
+        );
+    }
+    for r in &c.reals {
+        let _ = writeln!(out, "param {} = {}", r.name, r.value.to_text(&slots));
     }
     for (i, name) in names.iter().enumerate() {
         match program.operator(i) {
@@ -73,9 +155,15 @@ pub fn pretty(program: &Program) -> String {
         let _ = writeln!(out, "matrix {} = {}", m.name, matrix(m, names));
     }
     if !program.unknowns.is_empty() {
-        let _ = writeln!(out, "unknown {}", program.unknowns.join(", "));
+        let domain = match c.unknown_domains.first() {
+            Some(Some(d)) if c.unknown_domains.iter().all(|o| o.as_ref() == Some(d)) => {
+                format!(" on {}", interval(d, &slots))
+            }
+            _ => String::new(),
+        };
+        let _ = writeln!(out, "unknown {}{domain}", program.unknowns.join(", "));
     }
-    for eq in &program.equations {
+    for (i, eq) in program.equations.iter().enumerate() {
         let mut terms: Vec<String> = eq
             .lhs
             .iter()
@@ -97,8 +185,13 @@ pub fn pretty(program: &Program) -> String {
             let first = program.unknowns.first().map_or("p", String::as_str);
             terms.push(format!("0 {first}"));
         }
-        let _ = writeln!(out, "equation {} = {}", terms.join(" + "), eq.rhs);
+        let domain = match c.equation_domains.get(i) {
+            Some(Some(d)) => format!(" on {}", interval(d, &slots)),
+            _ => String::new(),
+        };
+        let _ = writeln!(out, "equation {} = {}{domain}", terms.join(" + "), eq.rhs);
     }
+    contact(program, &slots, &mut out);
     for o in &program.outputs {
         let terms: Vec<String> = o
             .terms

@@ -3,6 +3,8 @@
 //! real parameters (values such as `acot(gamma*mu)/pi` that are not exact
 //! rationals). Every error carries a span; nothing here builds the lowered
 //! program (that is `lower_contact.rs`) or touches the operator part.
+use num_traits::Signed;
+
 use super::ast::{BinOp, Expr, ExprKind, Ident, Interval};
 use super::error::{ErrorKind, LangError};
 use super::scope::{Entry, Sort};
@@ -148,6 +150,19 @@ impl Validator {
                 }
             },
             ExprKind::Neg(a) => self.real_expr(a, allow_x),
+            ExprKind::Binary(BinOp::Pow, _, b) if matches!(&b.kind, ExprKind::Number(q) if q.abs() > num_rational::BigRational::from_integer(super::validate::MAX_EXPONENT.into())) =>
+            {
+                self.err(LangError::new(
+                    ErrorKind::BadExponent,
+                    format!(
+                        "exponent is too large (the limit is {})",
+                        super::validate::MAX_EXPONENT
+                    ),
+                    b.span,
+                    "too large",
+                ));
+                false
+            }
             ExprKind::Binary(_, a, b) => {
                 let l = self.real_expr(a, allow_x);
                 self.real_expr(b, allow_x) && l
