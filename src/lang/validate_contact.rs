@@ -73,10 +73,10 @@ pub(super) fn weight_form(e: &Expr) -> Option<(&Expr, &Expr)> {
 
 /// A relation's right side `k * v`, `v * k` or `v`: the factor (if any) and
 /// the unknown `v`.
-pub(super) fn relation_form<'a>(
-    e: &'a Expr,
+pub(super) fn relation_form(
+    e: &Expr,
     is_unknown: impl Fn(&str) -> bool,
-) -> Option<(Option<&'a Expr>, &'a Ident)> {
+) -> Option<(Option<&Expr>, &Ident)> {
     match &e.kind {
         ExprKind::Name(id) if is_unknown(&id.name) => Some((None, id)),
         ExprKind::Binary(BinOp::Mul, a, b) => match (&a.kind, &b.kind) {

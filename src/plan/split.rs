@@ -70,6 +70,9 @@ pub struct SplitProblem {
     pub domain: (f64, f64),
     /// `ops[e][j]`: the operator of equation `e` on unknown `j`.
     ops: Vec<Vec<Option<Operator>>>,
+    /// Assembled blocks, by everything that defines them (see
+    /// [`SplitProblem::block`]).
+    cache: std::sync::Mutex<std::collections::HashMap<Vec<u64>, DMatrix<f64>>>,
 }
 
 /// How an unknown is represented on one subinterval.
@@ -205,6 +208,7 @@ impl SplitProblem {
             contact,
             domain,
             ops,
+            cache: Default::default(),
         })
     }
 
@@ -372,7 +376,7 @@ impl SplitProblem {
                 sd => sd,
             };
             let (s0, s1) = if side < 0 { (lo, at) } else { (at, hi) };
-            if !(s0 < s1) {
+            if s0.partial_cmp(&s1) != Some(std::cmp::Ordering::Less) {
                 return Err(invalid(format!(
                     "the singular term of {name} at {at} has no room on that side of the point in [{lo}, {hi}]"
                 )));
@@ -475,8 +479,7 @@ impl SplitProblem {
         let mut mat = DMatrix::zeros(nrows, ncols);
         let mut rhs = DVector::zeros(nrows);
         let mut r0 = 0;
-        for e in 0..neq {
-            let xs = &points[e];
+        for (e, xs) in points.iter().enumerate() {
             if xs.is_empty() {
                 continue;
             }
@@ -487,7 +490,7 @@ impl SplitProblem {
             for j in 0..nu {
                 let Some(op) = &self.ops[e][j] else { continue };
                 if let (Some(asm), Some(sup)) = (&asms[j], supports[j]) {
-                    let blk = asm.matrix_on(op, xs, sup).map_err(num("assembly"))?;
+                    let blk = self.block((e, j, 0), asm, op, xs, sup)?;
                     let mut v = mat.view_mut((r0, offsets[j]), (xs.len(), blk.ncols()));
                     v += &blk;
                 }
@@ -495,16 +498,14 @@ impl SplitProblem {
                     if let Status::Related { coeff, other } = status[j][k] {
                         let win = (breaks[k], breaks[k + 1]);
                         let asm = self.related_basis(&asms, &status, other, k, j)?;
-                        let blk = asm.matrix_on(op, xs, win).map_err(num("assembly"))? * coeff;
+                        let blk = self.block((e, j, 1), asm, op, xs, win)? * coeff;
                         let mut v = mat.view_mut((r0, offsets[other]), (xs.len(), blk.ncols()));
                         v += &blk;
                     }
                 }
                 for (ti, t) in terms.iter().enumerate().filter(|(_, t)| t.unknown == j) {
                     let sup = t.basis.support();
-                    let blk = term_asms[ti]
-                        .matrix_on(op, xs, sup)
-                        .map_err(num("assembly"))?;
+                    let blk = self.block((e, j, 2 + ti), &term_asms[ti], op, xs, sup)?;
                     let col = blk * DVector::from_column_slice(&t.phi);
                     let mut v = mat.view_mut((r0, dim + ti), (xs.len(), 1));
                     v += &col;
@@ -597,6 +598,51 @@ impl SplitProblem {
         })
     }
 
+    /// `asm.matrix_on(op, xs, window)`, remembered across calls: a block
+    /// whose basis, window and points do not depend on the scalar (the
+    /// stick shear's blocks when `μ` is the unknown) is assembled once per
+    /// level. The key holds every number that defines the block exactly
+    /// (bit patterns, no hash), so a hit is the same matrix.
+    fn block(
+        &self,
+        (e, j, kind): (usize, usize, usize),
+        asm: &Assembler,
+        op: &Operator,
+        xs: &[f64],
+        window: (f64, f64),
+    ) -> Result<DMatrix<f64>, PlanError> {
+        let basis = asm.basis();
+        let mut key: Vec<u64> = vec![
+            e as u64,
+            j as u64,
+            kind as u64,
+            window.0.to_bits(),
+            window.1.to_bits(),
+        ];
+        for p in &basis.panels {
+            key.extend([p.a.to_bits(), p.b.to_bits(), p.nodes.len() as u64]);
+        }
+        key.push(u64::MAX);
+        for f in &basis.weight {
+            key.extend([f.at.to_bits(), f.exponent.to_bits()]);
+        }
+        key.push(u64::MAX);
+        key.extend(xs.iter().map(|x| x.to_bits()));
+        if let Ok(cache) = self.cache.lock()
+            && let Some(m) = cache.get(&key)
+        {
+            return Ok(m.clone());
+        }
+        let m = asm.matrix_on(op, xs, window).map_err(num("assembly"))?;
+        if let Ok(mut cache) = self.cache.lock() {
+            if cache.len() >= 64 {
+                cache.clear();
+            }
+            cache.insert(key, m.clone());
+        }
+        Ok(m)
+    }
+
     /// The assembler of `other` on piece `k` where unknown `j` is
     /// substituted by it.
     fn related_basis<'a>(
@@ -650,7 +696,7 @@ impl SplitProblem {
         };
         let piece = |basis: &PanelBasis, coef: &[f64], a: f64, b: f64| -> Result<f64, PlanError> {
             let (a, b) = (a.max(lo), b.min(hi));
-            if !(a < b) {
+            if a.partial_cmp(&b) != Some(std::cmp::Ordering::Less) {
                 return Ok(0.0);
             }
             let w = w.clone();
