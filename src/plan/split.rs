@@ -835,3 +835,35 @@ fn one_sided_limit(op: &Operator, t: &SingularTerm, asm: &Assembler) -> Result<f
     }
     Ok(total)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn singular_exponents_are_measured_and_snapped() {
+        let c = 0.4;
+        let hertz = |x: f64| x / (c * c - x * x).sqrt();
+        assert_eq!(singular_exponent(&hertz, c, -1, c), Some(0.5));
+        let third = |x: f64| (x - c).powf(-1.0 / 3.0) * (1.0 + x);
+        assert_eq!(singular_exponent(&third, c, 1, 0.5), Some(1.0 / 3.0));
+        // Bounded, or not integrable: refused.
+        assert_eq!(singular_exponent(&|x: f64| 1.0 + x, c, -1, c), None);
+        assert_eq!(singular_exponent(&|x: f64| 1.0 / (c - x), c, -1, c), None);
+    }
+
+    #[test]
+    fn the_ladder_is_the_hand_written_solvers() {
+        // The split solver reproduces crate::hertz's discretisation level by
+        // level (the oracle tests compare them to 1e-10).
+        for k in 0..10 {
+            let a = SplitLevel::level(k);
+            let b = crate::hertz::system::Resolution::level(k);
+            assert_eq!(
+                (a.layers, a.sigma, a.n_min, a.slope, a.n_max),
+                (b.layers_c, b.sigma, b.n_min, b.slope, b.n_max)
+            );
+            assert_eq!(b.layers_c, b.layers_1);
+        }
+    }
+}
