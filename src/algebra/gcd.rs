@@ -1,4 +1,6 @@
-//! Multivariate gcd over Q by the recursive primitive polynomial remainder
+//! Multivariate gcd over Q. The main route is Brown's modular algorithm
+//! ([`super::modgcd::mpoly_gcd`], exact by trial division); the fallback,
+//! used only if it gives up, is the recursive primitive polynomial remainder
 //! sequence: a polynomial is viewed in its most significant variable with
 //! coefficients in Q[remaining variables]; contents are gcds of those
 //! coefficients (recursively), primitive parts go through pseudo-remainders.
@@ -77,6 +79,9 @@ pub fn gcd(a: &MPoly, b: &MPoly) -> MPoly {
         (None, _) | (_, None) => return MPoly::one(n),
         (Some(x), Some(y)) => x.min(y),
     };
+    if let Some(g) = super::modgcd::mpoly_gcd(a, b) {
+        return g;
+    }
     if !a.contains_var(v) {
         return gcd(a, &content_in(b, v));
     }

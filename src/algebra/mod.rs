@@ -5,7 +5,9 @@
 //!   `Field`, implemented by ring *objects* stored beside the data;
 //! * [`rational`]: the field Q;
 //! * [`mpoly`]: sparse multivariate polynomials over Q in commuting symbols;
-//! * [`gcd`]: multivariate gcd by recursive primitive PRS;
+//! * [`gcd`]: multivariate gcd (modular first, primitive PRS as fallback);
+//! * [`modular`]: word-size prime fields, Z_p[x], Chinese remainders;
+//! * [`modgcd`]: Brown's modular multivariate gcd and the modular Q[x] gcd;
 //! * [`ratfunc`]: the field Q(s1..sn) of reduced rational functions;
 //! * [`upoly`]: dense univariate polynomials over any field object (Q[x],
 //!   Q(others)[λ]);
@@ -23,6 +25,8 @@ pub mod eliminate;
 pub mod gcd;
 pub mod intgcd;
 pub mod matrix;
+pub mod modgcd;
+pub mod modular;
 pub mod mpoly;
 pub mod ncpoly;
 pub mod ordered;
