@@ -246,7 +246,7 @@ pub fn mpoly_gcd(a: &MPoly, b: &MPoly) -> Option<MPoly> {
     let mut acc: Option<(Monomial, BTreeMap<Monomial, BigInt>, BigInt)> = None;
     let mut last_candidate: Option<MPoly> = None;
     for p in primes().take(MAX_PRIMES) {
-        let f = Fp { p };
+        let f = Fp::new(p);
         if f.reduce(la) == 0 || f.reduce(lb) == 0 {
             continue;
         }
@@ -320,7 +320,7 @@ pub fn qx_gcd(a: &[BigInt], b: &[BigInt]) -> Option<Vec<BigInt>> {
     let mut acc: Option<(usize, Vec<BigInt>, BigInt)> = None;
     let mut tried: Option<Vec<BigInt>> = None;
     for p in primes().take(MAX_PRIMES) {
-        let f = Fp { p };
+        let f = Fp::new(p);
         if f.reduce(la) == 0 || f.reduce(lb) == 0 {
             continue;
         }
@@ -370,6 +370,61 @@ pub fn qx_gcd(a: &[BigInt], b: &[BigInt]) -> Option<Vec<BigInt>> {
     None
 }
 
+/// The inverse of `a` modulo `m` over Q for integer polynomials (lowest
+/// coefficient first, `deg m ≥ 1`): `(S, R)` with integer `S` and
+/// `R = Res(a, m) ≠ 0` such that `(S/R)·a ≡ 1 (mod m)`, `deg S < deg m`.
+/// S and R are minors of the Sylvester matrix, so images modulo primes
+/// whose product exceeds twice the Hadamard bound determine them exactly.
+/// `None` if `a` looks non-invertible (the caller decides exactly).
+pub fn qx_inverse(a: &[BigInt], m: &[BigInt]) -> Option<(Vec<BigInt>, BigInt)> {
+    let (la, lm) = (a.last()?, m.last()?);
+    let (da, dm) = (a.len() - 1, m.len() - 1);
+    if dm == 0 {
+        return None;
+    }
+    let norm = |v: &[BigInt]| -> f64 {
+        // log2 of the Euclidean norm, from each coefficient's bit length.
+        let mx = v.iter().map(|c| c.bits()).max().unwrap_or(0) as f64;
+        mx + 0.5 * (v.len() as f64).log2() + 1.0
+    };
+    let bits = dm as f64 * norm(a) + da as f64 * norm(m) + 2.0;
+    let mut s_acc: Vec<BigInt> = vec![BigInt::zero(); dm];
+    let mut r_acc = BigInt::zero();
+    let mut modulus = BigInt::one();
+    let mut zeros = 0;
+    for p in primes() {
+        let f = Fp::new(p);
+        if f.reduce(la) == 0 || f.reduce(lm) == 0 {
+            continue;
+        }
+        let ap: UP = a.iter().map(|c| f.reduce(c)).collect();
+        let mp: UP = m.iter().map(|c| f.reduce(c)).collect();
+        let Some((s, r)) = zp::inverse_and_resultant(f, &ap, &mp) else {
+            zeros += 1;
+            if zeros > 8 {
+                return None;
+            }
+            continue;
+        };
+        let minv = f.inv(f.reduce(&modulus));
+        for (k, c) in s_acc.iter_mut().enumerate() {
+            let v = f.mul(s.get(k).copied().unwrap_or(0), r);
+            *c = crt(c, &modulus, v, f, minv);
+        }
+        r_acc = crt(&r_acc, &modulus, r, f, minv);
+        modulus *= p;
+        if modulus.bits() as f64 > bits {
+            let mut sv: Vec<BigInt> = s_acc.iter().map(|c| symmetric(c, &modulus)).collect();
+            while sv.last().is_some_and(|c| c.is_zero()) {
+                sv.pop();
+            }
+            let r = symmetric(&r_acc, &modulus);
+            return (!r.is_zero()).then_some((sv, r));
+        }
+    }
+    None
+}
+
 /// Primitive part with positive leading coefficient.
 fn primitive_int(c: &[BigInt]) -> Vec<BigInt> {
     let g = c.iter().fold(BigInt::zero(), |g, x| g.gcd(x));
@@ -397,8 +452,8 @@ pub fn int_div_exact(a: &[BigInt], d: &[BigInt]) -> Option<Vec<BigInt>> {
         return None;
     }
     // Fast rejection modulo a prime not dividing the leading coefficient.
-    if let Some(p) = primes().take(8).find(|&p| Fp { p }.reduce(&d[n]) != 0) {
-        let f = Fp { p };
+    if let Some(p) = primes().take(8).find(|&p| Fp::new(p).reduce(&d[n]) != 0) {
+        let f = Fp::new(p);
         let ap: UP = zp::trim(a.iter().map(|c| f.reduce(c)).collect());
         let dp: UP = d.iter().map(|c| f.reduce(c)).collect();
         if !zp::div_rem(f, &ap, &dp).1.is_empty() {
@@ -455,6 +510,25 @@ mod tests {
         assert_eq!(mpoly_gcd(&a, &b), Some(g.primitive_normal()));
         let c = &(x + y) * &(x - y);
         assert_eq!(mpoly_gcd(&c, &(x.pow(3) + y)), Some(MPoly::one(2)));
+    }
+
+    #[test]
+    fn modular_inverse_is_exact() {
+        let bi = |v: &[i64]| v.iter().map(|&c| BigInt::from(c)).collect::<Vec<_>>();
+        // a = 3x^2 − 7x + 11, m = 5x^3 + 2x − 9 (coprime)
+        let (a, m) = (bi(&[11, -7, 3]), bi(&[-9, 2, 0, 5]));
+        let (s, r) = qx_inverse(&a, &m).unwrap();
+        // S·a − R ≡ 0 (mod m) over Q: check with the exact Q[x] ring.
+        use crate::algebra::qx::{QPoly, QxRing};
+        use crate::algebra::ring::Ring;
+        let q = QxRing::new("x");
+        let lhs = q.sub(
+            &q.mul(&QPoly::from_ints(s), &QPoly::from_ints(a.clone())),
+            &QPoly::from_ints(vec![r]),
+        );
+        assert!(q.rem(&lhs, &QPoly::from_ints(m.clone())).is_zero());
+        // Not invertible: a common factor x − 1.
+        assert!(qx_inverse(&bi(&[-1, 1]), &bi(&[-1, 0, 1])).is_none());
     }
 
     #[test]

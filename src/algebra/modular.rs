@@ -8,14 +8,41 @@ use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
-/// The prime field Z_p, `p < 2^62`, elements in `0..p`.
+/// The prime field Z_p, `p < 2^62` odd, elements in `0..p` (products by
+/// Montgomery reduction: two REDC steps instead of a 128-bit division).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Fp {
     /// The modulus.
     pub p: u64,
+    /// `-p⁻¹ mod 2^64`.
+    pinv: u64,
+    /// `2^128 mod p`.
+    r2: u64,
 }
 
 impl Fp {
+    /// Z_p for an odd `p < 2^62`.
+    pub fn new(p: u64) -> Self {
+        debug_assert!(p % 2 == 1 && p < 1 << 62);
+        // Newton iteration for p⁻¹ mod 2^64.
+        let mut inv: u64 = 1;
+        for _ in 0..6 {
+            inv = inv.wrapping_mul(2u64.wrapping_sub(p.wrapping_mul(inv)));
+        }
+        let r = ((1u128 << 64) % p as u128) as u64;
+        let r2 = ((r as u128 * r as u128) % p as u128) as u64;
+        Fp {
+            p,
+            pinv: inv.wrapping_neg(),
+            r2,
+        }
+    }
+    #[inline]
+    fn redc(self, t: u128) -> u64 {
+        let m = (t as u64).wrapping_mul(self.pinv);
+        let u = ((t + m as u128 * self.p as u128) >> 64) as u64;
+        if u >= self.p { u - self.p } else { u }
+    }
     /// `a + b`.
     #[inline]
     pub fn add(self, a: u64, b: u64) -> u64 {
@@ -35,7 +62,7 @@ impl Fp {
     /// `a·b`.
     #[inline]
     pub fn mul(self, a: u64, b: u64) -> u64 {
-        ((a as u128 * b as u128) % self.p as u128) as u64
+        self.redc(self.redc(a as u128 * b as u128) as u128 * self.r2 as u128)
     }
     /// `a^e`.
     pub fn pow(self, mut a: u64, mut e: u64) -> u64 {
@@ -72,7 +99,7 @@ pub fn is_prime(n: u64) -> bool {
             return n == q;
         }
     }
-    let f = Fp { p: n };
+    let f = Fp::new(n);
     let (mut d, mut s) = (n - 1, 0);
     while d % 2 == 0 {
         d /= 2;
@@ -256,6 +283,36 @@ pub fn gcd(f: Fp, a: &[u64], b: &[u64]) -> UP {
     monic(f, &x)
 }
 
+/// `(s, Res(a, m))` with `s·a ≡ 1 (mod m)`, `deg s < deg m`, for `a` and
+/// `m` with `deg m ≥ 1`; `None` when `gcd(a, m) ≠ 1` (the resultant is 0).
+pub fn inverse_and_resultant(f: Fp, a: &[u64], m: &[u64]) -> Option<(UP, u64)> {
+    let (da, dm) = (deg(a)?, deg(m)?);
+    // Euclid on (m, a), tracking t with t·a ≡ y (mod m) and Res(m, a).
+    let (mut x, mut y) = (m.to_vec(), a.to_vec());
+    let (mut t0, mut t1): (UP, UP) = (Vec::new(), vec![1]);
+    let mut res = 1u64;
+    loop {
+        let (dx, dy) = (deg(&x)?, deg(&y)?);
+        if dy == 0 {
+            res = f.mul(res, f.pow(y[0], dx as u64));
+            let c = f.inv(y[0]);
+            let s = div_rem(f, &scale(f, &t1, c), m).1;
+            // Res(a, m) = (−1)^(deg a·deg m) Res(m, a).
+            let sign = if (da * dm) % 2 == 1 { f.neg(res) } else { res };
+            return Some((s, sign));
+        }
+        let (q, r) = div_rem(f, &x, &y);
+        let dr = deg(&r)?; // r = 0: a common factor
+        if (dx * dy) % 2 == 1 {
+            res = f.neg(res);
+        }
+        res = f.mul(res, f.pow(y[dy], (dx - dr) as u64));
+        let t = sub(f, &t0, &mul(f, &q, &t1));
+        t0 = std::mem::replace(&mut t1, t);
+        x = std::mem::replace(&mut y, r);
+    }
+}
+
 /// Chinese remainder: the residue `c mod m` (with `c` in `0..m` or the
 /// symmetric range) is combined with `r mod p` into a residue mod `m·p`,
 /// returned in `0..m·p`. `minv` is `m⁻¹ mod p`.
@@ -312,7 +369,7 @@ mod tests {
 
     #[test]
     fn euclid_mod_p() {
-        let f = Fp { p: 1_000_000_007 };
+        let f = Fp::new(1_000_000_007);
         // (x + 1)(x + 2) and (x + 1)(x + 3)
         let a = mul(f, &[1, 1], &[2, 1]);
         let b = mul(f, &[1, 1], &[3, 1]);
@@ -322,12 +379,23 @@ mod tests {
     }
 
     #[test]
+    fn inverse_and_resultant_mod_p() {
+        let f = Fp::new(1_000_000_007);
+        // a = x + 2, m = x^2 + 1: Res(a, m) = m(−2) = 5, a⁻¹ = (2 − x)/5.
+        let (s, r) = inverse_and_resultant(f, &[2, 1], &[1, 0, 1]).unwrap();
+        assert_eq!(r, 5);
+        let i5 = f.inv(5);
+        assert_eq!(s, vec![f.mul(2, i5), f.mul(f.neg(1), i5)]);
+        assert!(inverse_and_resultant(f, &[1, 1], &[f.neg(1), 0, 1]).is_none());
+    }
+
+    #[test]
     fn crt_and_reconstruction() {
         let ps: Vec<u64> = primes().take(3).collect();
         let x = BigInt::from(-123_456_789_012_345_678_901_234_567i128);
         let (mut c, mut m) = (BigInt::zero(), BigInt::one());
         for &p in &ps {
-            let f = Fp { p };
+            let f = Fp::new(p);
             let minv = f.inv(f.reduce(&m));
             c = crt(&c, &m, f.reduce(&x), f, minv);
             m *= p;

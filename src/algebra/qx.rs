@@ -231,6 +231,27 @@ impl QxRing {
         (r0.scale(&inv), self.rem(&s0.scale(&inv), m))
     }
 
+    /// The inverse of `a` modulo `m` (`deg m ≥ 1`), if `gcd(a, m) = 1`:
+    /// modular images and the Chinese remainder theorem
+    /// ([`super::modgcd::qx_inverse`]) first, the exact extended Euclid
+    /// over Q when that route declines.
+    pub fn inverse_mod(&self, a: &QPoly, m: &QPoly) -> Option<QPoly> {
+        let a = self.rem(a, m);
+        if a.is_zero() {
+            return None;
+        }
+        if let Some((s, r)) = super::modgcd::qx_inverse(&a.num, &m.num) {
+            // a = A/da, so a⁻¹ = da·A⁻¹; m and its numerator generate the
+            // same ideal.
+            return Some(QPoly::new(
+                s.into_iter().map(|c| c * &a.den).collect(),
+                r,
+            ));
+        }
+        let (g, s) = self.ext_gcd_mod(&a, m);
+        self.is_unit(&g).then_some(s)
+    }
+
     /// `a mod m`.
     pub fn rem(&self, a: &QPoly, m: &QPoly) -> QPoly {
         self.div_rem(a, m).1
