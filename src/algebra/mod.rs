@@ -6,6 +6,7 @@
 //! * [`rational`]: the field Q;
 //! * [`mpoly`]: sparse multivariate polynomials over Q in commuting symbols;
 //! * [`gcd`]: multivariate gcd (modular first, primitive PRS as fallback);
+//! * [`kronecker`]: integer polynomial products by Kronecker substitution;
 //! * [`modular`]: word-size prime fields, Z_p[x], Chinese remainders;
 //! * [`modgcd`]: Brown's modular multivariate gcd and the modular Q[x] gcd;
 //! * [`ratfunc`]: the field Q(s1..sn) of reduced rational functions;
@@ -24,6 +25,7 @@
 pub mod eliminate;
 pub mod gcd;
 pub mod intgcd;
+pub mod kronecker;
 pub mod matrix;
 pub mod modgcd;
 pub mod modular;

@@ -144,6 +144,9 @@ impl QPoly {
     }
 }
 
+/// Shorter factors use the schoolbook product.
+const KRONECKER_MIN_LEN: usize = 24;
+
 fn add_vec(
     a: &[BigInt],
     fa: Option<&BigInt>,
@@ -172,6 +175,9 @@ fn add_vec(
 fn conv(a: &[BigInt], b: &[BigInt]) -> Vec<BigInt> {
     if a.is_empty() || b.is_empty() {
         return Vec::new();
+    }
+    if a.len().min(b.len()) >= KRONECKER_MIN_LEN {
+        return super::kronecker::mul(a, b);
     }
     let mut c = vec![BigInt::zero(); a.len() + b.len() - 1];
     for (i, x) in a.iter().enumerate() {
