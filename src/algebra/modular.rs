@@ -64,6 +64,16 @@ impl Fp {
     pub fn mul(self, a: u64, b: u64) -> u64 {
         self.redc(self.redc(a as u128 * b as u128) as u128 * self.r2 as u128)
     }
+    /// `c` prepared for repeated products [`Fp::mul_pre`] (Montgomery form).
+    #[inline]
+    pub fn prep(self, c: u64) -> u64 {
+        self.redc(c as u128 * self.r2 as u128)
+    }
+    /// `c·b` for `cm = prep(c)`: one reduction instead of two.
+    #[inline]
+    pub fn mul_pre(self, cm: u64, b: u64) -> u64 {
+        self.redc(cm as u128 * b as u128)
+    }
     /// `a^e`.
     pub fn pow(self, mut a: u64, mut e: u64) -> u64 {
         let mut r = 1 % self.p;
@@ -190,7 +200,8 @@ pub fn scale(f: Fp, a: &[u64], c: u64) -> UP {
     if c == 0 {
         return Vec::new();
     }
-    a.iter().map(|&x| f.mul(x, c)).collect()
+    let cm = f.prep(c);
+    a.iter().map(|&x| f.mul_pre(cm, x)).collect()
 }
 
 /// `a·b` (schoolbook).
@@ -256,8 +267,9 @@ pub fn div_rem(f: Fp, a: &[u64], b: &[u64]) -> (UP, UP) {
         if c == 0 {
             continue;
         }
+        let cm = f.prep(c);
         for j in 0..=n {
-            r[i + j] = f.sub(r[i + j], f.mul(c, b[j]));
+            r[i + j] = f.sub(r[i + j], f.mul_pre(cm, b[j]));
         }
     }
     r.truncate(n);

@@ -552,13 +552,117 @@ fn denominator_free(
     })
 }
 
+/// Above this many minors the determinantal mode takes the route through
+/// one certified Smith form per symbol instead of enumerating minors.
+pub const MINOR_ROUTE_LIMIT: u128 = 2_000;
+
+/// The primitive associate in Q[all] of an element of Q(others)[λ]
+/// (denominators cleared, content in Q[others] removed).
+fn cleared_primitive(e: &UPoly<RatFunc>, p: usize, n: usize) -> MPoly {
+    let l = e.0.iter().fold(MPoly::one(n), |l, c| lcm(&l, c.den()));
+    let cs: Vec<MPoly> =
+        e.0.iter()
+            .map(|c| c.num() * &l.div_exact(c.den()).expect("lcm"))
+            .collect();
+    let poly = MPoly::from_coeffs_in(p, &cs, n);
+    let c = content_in(&poly, p);
+    poly.div_exact(&c).expect("content divides").primitive_normal()
+}
+
+/// Determinantal divisors over Q[all] without minors. For each symbol s
+/// occurring in A, the Smith form over Q(others)[s] is computed and
+/// certified; the primitive part (in s) of its k-th determinantal divisor
+/// is the product of the irreducible factors of d_k that involve s, with
+/// their multiplicities. Every non-constant irreducible factor involves
+/// some symbol, so d_k = lcm over s of these parts.
+fn divisors_by_symbol(a: &Matrix<PolyRing>) -> Result<(super::divisors::Divisors<MPoly>, Certificate), SmithError> {
+    let n = a.ring.nvars();
+    let mut checks = Vec::new();
+    let mut per_symbol: Vec<Vec<MPoly>> = Vec::new();
+    for p in (0..n).filter(|&p| a.entries().iter().any(|e| e.contains_var(p))) {
+        let ap = to_principal(a, p);
+        let dec = SmithDecomposition::new(&ap);
+        let cert = dec.certify_with(&ap, &ClearedDenominators { p, nvars: n });
+        fail_if_unverified(&cert)?;
+        checks.push(Check {
+            property: format!("Smith form over {} certified", ap.ring.name()),
+            ok: true,
+            detail: cert
+                .checks
+                .iter()
+                .map(|c| c.property.clone())
+                .collect::<Vec<_>>()
+                .join("; "),
+        });
+        let mut acc = MPoly::one(n);
+        per_symbol.push(
+            dec.invariant_factors()
+                .iter()
+                .map(|f| {
+                    acc = &acc * &cleared_primitive(f, p, n);
+                    acc.primitive_normal()
+                })
+                .collect(),
+        );
+    }
+    let rank = per_symbol.first().map_or(0, |d| d.len());
+    if per_symbol.iter().any(|d| d.len() != rank) {
+        return Err(SmithError::CertificateFailed(
+            "the ranks over Q(others)[s] differ between symbols".into(),
+        ));
+    }
+    let mut det: Vec<MPoly> = Vec::with_capacity(rank);
+    let mut inv: Vec<MPoly> = Vec::with_capacity(rank);
+    if per_symbol.is_empty() {
+        // A constant matrix: its rank over Q, every divisor 1.
+        let r = a.rank();
+        det = vec![MPoly::one(n); r];
+        inv = vec![MPoly::one(n); r];
+    }
+    for k in 0..rank {
+        let dk = per_symbol
+            .iter()
+            .fold(MPoly::one(n), |l, d| lcm(&l, &d[k]));
+        let prev = if k == 0 { MPoly::one(n) } else { det[k - 1].clone() };
+        let fk = dk.div_exact(&prev).ok_or_else(|| {
+            SmithError::CertificateFailed("d_(k-1) does not divide d_k".into())
+        })?;
+        inv.push(fk.primitive_normal());
+        det.push(dk);
+    }
+    let chain = inv.windows(2).all(|w| w[1].div_exact(&w[0]).is_some());
+    checks.push(Check {
+        property: "divisibility f1 | f2 | …".into(),
+        ok: chain,
+        detail: "each invariant factor divides the next (exact division over Q[all])".into(),
+    });
+    checks.push(Check {
+        property: "d_k = lcm over symbols s of the primitive divisors over Q(others)[s]".into(),
+        ok: true,
+        detail: "every irreducible factor of d_k involves a symbol s and appears with its multiplicity in the certified Smith form over Q(others)[s]".into(),
+    });
+    Ok((
+        super::divisors::Divisors {
+            determinantal: det,
+            invariant: inv,
+        },
+        Certificate { checks },
+    ))
+}
+
 fn divisors_mode(
     name: &str,
     a: &Matrix<PolyRing>,
     opts: &SmithOptions,
 ) -> Result<SmithReport, SmithError> {
-    let dv = determinantal_divisors(a, MINOR_LIMIT)?;
-    let cert = certify_divisors(a, &dv);
+    let by_minors = super::divisors::minor_count(a.rows(), a.cols()) <= MINOR_ROUTE_LIMIT;
+    let (dv, cert) = if by_minors {
+        let dv = determinantal_divisors(a, MINOR_LIMIT)?;
+        let cert = certify_divisors(a, &dv);
+        (dv, cert)
+    } else {
+        divisors_by_symbol(a)?
+    };
     fail_if_unverified(&cert)?;
     let r = &a.ring;
     let mut d = Matrix::zeros(r.clone(), a.rows(), a.cols());
@@ -576,7 +680,11 @@ fn divisors_mode(
         matrix: name.to_string(),
         ring: r.name(),
         mode: Mode::DeterminantalDivisors,
-        algorithm: "gcd of k×k minors (Bareiss determinants, primitive-PRS gcd)".to_string(),
+        algorithm: if by_minors {
+            "gcd of k×k minors (Bareiss determinants, modular gcd)".to_string()
+        } else {
+            "lcm over each symbol s of the determinantal divisors of the certified Smith form over Q(others)[s] (no minors enumerated)".to_string()
+        },
         mode_note: format!(
             "invariant factors over {} from determinantal divisors (d_k = gcd of the k×k minors, f_k = d_k/d_(k-1)); this ring is not a principal ideal domain, so a unimodular U, V with U·A·V = D need not exist and none is claimed; name a principal symbol (`principal s` or --principal s) for transforms",
             r.name()
@@ -668,6 +776,36 @@ mod tests {
         assert_eq!(r.mode, Mode::DeterminantalDivisors);
         assert_eq!(r.invariant_factors, vec!["1", "k1*k4 - k2*k3"]);
         assert!(r.u.is_none() && r.verified);
+    }
+
+    #[test]
+    fn determinantal_divisors_by_symbol_agree_with_minors() {
+        // A = B·diag(1, x + y, (x + y)·x·(y + 1))·C with B, C invertible
+        // over Q[x, y] (constant and unitriangular).
+        let n = 2;
+        let ring = PolyRing::new(vec!["x".into(), "y".into()]);
+        let (x, y) = (MPoly::var(0, n), MPoly::var(1, n));
+        let one = MPoly::one(n);
+        let c = |v: i64| MPoly::constant(crate::algebra::rational::qi(v), n);
+        let f2 = &x + &y;
+        let f3 = &(&f2 * &x) * &(&y + &one);
+        let zero = MPoly::zero(n);
+        let d = Matrix::new(
+            ring.clone(),
+            3,
+            3,
+            vec![one.clone(), zero.clone(), zero.clone(), zero.clone(), f2, zero.clone(), zero.clone(), zero, f3],
+        );
+        let b = Matrix::new(ring.clone(), 3, 3, vec![c(1), c(2), c(0), c(-1), c(3), c(1), c(2), c(0), c(5)]);
+        let cm = Matrix::new(ring.clone(), 3, 3, vec![one.clone(), y.clone(), x.clone(), c(0), one.clone(), &x * &y, c(0), c(0), one]);
+        let a = b.mul(&d).unwrap().mul(&cm).unwrap();
+        let by_minors = determinantal_divisors(&a, MINOR_LIMIT).unwrap();
+        let (by_symbol, cert) = divisors_by_symbol(&a).unwrap();
+        assert!(cert.verified());
+        assert_eq!(by_symbol.invariant, by_minors.invariant);
+        assert_eq!(by_symbol.determinantal, by_minors.determinantal);
+        let shown: Vec<String> = by_symbol.invariant.iter().map(|f| ring.format(f)).collect();
+        assert_eq!(shown, vec!["1", "x + y", "x^2*y + x^2 + x*y^2 + x*y"]);
     }
 
     #[test]
