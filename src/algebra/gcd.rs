@@ -117,6 +117,24 @@ fn primitive_prs(a: MPoly, b: MPoly, v: usize) -> MPoly {
     }
 }
 
+/// `(g, a/g, b/g)` with `g = gcd(a, b)` normalised as in [`gcd`]; the
+/// modular route returns the cofactors from its trial division, so callers
+/// that reduce fractions divide only once.
+pub fn gcd_cofactors(a: &MPoly, b: &MPoly) -> (MPoly, MPoly, MPoly) {
+    if !a.is_zero() && !b.is_zero() && a.main_var().is_some() && b.main_var().is_some() {
+        if let Some(r) = super::modgcd::mpoly_gcd_cofactors(a, b) {
+            return r;
+        }
+    }
+    let g = gcd(a, b);
+    if g.is_zero() {
+        return (g, a.clone(), b.clone());
+    }
+    let qa = a.div_exact(&g).expect("gcd divides");
+    let qb = b.div_exact(&g).expect("gcd divides");
+    (g, qa, qb)
+}
+
 /// Least common multiple (normalised); zero if either is zero.
 pub fn lcm(a: &MPoly, b: &MPoly) -> MPoly {
     if a.is_zero() || b.is_zero() {

@@ -15,6 +15,7 @@ use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 use std::collections::BTreeMap;
+use std::collections::btree_map::Entry;
 
 /// Sparse polynomial over Z_p: terms in descending lexicographic order,
 /// no zero coefficients (the layout of [`MPoly`]).
@@ -211,13 +212,15 @@ fn newton_step(f: Fp, c: &RP, h: &SP, q: &UP, x: u64) -> RP {
     map.into_iter().rev().collect()
 }
 
-/// Integer coefficients of `u·a`, `u` making them coprime integers.
-fn integer_terms(a: &MPoly) -> Vec<(Monomial, BigInt)> {
+/// Integer coefficients of `u·a` and `u`, `u` making them coprime integers.
+fn integer_terms(a: &MPoly) -> (Vec<(Monomial, BigInt)>, Q) {
     let u = a.integer_scale();
-    a.terms()
+    let t = a
+        .terms()
         .iter()
         .map(|(m, c)| (m.clone(), (c * &u).to_integer()))
-        .collect()
+        .collect();
+    (t, u)
 }
 
 fn reduce_terms(f: Fp, a: &[(Monomial, BigInt)]) -> SP {
@@ -234,9 +237,14 @@ fn reduce_terms(f: Fp, a: &[(Monomial, BigInt)]) -> SP {
 /// coefficients, positive leading coefficient). `None` if the algorithm
 /// gave up; a returned value has passed exact trial division.
 pub fn mpoly_gcd(a: &MPoly, b: &MPoly) -> Option<MPoly> {
+    mpoly_gcd_cofactors(a, b).map(|(g, _, _)| g)
+}
+
+/// Like [`mpoly_gcd`], with the cofactors: `(g, a/g, b/g)`.
+pub fn mpoly_gcd_cofactors(a: &MPoly, b: &MPoly) -> Option<(MPoly, MPoly, MPoly)> {
     let n = a.nvars();
-    let ia = integer_terms(a);
-    let ib = integer_terms(b);
+    let (ia, ua) = integer_terms(a);
+    let (ib, ub) = integer_terms(b);
     let (la, lb) = (&ia.first()?.1, &ib.first()?.1);
     let gamma = la.gcd(lb);
     let vars: Vec<usize> = (0..n)
@@ -244,7 +252,7 @@ pub fn mpoly_gcd(a: &MPoly, b: &MPoly) -> Option<MPoly> {
         .collect();
     let mut pts = Points::new(0x9E37_79B9_7F4A_7C15);
     let mut acc: Option<(Monomial, BTreeMap<Monomial, BigInt>, BigInt)> = None;
-    let mut last_candidate: Option<MPoly> = None;
+    let mut last_candidate: Option<Vec<(Monomial, BigInt)>> = None;
     for p in primes().take(MAX_PRIMES) {
         let f = Fp::new(p);
         if f.reduce(la) == 0 || f.reduce(lb) == 0 {
@@ -256,7 +264,7 @@ pub fn mpoly_gcd(a: &MPoly, b: &MPoly) -> Option<MPoly> {
         };
         let lm = g[0].0.clone();
         if lm.iter().all(|&e| e == 0) {
-            return Some(MPoly::one(n));
+            return Some((MPoly::one(n), a.clone(), b.clone()));
         }
         let gp = f.reduce(&gamma);
         match &mut acc {
@@ -292,22 +300,81 @@ pub fn mpoly_gcd(a: &MPoly, b: &MPoly) -> Option<MPoly> {
         }
         // Stable under one more prime: try the candidate.
         let (_, map, _) = acc.as_ref()?;
-        let cand = MPoly::from_terms(
-            n,
-            map.iter()
-                .filter(|(_, c)| !c.is_zero())
-                .map(|(k, c)| (k.clone(), Q::from_integer(c.clone()))),
-        )
-        .primitive_normal();
+        let cand = primitive_terms(map);
         if last_candidate.as_ref() == Some(&cand) {
             continue;
         }
-        if a.div_exact(&cand).is_some() && b.div_exact(&cand).is_some() {
-            return Some(cand);
+        if let Some(qa) = int_div_terms(&ia, &cand) {
+            if let Some(qb) = int_div_terms(&ib, &cand) {
+                let to_q = |t: &[(Monomial, BigInt)], u: &Q| {
+                    MPoly::from_sorted_terms(
+                        n,
+                        t.iter()
+                            .map(|(m, c)| (m.clone(), Q::from_integer(c.clone()) / u))
+                            .collect(),
+                    )
+                };
+                let one = Q::one();
+                return Some((to_q(&cand, &one), to_q(&qa, &ua), to_q(&qb, &ub)));
+            }
         }
         last_candidate = Some(cand);
     }
     None
+}
+
+/// The primitive integer polynomial with positive leading coefficient of a
+/// CRT image (descending terms, zeros dropped).
+fn primitive_terms(map: &BTreeMap<Monomial, BigInt>) -> Vec<(Monomial, BigInt)> {
+    let terms: Vec<(Monomial, BigInt)> = map
+        .iter()
+        .rev()
+        .filter(|(_, c)| !c.is_zero())
+        .map(|(m, c)| (m.clone(), c.clone()))
+        .collect();
+    let mut g = terms.iter().fold(BigInt::zero(), |g, (_, c)| g.gcd(c));
+    if terms.first().is_some_and(|(_, c)| c.is_negative()) {
+        g = -g;
+    }
+    terms.into_iter().map(|(m, c)| (m, c / &g)).collect()
+}
+
+/// Exact quotient of integer polynomials (descending lex terms), if `d`
+/// divides `a` over Z: the remainder is kept in an ordered map, so each
+/// quotient term costs `#d` updates instead of a full subtraction.
+fn int_div_terms(
+    a: &[(Monomial, BigInt)],
+    d: &[(Monomial, BigInt)],
+) -> Option<Vec<(Monomial, BigInt)>> {
+    let (dm, dc) = d.first()?;
+    let mut r: BTreeMap<Monomial, BigInt> = a.iter().cloned().collect();
+    let mut q = Vec::new();
+    while let Some((rm, rc)) = r.pop_last() {
+        if !rm.iter().zip(dm).all(|(x, y)| x >= y) {
+            return None;
+        }
+        let (c, rem) = rc.div_rem(dc);
+        if !rem.is_zero() {
+            return None;
+        }
+        let m: Monomial = rm.iter().zip(dm).map(|(x, y)| x - y).collect();
+        for (tm, tc) in &d[1..] {
+            let key: Monomial = m.iter().zip(tm).map(|(x, y)| x + y).collect();
+            match r.entry(key) {
+                Entry::Occupied(mut o) => {
+                    *o.get_mut() -= &c * tc;
+                    if o.get().is_zero() {
+                        o.remove();
+                    }
+                }
+                Entry::Vacant(v) => {
+                    v.insert(-(&c * tc));
+                }
+            }
+        }
+        q.push((m, c));
+    }
+    Some(q)
 }
 
 /// Monic gcd over Q of two univariate integer polynomials (lowest

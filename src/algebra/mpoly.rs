@@ -98,6 +98,14 @@ impl MPoly {
         }
     }
 
+    /// Builds a polynomial from terms already in descending lexicographic
+    /// order with distinct monomials and nonzero coefficients.
+    pub fn from_sorted_terms(nvars: usize, terms: Vec<(Monomial, Q)>) -> Self {
+        debug_assert!(terms.windows(2).all(|w| w[0].0 > w[1].0));
+        debug_assert!(terms.iter().all(|(_, c)| !c.is_zero()));
+        MPoly { nvars, terms }
+    }
+
     /// Number of variables of the ambient ring.
     pub fn nvars(&self) -> usize {
         self.nvars
