@@ -99,8 +99,10 @@ fn gcd_zp(f: Fp, a: &SP, b: &SP, vars: &[usize], pts: &mut Points) -> Option<SP>
     let rb = to_recursive(b, last);
     // Contents in Z_p[last] and primitive parts.
     let content = |r: &RP| {
-        r.iter()
-            .fold(Vec::new(), |g: UP, (_, u)| if g.len() == 1 { g } else { zp::gcd(f, &g, u) })
+        r.iter().fold(
+            Vec::new(),
+            |g: UP, (_, u)| if g.len() == 1 { g } else { zp::gcd(f, &g, u) },
+        )
     };
     let (ca, cb) = (content(&ra), content(&rb));
     let c = zp::gcd(f, &ca, &cb);
@@ -258,8 +260,13 @@ pub fn mpoly_gcd_cofactors(a: &MPoly, b: &MPoly) -> Option<(MPoly, MPoly, MPoly)
         if f.reduce(la) == 0 || f.reduce(lb) == 0 {
             continue;
         }
-        let Some(g) = gcd_zp(f, &reduce_terms(f, &ia), &reduce_terms(f, &ib), &vars, &mut pts)
-        else {
+        let Some(g) = gcd_zp(
+            f,
+            &reduce_terms(f, &ia),
+            &reduce_terms(f, &ib),
+            &vars,
+            &mut pts,
+        ) else {
             continue;
         };
         let lm = g[0].0.clone();
@@ -272,7 +279,11 @@ pub fn mpoly_gcd_cofactors(a: &MPoly, b: &MPoly) -> Option<(MPoly, MPoly, MPoly)
             Some((l, map, m)) if lm == *l => {
                 let minv = f.inv(f.reduce(m));
                 let img: BTreeMap<&Monomial, u64> = g.iter().map(|(k, v)| (k, *v)).collect();
-                let keys: Vec<Monomial> = map.keys().cloned().chain(img.keys().map(|k| (*k).clone())).collect();
+                let keys: Vec<Monomial> = map
+                    .keys()
+                    .cloned()
+                    .chain(img.keys().map(|k| (*k).clone()))
+                    .collect();
                 let mut changed = false;
                 for k in keys {
                     let old = map.get(&k).cloned().unwrap_or_default();
@@ -292,7 +303,12 @@ pub fn mpoly_gcd_cofactors(a: &MPoly, b: &MPoly) -> Option<(MPoly, MPoly, MPoly)
             _ => {
                 let map = g
                     .iter()
-                    .map(|(k, v)| (k.clone(), symmetric(&BigInt::from(f.mul(*v, gp)), &BigInt::from(p))))
+                    .map(|(k, v)| {
+                        (
+                            k.clone(),
+                            symmetric(&BigInt::from(f.mul(*v, gp)), &BigInt::from(p)),
+                        )
+                    })
                     .collect();
                 acc = Some((lm, map, BigInt::from(p)));
                 continue;
@@ -420,7 +436,13 @@ pub fn qx_gcd(a: &[BigInt], b: &[BigInt]) -> Option<Vec<BigInt>> {
             }
             _ => {
                 let pb = BigInt::from(p);
-                acc = Some((d, img.iter().map(|&c| symmetric(&BigInt::from(c), &pb)).collect(), pb));
+                acc = Some((
+                    d,
+                    img.iter()
+                        .map(|&c| symmetric(&BigInt::from(c), &pb))
+                        .collect(),
+                    pb,
+                ));
                 continue;
             }
         }

@@ -359,7 +359,11 @@ pub fn rational_reconstruct(c: &BigInt, m: &BigInt) -> Option<(BigInt, BigInt)> 
     if t1.is_zero() || t1.abs() > bound {
         return None;
     }
-    let (n, d) = if t1.is_negative() { (-r1, -t1) } else { (r1, t1) };
+    let (n, d) = if t1.is_negative() {
+        (-r1, -t1)
+    } else {
+        (r1, t1)
+    };
     if !n.gcd(&d).is_one() {
         return None;
     }

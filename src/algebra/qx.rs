@@ -249,10 +249,7 @@ impl QxRing {
         if let Some((s, r)) = super::modgcd::qx_inverse(&a.num, &m.num) {
             // a = A/da, so a⁻¹ = da·A⁻¹; m and its numerator generate the
             // same ideal.
-            return Some(QPoly::new(
-                s.into_iter().map(|c| c * &a.den).collect(),
-                r,
-            ));
+            return Some(QPoly::new(s.into_iter().map(|c| c * &a.den).collect(), r));
         }
         let (g, s) = self.ext_gcd_mod(&a, m);
         self.is_unit(&g).then_some(s)

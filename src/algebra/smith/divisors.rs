@@ -170,7 +170,12 @@ mod tests {
         // Σ C(66,k)² = C(132,66) − 1 ≈ 3.8e38 > u128::MAX: saturates.
         assert_eq!(minor_count(66, 66), u128::MAX);
         assert!(minor_count(60, 60) < u128::MAX);
-        let e = TooManyMinors { needed: u128::MAX, rows: 66, cols: 66, limit: 200_000 };
+        let e = TooManyMinors {
+            needed: u128::MAX,
+            rows: 66,
+            cols: 66,
+            limit: 200_000,
+        };
         assert!(e.to_string().contains("more than 3.4e38 minors of a 66×66"));
     }
 }

@@ -133,6 +133,30 @@ pub enum SmithError {
 /// Limit on the number of minors in the determinantal mode.
 pub const MINOR_LIMIT: u128 = 200_000;
 
+/// A callback told the name of each phase as it starts (the CLI shows it
+/// on a terminal); the algebra never prints.
+#[derive(Clone, Default)]
+pub struct PhaseHook(pub Option<std::sync::Arc<dyn Fn(&str) + Send + Sync>>);
+
+impl PhaseHook {
+    /// Announces a phase.
+    pub fn phase(&self, name: &str) {
+        if let Some(f) = &self.0 {
+            f(name);
+        }
+    }
+}
+
+impl std::fmt::Debug for PhaseHook {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(if self.0.is_some() {
+            "PhaseHook(set)"
+        } else {
+            "PhaseHook(none)"
+        })
+    }
+}
+
 /// Options of the driver.
 #[derive(Clone, Debug, Default)]
 pub struct SmithOptions {
@@ -140,6 +164,8 @@ pub struct SmithOptions {
     pub principal: Option<usize>,
     /// Also produce LaTeX forms.
     pub latex: bool,
+    /// Phase announcements (progress display).
+    pub progress: PhaseHook,
 }
 
 /// Computes, certifies and reports the Smith form of `a` (named `name`).
@@ -222,6 +248,8 @@ fn generic_report<R: crate::algebra::ring::EuclideanDomain>(
     opts: &SmithOptions,
     check: &dyn ProductCheck<R>,
 ) -> Result<(SmithReport, SmithDecomposition<R>), SmithError> {
+    opts.progress
+        .phase("certifying U·A·V = D, U·U⁻¹ = I, V·V⁻¹ = I");
     let cert = dec.certify_with(a, check);
     fail_if_unverified(&cert)?;
     let inv = dec.invariant_factors();
@@ -273,6 +301,8 @@ fn one_symbol(
             ),
         )
     };
+    opts.progress
+        .phase(&format!("Smith form over {}", au.ring.name()));
     let (dec, alg) = decompose_qx(&au);
     Ok(generic_report(
         name,
@@ -330,6 +360,8 @@ fn principal(
         "principal symbol {}: Smith form over {ring_name}, a principal ideal domain; entries of U and V are rational functions of the other symbols",
         a.ring.names[p]
     );
+    opts.progress
+        .phase(&format!("elimination over {ring_name}"));
     let dec = SmithDecomposition::new(&ap);
     let alg = "elimination over K[λ]: least-degree pivot, division with remainder";
     let check = ClearedDenominators {
@@ -348,6 +380,7 @@ fn principal(
         opts,
         &check,
     )?;
+    opts.progress.phase("denominator-free form over Q[all]");
     report.denominator_free = Some(denominator_free(a, &dec, p)?);
     Ok(report)
 }
@@ -554,7 +587,7 @@ fn denominator_free(
 
 /// Above this many minors the determinantal mode takes the route through
 /// one certified Smith form per symbol instead of enumerating minors.
-pub const MINOR_ROUTE_LIMIT: u128 = 2_000;
+pub const MINOR_ROUTE_LIMIT: u128 = 20_000;
 
 /// The primitive associate in Q[all] of an element of Q(others)[λ]
 /// (denominators cleared, content in Q[others] removed).
@@ -566,7 +599,9 @@ fn cleared_primitive(e: &UPoly<RatFunc>, p: usize, n: usize) -> MPoly {
             .collect();
     let poly = MPoly::from_coeffs_in(p, &cs, n);
     let c = content_in(&poly, p);
-    poly.div_exact(&c).expect("content divides").primitive_normal()
+    poly.div_exact(&c)
+        .expect("content divides")
+        .primitive_normal()
 }
 
 /// Determinantal divisors over Q[all] without minors. For each symbol s
@@ -575,13 +610,21 @@ fn cleared_primitive(e: &UPoly<RatFunc>, p: usize, n: usize) -> MPoly {
 /// is the product of the irreducible factors of d_k that involve s, with
 /// their multiplicities. Every non-constant irreducible factor involves
 /// some symbol, so d_k = lcm over s of these parts.
-fn divisors_by_symbol(a: &Matrix<PolyRing>) -> Result<(super::divisors::Divisors<MPoly>, Certificate), SmithError> {
+fn divisors_by_symbol(
+    a: &Matrix<PolyRing>,
+    progress: &PhaseHook,
+) -> Result<(super::divisors::Divisors<MPoly>, Certificate), SmithError> {
     let n = a.ring.nvars();
     let mut checks = Vec::new();
     let mut per_symbol: Vec<Vec<MPoly>> = Vec::new();
     for p in (0..n).filter(|&p| a.entries().iter().any(|e| e.contains_var(p))) {
         let ap = to_principal(a, p);
+        progress.phase(&format!("Smith form over {}", ap.ring.name()));
         let dec = SmithDecomposition::new(&ap);
+        progress.phase(&format!(
+            "certifying the Smith form over {}",
+            ap.ring.name()
+        ));
         let cert = dec.certify_with(&ap, &ClearedDenominators { p, nvars: n });
         fail_if_unverified(&cert)?;
         checks.push(Check {
@@ -620,13 +663,15 @@ fn divisors_by_symbol(a: &Matrix<PolyRing>) -> Result<(super::divisors::Divisors
         inv = vec![MPoly::one(n); r];
     }
     for k in 0..rank {
-        let dk = per_symbol
-            .iter()
-            .fold(MPoly::one(n), |l, d| lcm(&l, &d[k]));
-        let prev = if k == 0 { MPoly::one(n) } else { det[k - 1].clone() };
-        let fk = dk.div_exact(&prev).ok_or_else(|| {
-            SmithError::CertificateFailed("d_(k-1) does not divide d_k".into())
-        })?;
+        let dk = per_symbol.iter().fold(MPoly::one(n), |l, d| lcm(&l, &d[k]));
+        let prev = if k == 0 {
+            MPoly::one(n)
+        } else {
+            det[k - 1].clone()
+        };
+        let fk = dk
+            .div_exact(&prev)
+            .ok_or_else(|| SmithError::CertificateFailed("d_(k-1) does not divide d_k".into()))?;
         inv.push(fk.primitive_normal());
         det.push(dk);
     }
@@ -657,11 +702,13 @@ fn divisors_mode(
 ) -> Result<SmithReport, SmithError> {
     let by_minors = super::divisors::minor_count(a.rows(), a.cols()) <= MINOR_ROUTE_LIMIT;
     let (dv, cert) = if by_minors {
+        opts.progress.phase("gcds of minors");
         let dv = determinantal_divisors(a, MINOR_LIMIT)?;
+        opts.progress.phase("certifying the determinantal divisors");
         let cert = certify_divisors(a, &dv);
         (dv, cert)
     } else {
-        divisors_by_symbol(a)?
+        divisors_by_symbol(a, &opts.progress)?
     };
     fail_if_unverified(&cert)?;
     let r = &a.ring;
@@ -794,13 +841,43 @@ mod tests {
             ring.clone(),
             3,
             3,
-            vec![one.clone(), zero.clone(), zero.clone(), zero.clone(), f2, zero.clone(), zero.clone(), zero, f3],
+            vec![
+                one.clone(),
+                zero.clone(),
+                zero.clone(),
+                zero.clone(),
+                f2,
+                zero.clone(),
+                zero.clone(),
+                zero,
+                f3,
+            ],
         );
-        let b = Matrix::new(ring.clone(), 3, 3, vec![c(1), c(2), c(0), c(-1), c(3), c(1), c(2), c(0), c(5)]);
-        let cm = Matrix::new(ring.clone(), 3, 3, vec![one.clone(), y.clone(), x.clone(), c(0), one.clone(), &x * &y, c(0), c(0), one]);
+        let b = Matrix::new(
+            ring.clone(),
+            3,
+            3,
+            vec![c(1), c(2), c(0), c(-1), c(3), c(1), c(2), c(0), c(5)],
+        );
+        let cm = Matrix::new(
+            ring.clone(),
+            3,
+            3,
+            vec![
+                one.clone(),
+                y.clone(),
+                x.clone(),
+                c(0),
+                one.clone(),
+                &x * &y,
+                c(0),
+                c(0),
+                one,
+            ],
+        );
         let a = b.mul(&d).unwrap().mul(&cm).unwrap();
         let by_minors = determinantal_divisors(&a, MINOR_LIMIT).unwrap();
-        let (by_symbol, cert) = divisors_by_symbol(&a).unwrap();
+        let (by_symbol, cert) = divisors_by_symbol(&a, &PhaseHook::default()).unwrap();
         assert!(cert.verified());
         assert_eq!(by_symbol.invariant, by_minors.invariant);
         assert_eq!(by_symbol.determinantal, by_minors.determinantal);
@@ -813,6 +890,7 @@ mod tests {
         let opts = SmithOptions {
             principal: Some(3),
             latex: true,
+            ..SmithOptions::default()
         };
         let r = smith_report("A", &seed(), &opts).unwrap();
         assert_eq!(r.ring, "Q(k1, k2, k3)[k4]");
