@@ -121,10 +121,13 @@ fn primitive_prs(a: MPoly, b: MPoly, v: usize) -> MPoly {
 /// modular route returns the cofactors from its trial division, so callers
 /// that reduce fractions divide only once.
 pub fn gcd_cofactors(a: &MPoly, b: &MPoly) -> (MPoly, MPoly, MPoly) {
-    if !a.is_zero() && !b.is_zero() && a.main_var().is_some() && b.main_var().is_some() {
-        if let Some(r) = super::modgcd::mpoly_gcd_cofactors(a, b) {
-            return r;
-        }
+    if !a.is_zero()
+        && !b.is_zero()
+        && a.main_var().is_some()
+        && b.main_var().is_some()
+        && let Some(r) = super::modgcd::mpoly_gcd_cofactors(a, b)
+    {
+        return r;
     }
     let g = gcd(a, b);
     if g.is_zero() {

@@ -320,19 +320,19 @@ pub fn mpoly_gcd_cofactors(a: &MPoly, b: &MPoly) -> Option<(MPoly, MPoly, MPoly)
         if last_candidate.as_ref() == Some(&cand) {
             continue;
         }
-        if let Some(qa) = int_div_terms(&ia, &cand) {
-            if let Some(qb) = int_div_terms(&ib, &cand) {
-                let to_q = |t: &[(Monomial, BigInt)], u: &Q| {
-                    MPoly::from_sorted_terms(
-                        n,
-                        t.iter()
-                            .map(|(m, c)| (m.clone(), Q::from_integer(c.clone()) / u))
-                            .collect(),
-                    )
-                };
-                let one = Q::one();
-                return Some((to_q(&cand, &one), to_q(&qa, &ua), to_q(&qb, &ub)));
-            }
+        if let Some(qa) = int_div_terms(&ia, &cand)
+            && let Some(qb) = int_div_terms(&ib, &cand)
+        {
+            let to_q = |t: &[(Monomial, BigInt)], u: &Q| {
+                MPoly::from_sorted_terms(
+                    n,
+                    t.iter()
+                        .map(|(m, c)| (m.clone(), Q::from_integer(c.clone()) / u))
+                        .collect(),
+                )
+            };
+            let one = Q::one();
+            return Some((to_q(&cand, &one), to_q(&qa, &ua), to_q(&qb, &ub)));
         }
         last_candidate = Some(cand);
     }

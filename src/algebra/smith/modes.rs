@@ -136,7 +136,10 @@ pub const MINOR_LIMIT: u128 = 200_000;
 /// A callback told the name of each phase as it starts (the CLI shows it
 /// on a terminal); the algebra never prints.
 #[derive(Clone, Default)]
-pub struct PhaseHook(pub Option<std::sync::Arc<dyn Fn(&str) + Send + Sync>>);
+pub struct PhaseHook(pub Option<PhaseFn>);
+
+/// The callback of a [`PhaseHook`].
+pub type PhaseFn = std::sync::Arc<dyn Fn(&str) + Send + Sync>;
 
 impl PhaseHook {
     /// Announces a phase.
