@@ -1,11 +1,15 @@
 //! Criterion benchmarks of the Smith engine: the peer matrices of
 //! `../shared/bench/smith_peers.py` (random over Q[x], transforms and
 //! certificate included) and the seed λ-matrix in its two multivariate
-//! modes. Ratios against PARI/GP and SymPy are measured by `benches/peers.sh`.
+//! modes, and the issue-15 group (`smith_scale`: modular gcd, the modular
+//! Q[x] path, the principal 4×4 that used to stall). Ratios against PARI/GP and SymPy are measured by `benches/peers.sh`.
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use lambdamat::algebra::matrix::Matrix;
+use lambdamat::algebra::modgcd;
+use lambdamat::algebra::mpoly::MPoly;
 use lambdamat::algebra::polyring::PolyRing;
+use lambdamat::algebra::rational::Q;
 use lambdamat::algebra::smith::modes::{SmithOptions, smith_report};
 use lambdamat::lang::parse_program;
 use std::hint::black_box;
@@ -44,7 +48,7 @@ fn seed(c: &mut Criterion) {
     });
     let opts = SmithOptions {
         principal: Some(3),
-        latex: false,
+        ..SmithOptions::default()
     };
     g.bench_function("principal_k4", |b| {
         b.iter(|| smith_report("A", black_box(&a), &opts).expect("certified"))
@@ -52,5 +56,42 @@ fn seed(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, peers, seed);
+/// The algorithms of issue 15: Brown's modular gcd, the modular inverse
+/// over Q[x], and the two inputs that used to stall.
+fn scale(c: &mut Criterion) {
+    let mut g = c.benchmark_group("smith_scale");
+    g.sample_size(10);
+    let a = first_matrix("benches/data/issue15_principal_k2.lmx");
+    let opts = SmithOptions {
+        principal: Some(1),
+        ..SmithOptions::default()
+    };
+    g.bench_function("principal_k2_4x4", |b| {
+        b.iter(|| smith_report("A", black_box(&a), &opts).expect("certified"))
+    });
+    let a = first_matrix("benches/data/peers_2_150_1.lmx");
+    g.bench_function("qx_2x2_deg150", |b| {
+        b.iter(|| smith_report("A", black_box(&a), &SmithOptions::default()).expect("certified"))
+    });
+    // gcd of (g·p, g·q) in three symbols with g, p, q dense of degree 3.
+    let n = 3;
+    let v: Vec<MPoly> = (0..n).map(|i| MPoly::var(i, n)).collect();
+    let one = MPoly::one(n);
+    let dense = |s: i64| {
+        let mut acc = MPoly::zero(n);
+        for (k, x) in v.iter().enumerate() {
+            let c = MPoly::constant(Q::from_integer((s + k as i64).into()), n);
+            acc = acc + &c * &x.pow(3) + x * &v[(k + 1) % n] + one.clone();
+        }
+        acc
+    };
+    let (gg, p, q) = (dense(2), dense(5), dense(-7));
+    let (x, y) = (&gg * &p, &gg * &q);
+    g.bench_function("brown_gcd_3vars", |b| {
+        b.iter(|| modgcd::mpoly_gcd(black_box(&x), black_box(&y)).expect("gcd"))
+    });
+    g.finish();
+}
+
+criterion_group!(benches, peers, seed, scale);
 criterion_main!(benches);

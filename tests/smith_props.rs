@@ -179,7 +179,7 @@ proptest! {
         let plain_p = smith_report("A", &p, &SmithOptions::default()).expect("certified");
         prop_assert_eq!(&plain.invariant_factors, &plain_p.invariant_factors);
         let last = a.ring.nvars() - 1;
-        let opts = SmithOptions { principal: Some(last), latex: false };
+        let opts = SmithOptions { principal: Some(last), latex: false, ..SmithOptions::default() };
         let pr = smith_report("A", &a, &opts).expect("certified");
         let pr_p = smith_report("A", &p, &opts).expect("certified");
         prop_assert!(pr.verified && pr.denominator_free.as_ref().is_some_and(|d| d.verified));

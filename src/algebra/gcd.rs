@@ -1,4 +1,6 @@
-//! Multivariate gcd over Q by the recursive primitive polynomial remainder
+//! Multivariate gcd over Q. The main route is Brown's modular algorithm
+//! ([`super::modgcd::mpoly_gcd`], exact by trial division); the fallback,
+//! used only if it gives up, is the recursive primitive polynomial remainder
 //! sequence: a polynomial is viewed in its most significant variable with
 //! coefficients in Q[remaining variables]; contents are gcds of those
 //! coefficients (recursively), primitive parts go through pseudo-remainders.
@@ -77,6 +79,9 @@ pub fn gcd(a: &MPoly, b: &MPoly) -> MPoly {
         (None, _) | (_, None) => return MPoly::one(n),
         (Some(x), Some(y)) => x.min(y),
     };
+    if let Some(g) = super::modgcd::mpoly_gcd(a, b) {
+        return g;
+    }
     if !a.contains_var(v) {
         return gcd(a, &content_in(b, v));
     }
@@ -110,6 +115,27 @@ fn primitive_prs(a: MPoly, b: MPoly, v: usize) -> MPoly {
         r0 = r1;
         r1 = primitive_part_in(&r, v);
     }
+}
+
+/// `(g, a/g, b/g)` with `g = gcd(a, b)` normalised as in [`gcd`]; the
+/// modular route returns the cofactors from its trial division, so callers
+/// that reduce fractions divide only once.
+pub fn gcd_cofactors(a: &MPoly, b: &MPoly) -> (MPoly, MPoly, MPoly) {
+    if !a.is_zero()
+        && !b.is_zero()
+        && a.main_var().is_some()
+        && b.main_var().is_some()
+        && let Some(r) = super::modgcd::mpoly_gcd_cofactors(a, b)
+    {
+        return r;
+    }
+    let g = gcd(a, b);
+    if g.is_zero() {
+        return (g, a.clone(), b.clone());
+    }
+    let qa = a.div_exact(&g).expect("gcd divides");
+    let qb = b.div_exact(&g).expect("gcd divides");
+    (g, qa, qb)
 }
 
 /// Least common multiple (normalised); zero if either is zero.

@@ -5,7 +5,10 @@
 //!   `Field`, implemented by ring *objects* stored beside the data;
 //! * [`rational`]: the field Q;
 //! * [`mpoly`]: sparse multivariate polynomials over Q in commuting symbols;
-//! * [`gcd`]: multivariate gcd by recursive primitive PRS;
+//! * [`gcd`]: multivariate gcd (modular first, primitive PRS as fallback);
+//! * [`kronecker`]: integer polynomial products by Kronecker substitution;
+//! * [`modular`]: word-size prime fields, Z_p[x], Chinese remainders;
+//! * [`modgcd`]: Brown's modular multivariate gcd and the modular Q[x] gcd;
 //! * [`ratfunc`]: the field Q(s1..sn) of reduced rational functions;
 //! * [`upoly`]: dense univariate polynomials over any field object (Q[x],
 //!   Q(others)[λ]);
@@ -22,7 +25,10 @@
 pub mod eliminate;
 pub mod gcd;
 pub mod intgcd;
+pub mod kronecker;
 pub mod matrix;
+pub mod modgcd;
+pub mod modular;
 pub mod mpoly;
 pub mod ncpoly;
 pub mod ordered;

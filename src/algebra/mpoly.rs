@@ -6,6 +6,7 @@
 //! borrowed for printing.
 
 use super::rational::{Q, fmt_q, primitive_scale};
+use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 use std::cmp::Ordering;
 use std::collections::BTreeMap;
@@ -96,6 +97,14 @@ impl MPoly {
                 .filter(|(_, c)| !c.is_zero())
                 .collect(),
         }
+    }
+
+    /// Builds a polynomial from terms already in descending lexicographic
+    /// order with distinct monomials and nonzero coefficients.
+    pub fn from_sorted_terms(nvars: usize, terms: Vec<(Monomial, Q)>) -> Self {
+        debug_assert!(terms.windows(2).all(|w| w[0].0 > w[1].0));
+        debug_assert!(terms.iter().all(|(_, c)| !c.is_zero()));
+        MPoly { nvars, terms }
     }
 
     /// Number of variables of the ambient ring.
@@ -459,14 +468,32 @@ fn merge(a: &MPoly, b: &MPoly, negate_b: bool) -> MPoly {
     }
 }
 
+/// The integer numerators of `p` and the positive rational `u` with
+/// `p = numerators / u` (`u = 1` when the coefficients are integers).
+fn integer_form(p: &MPoly) -> (Vec<BigInt>, Option<Q>) {
+    if p.terms.iter().all(|(_, c)| c.is_integer()) {
+        return (
+            p.terms.iter().map(|(_, c)| c.numer().clone()).collect(),
+            None,
+        );
+    }
+    let u = p.integer_scale();
+    let v = p.terms.iter().map(|(_, c)| (c * &u).to_integer()).collect();
+    (v, Some(u))
+}
+
+/// The product, accumulated over the integers (one rational normalisation
+/// per result term instead of one per pair of terms).
 fn product(a: &MPoly, b: &MPoly) -> MPoly {
     debug_assert_eq!(a.nvars, b.nvars);
     if a.is_zero() || b.is_zero() {
         return MPoly::zero(a.nvars);
     }
-    let mut map: BTreeMap<Monomial, Q> = BTreeMap::new();
-    for (ma, ca) in &a.terms {
-        for (mb, cb) in &b.terms {
+    let (ia, ua) = integer_form(a);
+    let (ib, ub) = integer_form(b);
+    let mut map: BTreeMap<Monomial, BigInt> = BTreeMap::new();
+    for ((ma, _), ca) in a.terms.iter().zip(&ia) {
+        for ((mb, _), cb) in b.terms.iter().zip(&ib) {
             let m: Monomial = ma.iter().zip(mb).map(|(x, y)| x + y).collect();
             let c = ca * cb;
             match map.entry(m) {
@@ -479,12 +506,21 @@ fn product(a: &MPoly, b: &MPoly) -> MPoly {
             }
         }
     }
+    let scale = match (ua, ub) {
+        (None, None) => None,
+        (Some(x), None) | (None, Some(x)) => Some(x.recip()),
+        (Some(x), Some(y)) => Some((x * y).recip()),
+    };
     MPoly {
         nvars: a.nvars,
         terms: map
             .into_iter()
             .rev()
             .filter(|(_, c)| !c.is_zero())
+            .map(|(m, c)| {
+                let q = Q::from_integer(c);
+                (m, if let Some(s) = &scale { q * s } else { q })
+            })
             .collect(),
     }
 }

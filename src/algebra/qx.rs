@@ -144,6 +144,9 @@ impl QPoly {
     }
 }
 
+/// Shorter factors use the schoolbook product.
+const KRONECKER_MIN_LEN: usize = 24;
+
 fn add_vec(
     a: &[BigInt],
     fa: Option<&BigInt>,
@@ -172,6 +175,9 @@ fn add_vec(
 fn conv(a: &[BigInt], b: &[BigInt]) -> Vec<BigInt> {
     if a.is_empty() || b.is_empty() {
         return Vec::new();
+    }
+    if a.len().min(b.len()) >= KRONECKER_MIN_LEN {
+        return super::kronecker::mul(a, b);
     }
     let mut c = vec![BigInt::zero(); a.len() + b.len() - 1];
     for (i, x) in a.iter().enumerate() {
@@ -229,6 +235,24 @@ impl QxRing {
         }
         let inv = r0.lc().recip();
         (r0.scale(&inv), self.rem(&s0.scale(&inv), m))
+    }
+
+    /// The inverse of `a` modulo `m` (`deg m ≥ 1`), if `gcd(a, m) = 1`:
+    /// modular images and the Chinese remainder theorem
+    /// ([`super::modgcd::qx_inverse`]) first, the exact extended Euclid
+    /// over Q when that route declines.
+    pub fn inverse_mod(&self, a: &QPoly, m: &QPoly) -> Option<QPoly> {
+        let a = self.rem(a, m);
+        if a.is_zero() {
+            return None;
+        }
+        if let Some((s, r)) = super::modgcd::qx_inverse(&a.num, &m.num) {
+            // a = A/da, so a⁻¹ = da·A⁻¹; m and its numerator generate the
+            // same ideal.
+            return Some(QPoly::new(s.into_iter().map(|c| c * &a.den).collect(), r));
+        }
+        let (g, s) = self.ext_gcd_mod(&a, m);
+        self.is_unit(&g).then_some(s)
     }
 
     /// `a mod m`.

@@ -5,7 +5,7 @@
 //! Smith mode, K[λ]. Owns only the fraction arithmetic; gcds come from
 //! [`super::gcd`].
 
-use super::gcd::gcd;
+use super::gcd::gcd_cofactors;
 use super::mpoly::MPoly;
 use super::rational::Q;
 use super::ring::{Field, Ring};
@@ -34,14 +34,11 @@ impl RatFunc {
         let (num, den) = if let Some(c) = den.as_constant() {
             (num.scale(&c.recip()), MPoly::one(den.nvars()))
         } else {
-            let g = gcd(&num, &den);
+            let (g, n, d) = gcd_cofactors(&num, &den);
             let (n, d) = if g.is_nonzero_constant() {
                 (num, den)
             } else {
-                (
-                    num.div_exact(&g).expect("gcd divides"),
-                    den.div_exact(&g).expect("gcd divides"),
-                )
+                (n, d)
             };
             let dn = d.primitive_normal();
             // d = u * dn  with u the leading coefficient ratio.

@@ -7,7 +7,7 @@ use super::{OutputArgs, SmithArgs, read_source, render};
 use crate::algebra::matrix::Matrix;
 use crate::algebra::polyring::PolyRing;
 use crate::algebra::smith::modes::{
-    CheckReport, SmithOptions, SmithReport, check_decomposition, smith_report,
+    CheckReport, PhaseHook, SmithOptions, SmithReport, check_decomposition, smith_report,
 };
 use crate::lang::{Directive, MatrixDef, Program, parse_program};
 use std::io::Write;
@@ -78,8 +78,30 @@ pub fn report(
     latex: bool,
 ) -> Result<SmithReport, CliError> {
     let m = &p.matrices[idx];
-    let opts = SmithOptions { principal, latex };
-    Ok(smith_report(&m.name, &to_matrix(&p.symbols, m), &opts)?)
+    let spinner = std::io::IsTerminal::is_terminal(&std::io::stderr()).then(|| {
+        let bar = indicatif::ProgressBar::new_spinner();
+        bar.set_style(
+            indicatif::ProgressStyle::with_template("{spinner} {prefix}: {msg} ({elapsed})")
+                .unwrap_or_else(|_| indicatif::ProgressStyle::default_spinner()),
+        );
+        bar.set_prefix(format!("smith {}", m.name));
+        bar.enable_steady_tick(std::time::Duration::from_millis(200));
+        bar
+    });
+    let hook = spinner.clone().map(|bar| {
+        std::sync::Arc::new(move |phase: &str| bar.set_message(phase.to_string()))
+            as std::sync::Arc<dyn Fn(&str) + Send + Sync>
+    });
+    let opts = SmithOptions {
+        principal,
+        latex,
+        progress: PhaseHook(hook),
+    };
+    let r = smith_report(&m.name, &to_matrix(&p.symbols, m), &opts);
+    if let Some(bar) = spinner {
+        bar.finish_and_clear();
+    }
+    Ok(r?)
 }
 
 /// The report of a `check smith A with U, D, V` directive.

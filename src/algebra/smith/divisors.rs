@@ -20,7 +20,8 @@ pub struct Divisors<E> {
 /// Error: the number of minors exceeds the caller's budget.
 #[derive(Debug, thiserror::Error)]
 #[error(
-    "the determinantal-divisor mode would need {needed} minors of a {rows}×{cols} matrix (limit {limit}); name a principal symbol to use the elimination instead"
+    "the determinantal-divisor mode would need {} minors of a {rows}×{cols} matrix (limit {limit}); name a principal symbol (`principal s` in the file or --principal s) to use the elimination over Q(others)[s] instead",
+    fmt_count(*needed)
 )]
 pub struct TooManyMinors {
     /// Minors that would be computed.
@@ -33,8 +34,46 @@ pub struct TooManyMinors {
     pub limit: u128,
 }
 
+fn fmt_count(n: u128) -> String {
+    if n == u128::MAX {
+        "more than 3.4e38".into()
+    } else if n >= 10_000_000_000 {
+        format!("{:.3e}", n as f64)
+    } else {
+        n.to_string()
+    }
+}
+
+/// `C(n, k)`, saturating at `u128::MAX` instead of overflowing.
 fn binom(n: usize, k: usize) -> u128 {
-    (0..k).fold(1u128, |acc, i| acc * (n - i) as u128 / (i as u128 + 1))
+    let mut acc = 1u128;
+    for i in 0..k as u128 {
+        // acc·(n−i)/(i+1) is exact; divide first by the common factor
+        // to keep the intermediate small, and saturate if it still
+        // overflows.
+        let (num, den) = ((n as u128) - i, i + 1);
+        let g = gcd_u128(acc, den);
+        let (a, d) = (acc / g, den / g);
+        let Some(x) = a.checked_mul(num / d) else {
+            return u128::MAX;
+        };
+        acc = x;
+    }
+    acc
+}
+
+fn gcd_u128(mut a: u128, mut b: u128) -> u128 {
+    while b != 0 {
+        (a, b) = (b, a % b);
+    }
+    a
+}
+
+/// The number of minors of all orders of an m×n matrix (saturating).
+pub fn minor_count(m: usize, n: usize) -> u128 {
+    (1..=m.min(n)).fold(0u128, |s, k| {
+        s.saturating_add(binom(m, k).saturating_mul(binom(n, k)))
+    })
 }
 
 /// Computes the determinantal divisors and invariant factors of `a`,
@@ -44,7 +83,7 @@ pub fn determinantal_divisors<R: GcdDomain>(
     limit: u128,
 ) -> Result<Divisors<R::Elem>, TooManyMinors> {
     let (m, n) = (a.rows(), a.cols());
-    let needed: u128 = (1..=m.min(n)).map(|k| binom(m, k) * binom(n, k)).sum();
+    let needed = minor_count(m, n);
     if needed > limit {
         return Err(TooManyMinors {
             needed,
@@ -116,4 +155,27 @@ pub fn certify_divisors<R: GcdDomain>(a: &Matrix<R>, dv: &Divisors<R::Elem>) -> 
         detail: "each invariant factor divides the next".into(),
     });
     Certificate { checks }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn minor_counts_do_not_overflow() {
+        assert_eq!(binom(10, 5), 252);
+        assert_eq!(minor_count(2, 2), 5);
+        // Σ C(10,k)² = C(20,10) − 1
+        assert_eq!(minor_count(10, 10), 184_755);
+        // Σ C(66,k)² = C(132,66) − 1 ≈ 3.8e38 > u128::MAX: saturates.
+        assert_eq!(minor_count(66, 66), u128::MAX);
+        assert!(minor_count(60, 60) < u128::MAX);
+        let e = TooManyMinors {
+            needed: u128::MAX,
+            rows: 66,
+            cols: 66,
+            limit: 200_000,
+        };
+        assert!(e.to_string().contains("more than 3.4e38 minors of a 66×66"));
+    }
 }

@@ -133,6 +133,33 @@ pub enum SmithError {
 /// Limit on the number of minors in the determinantal mode.
 pub const MINOR_LIMIT: u128 = 200_000;
 
+/// A callback told the name of each phase as it starts (the CLI shows it
+/// on a terminal); the algebra never prints.
+#[derive(Clone, Default)]
+pub struct PhaseHook(pub Option<PhaseFn>);
+
+/// The callback of a [`PhaseHook`].
+pub type PhaseFn = std::sync::Arc<dyn Fn(&str) + Send + Sync>;
+
+impl PhaseHook {
+    /// Announces a phase.
+    pub fn phase(&self, name: &str) {
+        if let Some(f) = &self.0 {
+            f(name);
+        }
+    }
+}
+
+impl std::fmt::Debug for PhaseHook {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(if self.0.is_some() {
+            "PhaseHook(set)"
+        } else {
+            "PhaseHook(none)"
+        })
+    }
+}
+
 /// Options of the driver.
 #[derive(Clone, Debug, Default)]
 pub struct SmithOptions {
@@ -140,6 +167,8 @@ pub struct SmithOptions {
     pub principal: Option<usize>,
     /// Also produce LaTeX forms.
     pub latex: bool,
+    /// Phase announcements (progress display).
+    pub progress: PhaseHook,
 }
 
 /// Computes, certifies and reports the Smith form of `a` (named `name`).
@@ -222,6 +251,8 @@ fn generic_report<R: crate::algebra::ring::EuclideanDomain>(
     opts: &SmithOptions,
     check: &dyn ProductCheck<R>,
 ) -> Result<(SmithReport, SmithDecomposition<R>), SmithError> {
+    opts.progress
+        .phase("certifying U·A·V = D, U·U⁻¹ = I, V·V⁻¹ = I");
     let cert = dec.certify_with(a, check);
     fail_if_unverified(&cert)?;
     let inv = dec.invariant_factors();
@@ -273,6 +304,8 @@ fn one_symbol(
             ),
         )
     };
+    opts.progress
+        .phase(&format!("Smith form over {}", au.ring.name()));
     let (dec, alg) = decompose_qx(&au);
     Ok(generic_report(
         name,
@@ -330,6 +363,8 @@ fn principal(
         "principal symbol {}: Smith form over {ring_name}, a principal ideal domain; entries of U and V are rational functions of the other symbols",
         a.ring.names[p]
     );
+    opts.progress
+        .phase(&format!("elimination over {ring_name}"));
     let dec = SmithDecomposition::new(&ap);
     let alg = "elimination over K[λ]: least-degree pivot, division with remainder";
     let check = ClearedDenominators {
@@ -348,6 +383,7 @@ fn principal(
         opts,
         &check,
     )?;
+    opts.progress.phase("denominator-free form over Q[all]");
     report.denominator_free = Some(denominator_free(a, &dec, p)?);
     Ok(report)
 }
@@ -552,13 +588,131 @@ fn denominator_free(
     })
 }
 
+/// Above this many minors the determinantal mode takes the route through
+/// one certified Smith form per symbol instead of enumerating minors.
+pub const MINOR_ROUTE_LIMIT: u128 = 20_000;
+
+/// The primitive associate in Q[all] of an element of Q(others)[λ]
+/// (denominators cleared, content in Q[others] removed).
+fn cleared_primitive(e: &UPoly<RatFunc>, p: usize, n: usize) -> MPoly {
+    let l = e.0.iter().fold(MPoly::one(n), |l, c| lcm(&l, c.den()));
+    let cs: Vec<MPoly> =
+        e.0.iter()
+            .map(|c| c.num() * &l.div_exact(c.den()).expect("lcm"))
+            .collect();
+    let poly = MPoly::from_coeffs_in(p, &cs, n);
+    let c = content_in(&poly, p);
+    poly.div_exact(&c)
+        .expect("content divides")
+        .primitive_normal()
+}
+
+/// Determinantal divisors over Q[all] without minors. For each symbol s
+/// occurring in A, the Smith form over Q(others)[s] is computed and
+/// certified; the primitive part (in s) of its k-th determinantal divisor
+/// is the product of the irreducible factors of d_k that involve s, with
+/// their multiplicities. Every non-constant irreducible factor involves
+/// some symbol, so d_k = lcm over s of these parts.
+fn divisors_by_symbol(
+    a: &Matrix<PolyRing>,
+    progress: &PhaseHook,
+) -> Result<(super::divisors::Divisors<MPoly>, Certificate), SmithError> {
+    let n = a.ring.nvars();
+    let mut checks = Vec::new();
+    let mut per_symbol: Vec<Vec<MPoly>> = Vec::new();
+    for p in (0..n).filter(|&p| a.entries().iter().any(|e| e.contains_var(p))) {
+        let ap = to_principal(a, p);
+        progress.phase(&format!("Smith form over {}", ap.ring.name()));
+        let dec = SmithDecomposition::new(&ap);
+        progress.phase(&format!(
+            "certifying the Smith form over {}",
+            ap.ring.name()
+        ));
+        let cert = dec.certify_with(&ap, &ClearedDenominators { p, nvars: n });
+        fail_if_unverified(&cert)?;
+        checks.push(Check {
+            property: format!("Smith form over {} certified", ap.ring.name()),
+            ok: true,
+            detail: cert
+                .checks
+                .iter()
+                .map(|c| c.property.clone())
+                .collect::<Vec<_>>()
+                .join("; "),
+        });
+        let mut acc = MPoly::one(n);
+        per_symbol.push(
+            dec.invariant_factors()
+                .iter()
+                .map(|f| {
+                    acc = &acc * &cleared_primitive(f, p, n);
+                    acc.primitive_normal()
+                })
+                .collect(),
+        );
+    }
+    let rank = per_symbol.first().map_or(0, |d| d.len());
+    if per_symbol.iter().any(|d| d.len() != rank) {
+        return Err(SmithError::CertificateFailed(
+            "the ranks over Q(others)[s] differ between symbols".into(),
+        ));
+    }
+    let mut det: Vec<MPoly> = Vec::with_capacity(rank);
+    let mut inv: Vec<MPoly> = Vec::with_capacity(rank);
+    if per_symbol.is_empty() {
+        // A constant matrix: its rank over Q, every divisor 1.
+        let r = a.rank();
+        det = vec![MPoly::one(n); r];
+        inv = vec![MPoly::one(n); r];
+    }
+    for k in 0..rank {
+        let dk = per_symbol.iter().fold(MPoly::one(n), |l, d| lcm(&l, &d[k]));
+        let prev = if k == 0 {
+            MPoly::one(n)
+        } else {
+            det[k - 1].clone()
+        };
+        let fk = dk
+            .div_exact(&prev)
+            .ok_or_else(|| SmithError::CertificateFailed("d_(k-1) does not divide d_k".into()))?;
+        inv.push(fk.primitive_normal());
+        det.push(dk);
+    }
+    let chain = inv.windows(2).all(|w| w[1].div_exact(&w[0]).is_some());
+    checks.push(Check {
+        property: "divisibility f1 | f2 | …".into(),
+        ok: chain,
+        detail: "each invariant factor divides the next (exact division over Q[all])".into(),
+    });
+    checks.push(Check {
+        property: "d_k = lcm over symbols s of the primitive divisors over Q(others)[s]".into(),
+        ok: true,
+        detail: "every irreducible factor of d_k involves a symbol s and appears with its multiplicity in the certified Smith form over Q(others)[s]".into(),
+    });
+    Ok((
+        super::divisors::Divisors {
+            determinantal: det,
+            invariant: inv,
+        },
+        Certificate { checks },
+    ))
+}
+
 fn divisors_mode(
     name: &str,
     a: &Matrix<PolyRing>,
     opts: &SmithOptions,
 ) -> Result<SmithReport, SmithError> {
-    let dv = determinantal_divisors(a, MINOR_LIMIT)?;
-    let cert = certify_divisors(a, &dv);
+    let by_minors = super::divisors::minor_count(a.rows(), a.cols()) <= MINOR_ROUTE_LIMIT;
+    let (dv, cert) = if by_minors {
+        opts.progress.phase("gcds of minors");
+        let dv = determinantal_divisors(a, MINOR_LIMIT)?;
+        opts.progress.phase("certifying the determinantal divisors");
+        let cert = certify_divisors(a, &dv);
+        (dv, cert)
+    } else {
+        divisors_by_symbol(a, &opts.progress)?
+    };
     fail_if_unverified(&cert)?;
     let r = &a.ring;
     let mut d = Matrix::zeros(r.clone(), a.rows(), a.cols());
@@ -576,7 +730,11 @@ fn divisors_mode(
         matrix: name.to_string(),
         ring: r.name(),
         mode: Mode::DeterminantalDivisors,
-        algorithm: "gcd of k×k minors (Bareiss determinants, primitive-PRS gcd)".to_string(),
+        algorithm: if by_minors {
+            "gcd of k×k minors (Bareiss determinants, modular gcd)".to_string()
+        } else {
+            "lcm over each symbol s of the determinantal divisors of the certified Smith form over Q(others)[s] (no minors enumerated)".to_string()
+        },
         mode_note: format!(
             "invariant factors over {} from determinantal divisors (d_k = gcd of the k×k minors, f_k = d_k/d_(k-1)); this ring is not a principal ideal domain, so a unimodular U, V with U·A·V = D need not exist and none is claimed; name a principal symbol (`principal s` or --principal s) for transforms",
             r.name()
@@ -671,10 +829,71 @@ mod tests {
     }
 
     #[test]
+    fn determinantal_divisors_by_symbol_agree_with_minors() {
+        // A = B·diag(1, x + y, (x + y)·x·(y + 1))·C with B, C invertible
+        // over Q[x, y] (constant and unitriangular).
+        let n = 2;
+        let ring = PolyRing::new(vec!["x".into(), "y".into()]);
+        let (x, y) = (MPoly::var(0, n), MPoly::var(1, n));
+        let one = MPoly::one(n);
+        let c = |v: i64| MPoly::constant(crate::algebra::rational::qi(v), n);
+        let f2 = &x + &y;
+        let f3 = &(&f2 * &x) * &(&y + &one);
+        let zero = MPoly::zero(n);
+        let d = Matrix::new(
+            ring.clone(),
+            3,
+            3,
+            vec![
+                one.clone(),
+                zero.clone(),
+                zero.clone(),
+                zero.clone(),
+                f2,
+                zero.clone(),
+                zero.clone(),
+                zero,
+                f3,
+            ],
+        );
+        let b = Matrix::new(
+            ring.clone(),
+            3,
+            3,
+            vec![c(1), c(2), c(0), c(-1), c(3), c(1), c(2), c(0), c(5)],
+        );
+        let cm = Matrix::new(
+            ring.clone(),
+            3,
+            3,
+            vec![
+                one.clone(),
+                y.clone(),
+                x.clone(),
+                c(0),
+                one.clone(),
+                &x * &y,
+                c(0),
+                c(0),
+                one,
+            ],
+        );
+        let a = b.mul(&d).unwrap().mul(&cm).unwrap();
+        let by_minors = determinantal_divisors(&a, MINOR_LIMIT).unwrap();
+        let (by_symbol, cert) = divisors_by_symbol(&a, &PhaseHook::default()).unwrap();
+        assert!(cert.verified());
+        assert_eq!(by_symbol.invariant, by_minors.invariant);
+        assert_eq!(by_symbol.determinantal, by_minors.determinantal);
+        let shown: Vec<String> = by_symbol.invariant.iter().map(|f| ring.format(f)).collect();
+        assert_eq!(shown, vec!["1", "x + y", "x^2*y + x^2 + x*y^2 + x*y"]);
+    }
+
+    #[test]
     fn seed_matrix_with_principal_k4() {
         let opts = SmithOptions {
             principal: Some(3),
             latex: true,
+            ..SmithOptions::default()
         };
         let r = smith_report("A", &seed(), &opts).unwrap();
         assert_eq!(r.ring, "Q(k1, k2, k3)[k4]");

@@ -167,10 +167,9 @@ pub fn try_nonsingular(a: &Matrix<QxRing>) -> Option<SmithDecomposition<QxRing>>
     // Pick the column of least degree whose entry is invertible mod f.
     let mut order: Vec<usize> = (0..n).filter(|&j| !last[j].is_zero()).collect();
     order.sort_by_key(|&j| last[j].degree());
-    let (j, inv) = order.into_iter().find_map(|j| {
-        let (g, s) = r.ext_gcd_mod(&last[j], &f);
-        r.is_unit(&g).then_some((j, s))
-    })?;
+    let (j, inv) = order
+        .into_iter()
+        .find_map(|j| r.inverse_mod(&last[j], &f).map(|s| (j, s)))?;
     let mut h = Vec::with_capacity(n - 1);
     let mut w = Matrix::zeros(r.clone(), n, n);
     for (i, adj_row) in adj_t.iter().enumerate().take(n - 1) {

@@ -1,0 +1,425 @@
+//! Word-size modular arithmetic for the modular algorithms: the prime field
+//! Z_p with p < 2^62 ([`Fp`]), a deterministic supply of such primes
+//! ([`primes`]), dense univariate polynomials over Z_p (Euclid, evaluation)
+//! and the Chinese remainder step on big integers. Owns nothing else: the
+//! algorithms that use these pieces live in [`super::modgcd`].
+
+use num_bigint::BigInt;
+use num_integer::Integer;
+use num_traits::{One, Signed, ToPrimitive, Zero};
+
+/// The prime field Z_p, `p < 2^62` odd, elements in `0..p` (products by
+/// Montgomery reduction: two REDC steps instead of a 128-bit division).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Fp {
+    /// The modulus.
+    pub p: u64,
+    /// `-p⁻¹ mod 2^64`.
+    pinv: u64,
+    /// `2^128 mod p`.
+    r2: u64,
+}
+
+impl Fp {
+    /// Z_p for an odd `p < 2^62`.
+    pub fn new(p: u64) -> Self {
+        debug_assert!(p % 2 == 1 && p < 1 << 62);
+        // Newton iteration for p⁻¹ mod 2^64.
+        let mut inv: u64 = 1;
+        for _ in 0..6 {
+            inv = inv.wrapping_mul(2u64.wrapping_sub(p.wrapping_mul(inv)));
+        }
+        let r = ((1u128 << 64) % p as u128) as u64;
+        let r2 = ((r as u128 * r as u128) % p as u128) as u64;
+        Fp {
+            p,
+            pinv: inv.wrapping_neg(),
+            r2,
+        }
+    }
+    #[inline]
+    fn redc(self, t: u128) -> u64 {
+        let m = (t as u64).wrapping_mul(self.pinv);
+        let u = ((t + m as u128 * self.p as u128) >> 64) as u64;
+        if u >= self.p { u - self.p } else { u }
+    }
+    /// `a + b`.
+    #[inline]
+    pub fn add(self, a: u64, b: u64) -> u64 {
+        let s = a + b;
+        if s >= self.p { s - self.p } else { s }
+    }
+    /// `a - b`.
+    #[inline]
+    pub fn sub(self, a: u64, b: u64) -> u64 {
+        if a >= b { a - b } else { a + self.p - b }
+    }
+    /// `-a`.
+    #[inline]
+    pub fn neg(self, a: u64) -> u64 {
+        if a == 0 { 0 } else { self.p - a }
+    }
+    /// `a·b`.
+    #[inline]
+    pub fn mul(self, a: u64, b: u64) -> u64 {
+        self.redc(self.redc(a as u128 * b as u128) as u128 * self.r2 as u128)
+    }
+    /// `c` prepared for repeated products [`Fp::mul_pre`] (Montgomery form).
+    #[inline]
+    pub fn prep(self, c: u64) -> u64 {
+        self.redc(c as u128 * self.r2 as u128)
+    }
+    /// `c·b` for `cm = prep(c)`: one reduction instead of two.
+    #[inline]
+    pub fn mul_pre(self, cm: u64, b: u64) -> u64 {
+        self.redc(cm as u128 * b as u128)
+    }
+    /// `a^e`.
+    pub fn pow(self, mut a: u64, mut e: u64) -> u64 {
+        let mut r = 1 % self.p;
+        while e > 0 {
+            if e & 1 == 1 {
+                r = self.mul(r, a);
+            }
+            a = self.mul(a, a);
+            e >>= 1;
+        }
+        r
+    }
+    /// `a⁻¹` (`a` nonzero).
+    pub fn inv(self, a: u64) -> u64 {
+        debug_assert!(a != 0);
+        self.pow(a, self.p - 2)
+    }
+    /// The residue of a big integer.
+    pub fn reduce(self, a: &BigInt) -> u64 {
+        a.mod_floor(&BigInt::from(self.p))
+            .to_u64()
+            .expect("residue below p")
+    }
+}
+
+/// Deterministic Miller–Rabin for `u64` (these bases are exact below 2^64).
+pub fn is_prime(n: u64) -> bool {
+    if n < 2 {
+        return false;
+    }
+    for q in [2u64, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37] {
+        if n.is_multiple_of(q) {
+            return n == q;
+        }
+    }
+    let f = Fp::new(n);
+    let (mut d, mut s) = (n - 1, 0);
+    while d % 2 == 0 {
+        d /= 2;
+        s += 1;
+    }
+    'bases: for a in [2u64, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37] {
+        let mut x = f.pow(a, d);
+        if x == 1 || x == n - 1 {
+            continue;
+        }
+        for _ in 1..s {
+            x = f.mul(x, x);
+            if x == n - 1 {
+                continue 'bases;
+            }
+        }
+        return false;
+    }
+    true
+}
+
+/// How many primes [`primes`] offers.
+pub const NPRIMES: usize = 512;
+
+/// The largest [`NPRIMES`] primes below 2^62, descending (computed once).
+pub fn primes() -> impl Iterator<Item = u64> {
+    static PRIMES: std::sync::OnceLock<Vec<u64>> = std::sync::OnceLock::new();
+    PRIMES
+        .get_or_init(|| {
+            let mut out = Vec::with_capacity(NPRIMES);
+            let mut n: u64 = (1 << 62) - 1;
+            while out.len() < NPRIMES {
+                if is_prime(n) {
+                    out.push(n);
+                }
+                n -= 2;
+            }
+            out
+        })
+        .iter()
+        .copied()
+}
+
+/// A small deterministic generator of evaluation points.
+#[derive(Clone, Debug)]
+pub struct Points(u64);
+
+impl Points {
+    /// A generator with a fixed seed.
+    pub fn new(seed: u64) -> Self {
+        Points(seed | 1)
+    }
+    /// The next point in `1..p`.
+    pub fn next(&mut self, f: Fp) -> u64 {
+        // xorshift64*
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        let r = self.0.wrapping_mul(0x2545_F491_4F6C_DD1D);
+        1 + r % (f.p - 1)
+    }
+}
+
+/// Dense univariate polynomial over Z_p, lowest coefficient first, no
+/// trailing zeros (the zero polynomial is empty).
+pub type UP = Vec<u64>;
+
+/// Removes trailing zeros.
+pub fn trim(mut a: UP) -> UP {
+    while a.last() == Some(&0) {
+        a.pop();
+    }
+    a
+}
+
+/// Degree (`None` for zero).
+pub fn deg(a: &[u64]) -> Option<usize> {
+    a.len().checked_sub(1)
+}
+
+/// `a(x)` by Horner.
+pub fn eval(f: Fp, a: &[u64], x: u64) -> u64 {
+    a.iter().rev().fold(0, |acc, &c| f.add(f.mul(acc, x), c))
+}
+
+/// `c·a`.
+pub fn scale(f: Fp, a: &[u64], c: u64) -> UP {
+    if c == 0 {
+        return Vec::new();
+    }
+    let cm = f.prep(c);
+    a.iter().map(|&x| f.mul_pre(cm, x)).collect()
+}
+
+/// `a·b` (schoolbook).
+pub fn mul(f: Fp, a: &[u64], b: &[u64]) -> UP {
+    if a.is_empty() || b.is_empty() {
+        return Vec::new();
+    }
+    // Accumulate in u128 and reduce rarely: p < 2^62 so 2^4 products fit.
+    let mut acc = vec![0u128; a.len() + b.len() - 1];
+    let p = f.p as u128;
+    for (i, &x) in a.iter().enumerate() {
+        if x == 0 {
+            continue;
+        }
+        for (j, &y) in b.iter().enumerate() {
+            let s = acc[i + j] + x as u128 * y as u128;
+            acc[i + j] = if s >= p << 64 { s % p } else { s };
+        }
+    }
+    trim(acc.into_iter().map(|s| (s % p) as u64).collect())
+}
+
+/// `a + b`.
+pub fn add(f: Fp, a: &[u64], b: &[u64]) -> UP {
+    let n = a.len().max(b.len());
+    let v = (0..n)
+        .map(|i| {
+            f.add(
+                a.get(i).copied().unwrap_or(0),
+                b.get(i).copied().unwrap_or(0),
+            )
+        })
+        .collect();
+    trim(v)
+}
+
+/// `a - b`.
+pub fn sub(f: Fp, a: &[u64], b: &[u64]) -> UP {
+    let n = a.len().max(b.len());
+    let v = (0..n)
+        .map(|i| {
+            f.sub(
+                a.get(i).copied().unwrap_or(0),
+                b.get(i).copied().unwrap_or(0),
+            )
+        })
+        .collect();
+    trim(v)
+}
+
+/// Quotient and remainder of `a` by nonzero `b`.
+pub fn div_rem(f: Fp, a: &[u64], b: &[u64]) -> (UP, UP) {
+    let n = b.len() - 1;
+    if a.len() < b.len() {
+        return (Vec::new(), a.to_vec());
+    }
+    let inv = f.inv(b[n]);
+    let mut r = a.to_vec();
+    let mut q = vec![0u64; a.len() - n];
+    for i in (0..q.len()).rev() {
+        let c = f.mul(r[i + n], inv);
+        q[i] = c;
+        if c == 0 {
+            continue;
+        }
+        let cm = f.prep(c);
+        for j in 0..=n {
+            r[i + j] = f.sub(r[i + j], f.mul_pre(cm, b[j]));
+        }
+    }
+    r.truncate(n);
+    (trim(q), trim(r))
+}
+
+/// Monic associate (zero stays zero).
+pub fn monic(f: Fp, a: &[u64]) -> UP {
+    match a.last() {
+        None => Vec::new(),
+        Some(&l) => scale(f, a, f.inv(l)),
+    }
+}
+
+/// Monic gcd by Euclid.
+pub fn gcd(f: Fp, a: &[u64], b: &[u64]) -> UP {
+    let (mut x, mut y) = (a.to_vec(), b.to_vec());
+    while !y.is_empty() {
+        let r = div_rem(f, &x, &y).1;
+        x = y;
+        y = r;
+    }
+    monic(f, &x)
+}
+
+/// `(s, Res(a, m))` with `s·a ≡ 1 (mod m)`, `deg s < deg m`, for `a` and
+/// `m` with `deg m ≥ 1`; `None` when `gcd(a, m) ≠ 1` (the resultant is 0).
+pub fn inverse_and_resultant(f: Fp, a: &[u64], m: &[u64]) -> Option<(UP, u64)> {
+    let (da, dm) = (deg(a)?, deg(m)?);
+    // Euclid on (m, a), tracking t with t·a ≡ y (mod m) and Res(m, a).
+    let (mut x, mut y) = (m.to_vec(), a.to_vec());
+    let (mut t0, mut t1): (UP, UP) = (Vec::new(), vec![1]);
+    let mut res = 1u64;
+    loop {
+        let (dx, dy) = (deg(&x)?, deg(&y)?);
+        if dy == 0 {
+            res = f.mul(res, f.pow(y[0], dx as u64));
+            let c = f.inv(y[0]);
+            let s = div_rem(f, &scale(f, &t1, c), m).1;
+            // Res(a, m) = (−1)^(deg a·deg m) Res(m, a).
+            let sign = if (da * dm) % 2 == 1 { f.neg(res) } else { res };
+            return Some((s, sign));
+        }
+        let (q, r) = div_rem(f, &x, &y);
+        let dr = deg(&r)?; // r = 0: a common factor
+        if (dx * dy) % 2 == 1 {
+            res = f.neg(res);
+        }
+        res = f.mul(res, f.pow(y[dy], (dx - dr) as u64));
+        let t = sub(f, &t0, &mul(f, &q, &t1));
+        t0 = std::mem::replace(&mut t1, t);
+        x = std::mem::replace(&mut y, r);
+    }
+}
+
+/// Chinese remainder: the residue `c mod m` (with `c` in `0..m` or the
+/// symmetric range) is combined with `r mod p` into a residue mod `m·p`,
+/// returned in `0..m·p`. `minv` is `m⁻¹ mod p`.
+pub fn crt(c: &BigInt, m: &BigInt, r: u64, f: Fp, minv: u64) -> BigInt {
+    let cm = f.reduce(c);
+    let t = f.mul(f.sub(r, cm), minv);
+    let mut out = c + m * BigInt::from(t);
+    if out.is_negative() {
+        out += m * BigInt::from(f.p);
+    }
+    out
+}
+
+/// The representative of `c mod m` in `(-m/2, m/2]`.
+pub fn symmetric(c: &BigInt, m: &BigInt) -> BigInt {
+    let c = c.mod_floor(m);
+    if (&c << 1u32) > *m { c - m } else { c }
+}
+
+/// Rational reconstruction (Wang): `n/d ≡ c (mod m)` with `|n|, d ≤
+/// √(m/2)`, if it exists.
+pub fn rational_reconstruct(c: &BigInt, m: &BigInt) -> Option<(BigInt, BigInt)> {
+    let bound = (m >> 1u32).sqrt();
+    let (mut r0, mut r1) = (m.clone(), c.mod_floor(m));
+    let (mut t0, mut t1) = (BigInt::zero(), BigInt::one());
+    while r1 > bound {
+        let (q, r) = r0.div_rem(&r1);
+        r0 = std::mem::replace(&mut r1, r);
+        let t = &t0 - &q * &t1;
+        t0 = std::mem::replace(&mut t1, t);
+    }
+    if t1.is_zero() || t1.abs() > bound {
+        return None;
+    }
+    let (n, d) = if t1.is_negative() {
+        (-r1, -t1)
+    } else {
+        (r1, t1)
+    };
+    if !n.gcd(&d).is_one() {
+        return None;
+    }
+    Some((n, d))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn primes_are_prime_and_descending() {
+        let ps: Vec<u64> = primes().take(5).collect();
+        assert!(ps.windows(2).all(|w| w[0] > w[1]));
+        assert!(ps.iter().all(|&p| is_prime(p) && p < 1 << 62));
+        assert!(!is_prime(3_215_031_751)); // strong pseudoprime to 2, 3, 5, 7
+        assert!(is_prime(1_000_000_007));
+    }
+
+    #[test]
+    fn euclid_mod_p() {
+        let f = Fp::new(1_000_000_007);
+        // (x + 1)(x + 2) and (x + 1)(x + 3)
+        let a = mul(f, &[1, 1], &[2, 1]);
+        let b = mul(f, &[1, 1], &[3, 1]);
+        assert_eq!(gcd(f, &a, &b), vec![1, 1]);
+        let (q, r) = div_rem(f, &a, &[1, 1]);
+        assert_eq!((q, r), (vec![2, 1], vec![]));
+    }
+
+    #[test]
+    fn inverse_and_resultant_mod_p() {
+        let f = Fp::new(1_000_000_007);
+        // a = x + 2, m = x^2 + 1: Res(a, m) = m(−2) = 5, a⁻¹ = (2 − x)/5.
+        let (s, r) = inverse_and_resultant(f, &[2, 1], &[1, 0, 1]).unwrap();
+        assert_eq!(r, 5);
+        let i5 = f.inv(5);
+        assert_eq!(s, vec![f.mul(2, i5), f.mul(f.neg(1), i5)]);
+        assert!(inverse_and_resultant(f, &[1, 1], &[f.neg(1), 0, 1]).is_none());
+    }
+
+    #[test]
+    fn crt_and_reconstruction() {
+        let ps: Vec<u64> = primes().take(3).collect();
+        let x = BigInt::from(-123_456_789_012_345_678_901_234_567i128);
+        let (mut c, mut m) = (BigInt::zero(), BigInt::one());
+        for &p in &ps {
+            let f = Fp::new(p);
+            let minv = f.inv(f.reduce(&m));
+            c = crt(&c, &m, f.reduce(&x), f, minv);
+            m *= p;
+        }
+        assert_eq!(symmetric(&c, &m), x);
+        // 22/7 mod m
+        let f = BigInt::from(7).modinv(&m).unwrap() * 22;
+        let (n, d) = rational_reconstruct(&f, &m).unwrap();
+        assert_eq!((n, d), (BigInt::from(22), BigInt::from(7)));
+    }
+}
