@@ -24,8 +24,22 @@ pub fn to_matrix(symbols: &[String], m: &MatrixDef) -> Matrix<PolyRing> {
 
 /// Parses a file, mapping errors to [`CliError::Lang`].
 pub fn load(path: &std::path::PathBuf) -> Result<Program, CliError> {
+    load_with_source(path).map(|(p, _)| p)
+}
+
+/// A source file's text and the name it is shown under.
+pub struct Source {
+    /// The text.
+    pub text: String,
+    /// The file name as given.
+    pub name: String,
+}
+
+/// [`load`], keeping the text so that later errors can point into it.
+pub fn load_with_source(path: &std::path::PathBuf) -> Result<(Program, Source), CliError> {
     let (text, name) = read_source(path)?;
-    parse_program(&text, &name).map_err(|e| CliError::Lang(Box::new(e)))
+    let p = parse_program(&text, &name).map_err(|e| CliError::Lang(Box::new(e)))?;
+    Ok((p, Source { text, name }))
 }
 
 /// Resolves `--principal` against the file's symbols (the flag wins).
