@@ -17,6 +17,7 @@
 
 use crate::algebra::smith::modes::SmithError;
 use crate::lang::LangErrors;
+use crate::lang::diagnostics::elide_long_numbers;
 use crate::plan::PlanError;
 use crate::reduce::ReduceError;
 
@@ -136,15 +137,20 @@ impl CliError {
                         miette::GraphicalTheme::unicode_nocolor(),
                     )
                 };
-                let mut out = String::new();
-                if handler.render_report(&mut out, errs.as_ref()).is_ok() {
-                    eprint!("{out}");
-                } else {
-                    eprint!("{}", errs.render());
+                for (i, one) in errs.split().iter().enumerate() {
+                    if i > 0 {
+                        eprintln!();
+                    }
+                    let mut out = String::new();
+                    if !one.has_long_lines() && handler.render_report(&mut out, one).is_ok() {
+                        eprint!("{}", elide_long_numbers(&out));
+                    } else {
+                        eprint!("{}", one.render());
+                    }
                 }
                 eprintln!("{}", summary(errs.len()));
             }
-            other => eprintln!("error: {other}"),
+            other => eprintln!("error: {}", elide_long_numbers(&other.to_string())),
         }
     }
 }
