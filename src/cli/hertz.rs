@@ -535,7 +535,11 @@ pub fn parse_range(
         vec![a]
     } else {
         (0..n)
-            .map(|k| a + (b - a) * k as f64 / (n - 1) as f64)
+            .map(|k| {
+                // Exact at both ends: a·(1 − s) + b·s.
+                let s = k as f64 / (n - 1) as f64;
+                a * (1.0 - s) + b * s
+            })
             .collect()
     })
 }
