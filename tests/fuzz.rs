@@ -12,7 +12,11 @@
 //!   `LAMBDAMAT_FUZZ_CASES=1000000 cargo test --release --test fuzz -- --ignored --nocapture`
 //!   with `LAMBDAMAT_FUZZ_SEED` to start elsewhere; it fails on a panic or
 //!   on an input slower than `LAMBDAMAT_FUZZ_MAX_SECS` (default 10) and
-//!   writes such inputs to `target/fuzz-findings/`.
+//!   writes such inputs to `target/tmp/fuzz-findings/`;
+//!   `LAMBDAMAT_FUZZ_REPLAY=FILE` runs one such input again and times it.
+//!   Times are wall-clock: on a loaded machine (or under `nice`) an input
+//!   can be slow only because the process waited for a core, so replay a
+//!   slow finding before believing it.
 
 use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::time::{Duration, Instant};
@@ -308,6 +312,19 @@ fn fuzz_long() {
             .and_then(|v| v.parse().ok())
             .unwrap_or(d)
     };
+    // Replay one finding: `LAMBDAMAT_FUZZ_REPLAY=path/to/input.lmx`.
+    if let Ok(path) = std::env::var("LAMBDAMAT_FUZZ_REPLAY") {
+        let src = std::fs::read_to_string(&path).expect("replay file");
+        let start = Instant::now();
+        let ok = parse_program(&src, "fuzz.lmx")
+            .map(|p| pipeline(&p))
+            .is_ok();
+        eprintln!(
+            "replay {path}: valid {ok}, {:.3} s",
+            start.elapsed().as_secs_f64()
+        );
+        return;
+    }
     let cases = env("LAMBDAMAT_FUZZ_CASES", 100_000) as usize;
     let seed = env("LAMBDAMAT_FUZZ_SEED", 1);
     let max = Duration::from_secs(env("LAMBDAMAT_FUZZ_MAX_SECS", 10));
