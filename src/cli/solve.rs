@@ -120,6 +120,7 @@ pub fn located(e: PlanError, src: &Source) -> CliError {
 /// The flags of a generated solver (the `solve` flags without a file).
 #[derive(clap::Parser, Debug)]
 #[command(about = "A solver written by `lambdamat codegen`: solves its system and prints the report of `lambdamat solve`.", long_about = None)]
+#[command(after_help = super::AFTER_HELP)]
 struct SolverCli {
     #[command(flatten)]
     flags: SolveFlags,
