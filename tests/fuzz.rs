@@ -9,13 +9,13 @@
 //!
 //! * CI runs a short seeded slice (`fuzz_slice`, a few seconds);
 //! * the long run is a documented command (README, "Fuzzing"):
-//!   `LAMBDAMAT_FUZZ_CASES=1000000 cargo test --release --test fuzz -- --ignored --nocapture`
+//!   `LAMBDAMAT_FUZZ_CASES=1000000 cargo test --release --test fuzz -- --ignored --nocapture --test-threads 1`
 //!   with `LAMBDAMAT_FUZZ_SEED` to start elsewhere; it fails on a panic or
 //!   on an input slower than `LAMBDAMAT_FUZZ_MAX_SECS` (default 10) and
 //!   writes such inputs to `target/tmp/fuzz-findings/`;
 //!   `LAMBDAMAT_FUZZ_REPLAY=FILE` runs one such input again and times it.
-//!   Times are the thread's CPU time on Linux (`/proc/thread-self/stat`,
-//!   10 ms ticks), wall-clock elsewhere: under `nice` on a loaded machine
+//!   Times are the process's CPU time on Linux (`/proc/self/stat`, 10 ms
+//!   ticks; run it with `--test-threads 1`), wall-clock elsewhere: under `nice` on a loaded machine
 //!   an input can take minutes of wall-clock time only waiting for a core.
 
 use std::panic::{AssertUnwindSafe, catch_unwind};
@@ -187,12 +187,13 @@ fn mutate(src: &str, rng: &mut Rng) -> String {
     }
 }
 
-/// CPU time used by this thread so far (user + system, from
-/// `/proc/thread-self/stat`, in clock ticks of 10 ms), or `None` where that
-/// file does not exist. Waiting for a core on a loaded machine does not
-/// count, unlike wall-clock time.
-fn thread_cpu_time() -> Option<Duration> {
-    let stat = std::fs::read_to_string("/proc/thread-self/stat").ok()?;
+/// CPU time used by this process so far (user + system, all threads: the
+/// front end parses on a worker thread; from `/proc/self/stat`, in clock
+/// ticks of 10 ms), or `None` where that file does not exist. Waiting for
+/// a core on a loaded machine does not count, unlike wall-clock time. The
+/// long run uses one test thread, so the difference is the input's own.
+fn process_cpu_time() -> Option<Duration> {
+    let stat = std::fs::read_to_string("/proc/self/stat").ok()?;
     // Fields after the command name (which is in parentheses): state is
     // field 3, utime field 14, stime field 15.
     let rest = &stat[stat.rfind(')')? + 2..];
@@ -204,7 +205,7 @@ fn thread_cpu_time() -> Option<Duration> {
 /// Time spent since `wall`/`cpu` were taken: CPU time where the system
 /// gives it, else wall-clock time.
 fn spent(wall: Instant, cpu: Option<Duration>) -> Duration {
-    match (cpu, thread_cpu_time()) {
+    match (cpu, process_cpu_time()) {
         (Some(a), Some(b)) => b.saturating_sub(a),
         _ => wall.elapsed(),
     }
@@ -261,7 +262,7 @@ fn fuzz(seed: u64, cases: usize, max: Duration) -> Findings {
         for _ in 0..1 + rng.below(4) {
             src = mutate(&src, &mut rng);
         }
-        let (start, cpu) = (Instant::now(), thread_cpu_time());
+        let (start, cpu) = (Instant::now(), process_cpu_time());
         let result = catch_unwind(AssertUnwindSafe(|| {
             match parse_program(&src, "fuzz.lmx") {
                 Ok(p) => {
@@ -338,7 +339,7 @@ fn fuzz_long() {
     // Replay one finding: `LAMBDAMAT_FUZZ_REPLAY=path/to/input.lmx`.
     if let Ok(path) = std::env::var("LAMBDAMAT_FUZZ_REPLAY") {
         let src = std::fs::read_to_string(&path).expect("replay file");
-        let (start, cpu) = (Instant::now(), thread_cpu_time());
+        let (start, cpu) = (Instant::now(), process_cpu_time());
         let ok = parse_program(&src, "fuzz.lmx")
             .map(|p| pipeline(&p))
             .is_ok();
