@@ -1,7 +1,7 @@
 //! lambdamat turns systems of linear operator equations into exact algebra
 //! and then into numerical solvers.
 //!
-//! The crate is split along the pipeline of `docs/design.md`; each folder is
+//! The crate is split along the pipeline; each folder is
 //! one stage and may only depend on the stages before it:
 //!
 //! * [`lang`]: text → spanned AST → validated, lowered objects (the only

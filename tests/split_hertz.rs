@@ -139,7 +139,7 @@ fn too_few_levels_is_not_success() {
         .args(["solve", "examples/hertz.lmx", "--max-level", "1"])
         .output()
         .expect("runs");
-    // Two levels cannot agree to 1e-10: printed, marked, and not exit 0.
-    assert!(!out.status.success());
+    // Two levels cannot agree to 1e-10: printed, marked, exit 4.
+    assert_eq!(out.status.code(), Some(4));
     assert!(String::from_utf8_lossy(&out.stdout).contains("not converged"));
 }

@@ -5,12 +5,23 @@ use std::io::Write;
 
 use super::CodegenArgs;
 use super::error::CliError;
-use super::smith::load;
+use super::output::{check_not_input, write_file};
+use super::smith::load_with_source;
+use super::solve::located;
 use crate::codegen::{Provenance, solver_source};
+use crate::plan::{CompiledSystem, SolveOptions, solve_system};
 
 /// `lambdamat codegen FILE [--for u] [-o solver.rs]`.
+///
+/// The system must pass the checks `lambdamat solve` makes on its input
+/// (kernels, right sides finite at the collocation points): a short solve on
+/// the first levels runs them, and only its input errors refuse the file
+/// (a numerical failure there is the generated solver's business).
 pub fn codegen_command(a: &CodegenArgs, w: &mut dyn Write) -> Result<(), CliError> {
-    let prog = load(&a.file)?;
+    if let Some(path) = &a.output {
+        check_not_input(path, &[a.file.as_path()])?;
+    }
+    let (prog, src) = load_with_source(&a.file)?;
     // The generated text depends on the source and `--for` only, not on
     // where it is written, so regenerating is reproducible.
     let mut command = format!("lambdamat codegen {}", a.file.display());
@@ -22,15 +33,26 @@ pub fn codegen_command(a: &CodegenArgs, w: &mut dyn Write) -> Result<(), CliErro
         source: a.file.display().to_string(),
         command,
     };
-    let code = solver_source(&prog, a.unknown.as_deref(), &from)?;
+    let code = solver_source(&prog, a.unknown.as_deref(), &from).map_err(|e| located(e, &src))?;
+    let sys =
+        CompiledSystem::from_program(&prog, a.unknown.as_deref()).map_err(|e| located(e, &src))?;
+    let quick = SolveOptions {
+        max_level: 2,
+        tol: 1.0,
+        ..SolveOptions::default()
+    };
+    if let Err(e) = solve_system(&sys, &quick)
+        && e.is_input_error()
+    {
+        return Err(located(e, &src));
+    }
     match &a.output {
         Some(path) => {
-            std::fs::write(path, &code).map_err(CliError::Output)?;
-            eprintln!(
-                "wrote {} ({} lines): build it as a binary of a crate that depends on lambdamat, or include it as a module",
-                path.display(),
+            let note = format!(
+                "({} lines): build it as a binary of a crate that depends on lambdamat, or include it as a module",
                 code.lines().count()
             );
+            write_file(path, code.as_bytes(), &[a.file.as_path()], &note)?;
         }
         None => w.write_all(code.as_bytes())?,
     }

@@ -1,9 +1,23 @@
 //! The command line's top-level error: it wraps each layer's error enum and
 //! decides the exit code and how the error is shown (miette for source
 //! errors, one plain line otherwise). Nothing else in the CLI prints errors.
+//!
+//! The exit-code contract (documented in `--help` and README.md):
+//!
+//! | code | meaning |
+//! |---|---|
+//! | 0 | success: every result printed reached its tolerance |
+//! | 1 | usage: the command line cannot be parsed or is contradictory |
+//! | 2 | invalid input: the file, a parameter or a path given (nothing computed) |
+//! | 3 | a computation failed (for tables and sweeps: at least one row failed) |
+//! | 4 | finished but not converged: results printed and marked, tolerance not reached |
+//!
+//! A closed standard output (`lambdamat … | head`) is a normal end: exit 0,
+//! no message.
 
 use crate::algebra::smith::modes::SmithError;
 use crate::lang::LangErrors;
+use crate::lang::diagnostics::elide_long_numbers;
 use crate::plan::PlanError;
 use crate::reduce::ReduceError;
 
@@ -41,10 +55,45 @@ pub enum CliError {
     /// No reduction exists (no system, no such unknown, singular λ-matrix).
     #[error(transparent)]
     Reduce(#[from] ReduceError),
-    /// Writing the output failed.
+    /// Writing to standard output failed (a closed pipe is not an error:
+    /// see [`CliError::exit_code`]).
     #[error("cannot write output: {0}")]
     Output(#[from] std::io::Error),
+    /// A file named on the command line cannot be written (or would
+    /// overwrite the input).
+    #[error("cannot write {path}: {reason}")]
+    Write {
+        /// The path as given.
+        path: String,
+        /// Why.
+        reason: String,
+    },
+    /// Every result was printed, but at least one did not reach its
+    /// tolerance (exit 4).
+    #[error("not converged: {0}")]
+    NotConverged(String),
+    /// Some rows of a table or sweep failed; the others were printed (exit 3).
+    #[error("{failed} of {total} {what} failed")]
+    RowsFailed {
+        /// How many rows failed.
+        failed: usize,
+        /// How many rows there were.
+        total: usize,
+        /// What a row is ("rows", "solves").
+        what: &'static str,
+    },
 }
+
+/// Exit code: success, every result converged.
+pub const EXIT_OK: i32 = 0;
+/// Exit code: the command line cannot be parsed or is contradictory.
+pub const EXIT_USAGE: i32 = 1;
+/// Exit code: invalid input (file, parameter, path); nothing computed.
+pub const EXIT_INVALID: i32 = 2;
+/// Exit code: a computation failed (or some rows of a table or sweep).
+pub const EXIT_FAILED: i32 = 3;
+/// Exit code: finished, results printed and marked, tolerance not reached.
+pub const EXIT_NOT_CONVERGED: i32 = 4;
 
 impl CliError {
     /// The process exit code: 2 invalid input, 3 failed computation. A
@@ -52,20 +101,34 @@ impl CliError {
     /// not determine the unknown, and no computation failed.
     pub fn exit_code(&self) -> i32 {
         match self {
-            CliError::Io { .. } | CliError::Lang(_) | CliError::Invalid(_) => 2,
-            CliError::Smith(SmithError::TooManyMinors(_)) => 2,
-            CliError::Reduce(_) => 2,
-            CliError::Usage(_) => 1,
-            CliError::Plan(e) if e.is_input_error() => 2,
-            CliError::Smith(_) | CliError::Plan(_) | CliError::Numeric(_) | CliError::Output(_) => {
-                3
-            }
+            CliError::Output(e) if e.kind() == std::io::ErrorKind::BrokenPipe => EXIT_OK,
+            CliError::Io { .. }
+            | CliError::Lang(_)
+            | CliError::Invalid(_)
+            | CliError::Write { .. } => EXIT_INVALID,
+            CliError::Smith(SmithError::TooManyMinors(_)) => EXIT_INVALID,
+            CliError::Reduce(_) => EXIT_INVALID,
+            CliError::Usage(_) => EXIT_USAGE,
+            CliError::Plan(e) if e.is_input_error() => EXIT_INVALID,
+            CliError::NotConverged(_) => EXIT_NOT_CONVERGED,
+            CliError::Smith(_)
+            | CliError::Plan(_)
+            | CliError::Numeric(_)
+            | CliError::Output(_)
+            | CliError::RowsFailed { .. } => EXIT_FAILED,
         }
+    }
+
+    /// Whether this is the normal end of a run whose reader went away
+    /// (standard output closed): nothing is reported then.
+    pub fn is_closed_output(&self) -> bool {
+        matches!(self, CliError::Output(e) if e.kind() == std::io::ErrorKind::BrokenPipe)
     }
 
     /// Prints the error to standard error.
     pub fn report(&self) {
         match self {
+            _ if self.is_closed_output() => {}
             CliError::Lang(errs) => {
                 let handler = if std::io::IsTerminal::is_terminal(&std::io::stderr()) {
                     miette::GraphicalReportHandler::new()
@@ -74,15 +137,20 @@ impl CliError {
                         miette::GraphicalTheme::unicode_nocolor(),
                     )
                 };
-                let mut out = String::new();
-                if handler.render_report(&mut out, errs.as_ref()).is_ok() {
-                    eprint!("{out}");
-                } else {
-                    eprint!("{}", errs.render());
+                for (i, one) in errs.split().iter().enumerate() {
+                    if i > 0 {
+                        eprintln!();
+                    }
+                    let mut out = String::new();
+                    if !one.has_long_lines() && handler.render_report(&mut out, one).is_ok() {
+                        eprint!("{}", elide_long_numbers(&out));
+                    } else {
+                        eprint!("{}", one.render());
+                    }
                 }
                 eprintln!("{}", summary(errs.len()));
             }
-            other => eprintln!("error: {other}"),
+            other => eprintln!("error: {}", elide_long_numbers(&other.to_string())),
         }
     }
 }

@@ -4,7 +4,9 @@
 //! seed's literal algorithm) and `hertz sweep` (a ν × μ grid in parallel).
 //! All numerics come from [`crate::hertz`]; this file only formats.
 
+use super::AFTER_HELP;
 use super::error::CliError;
+use super::output::write_file;
 use crate::hertz::seed::seed_literal;
 use crate::hertz::{HertzOptions, HertzSolution, solve_given_c, solve_given_mu};
 use clap::{Args, Subcommand};
@@ -20,17 +22,17 @@ use std::path::PathBuf;
 pub struct HertzArgs {
     #[command(subcommand)]
     sub: Option<HertzSub>,
-    /// Poisson's ratio ν in [0, 1/2).
-    #[arg(long)]
+    /// Poisson's ratio ν in [0, 1/2].
+    #[arg(long, allow_negative_numbers = true)]
     nu: Option<f64>,
     /// Stick radius c in (0, 1): find μ.
-    #[arg(long, conflicts_with = "mu")]
+    #[arg(long, conflicts_with = "mu", allow_negative_numbers = true)]
     c: Option<f64>,
     /// Friction coefficient μ ≥ 0: find c.
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     mu: Option<f64>,
-    /// Target accuracy: refine until successive levels agree to this.
-    #[arg(long, default_value_t = 1e-10)]
+    /// Target accuracy (finite, > 0): refine until successive levels agree to this.
+    #[arg(long, default_value = "1e-10", allow_negative_numbers = true)]
     tol: f64,
     /// Print one JSON object instead of text.
     #[arg(long)]
@@ -46,24 +48,29 @@ pub struct HertzArgs {
 #[derive(Subcommand, Debug)]
 enum HertzSub {
     /// The seed paper's Tables 1 and 2 beside our values (Markdown, or CSV with --csv).
+    #[command(after_help = AFTER_HELP)]
     Table {
-        /// Print CSV instead of Markdown.
+        /// Print one table as CSV instead of Markdown (table 1 unless --table 2).
         #[arg(long)]
         csv: bool,
-        /// Target accuracy of our solves.
-        #[arg(long, default_value_t = 1e-10)]
+        /// Only this table (1 or 2); Markdown shows both by default.
+        #[arg(long, value_parser = clap::value_parser!(u8).range(1..=2))]
+        table: Option<u8>,
+        /// Target accuracy of our solves (finite, > 0).
+        #[arg(long, default_value = "1e-10", allow_negative_numbers = true)]
         tol: f64,
     },
     /// Solve on a ν × μ grid in parallel; CSV (default) or JSON lines.
+    #[command(after_help = AFTER_HELP)]
     Sweep {
-        /// ν range as START:END:COUNT, e.g. 0:0.45:10.
-        #[arg(long, value_name = "START:END:COUNT")]
+        /// ν range as START:END:COUNT within [0, 1/2], e.g. 0:0.45:10 (END may be below START).
+        #[arg(long, value_name = "START:END:COUNT", allow_hyphen_values = true)]
         nu: String,
-        /// μ range as START:END:COUNT, e.g. 0.1:1:10.
-        #[arg(long, value_name = "START:END:COUNT")]
+        /// μ range as START:END:COUNT with μ ≥ 0, e.g. 0.1:1:10.
+        #[arg(long, value_name = "START:END:COUNT", allow_hyphen_values = true)]
         mu: String,
-        /// Target accuracy of each solve.
-        #[arg(long, default_value_t = 1e-8)]
+        /// Target accuracy of each solve (finite, > 0).
+        #[arg(long, default_value = "1e-8", allow_negative_numbers = true)]
         tol: f64,
         /// Print JSON lines instead of CSV.
         #[arg(long)]
@@ -81,10 +88,25 @@ fn hertz_err(e: crate::hertz::HertzError) -> CliError {
     }
 }
 
+/// Refuses a tolerance that is not a finite number > 0.
+fn check_tol(tol: f64) -> Result<(), CliError> {
+    if tol > 0.0 && tol.is_finite() {
+        Ok(())
+    } else {
+        Err(CliError::Invalid(format!(
+            "--tol {tol}: the tolerance must be a finite number > 0, e.g. 1e-10"
+        )))
+    }
+}
+
 /// `lambdamat hertz …`.
 pub fn hertz_command(a: &HertzArgs, w: &mut dyn Write) -> Result<(), CliError> {
     match &a.sub {
-        Some(HertzSub::Table { csv, tol }) => return table(*csv, *tol, w),
+        Some(HertzSub::Table {
+            csv,
+            table: which,
+            tol,
+        }) => return table(*csv, *which, *tol, w),
         Some(HertzSub::Sweep {
             nu,
             mu,
@@ -99,17 +121,14 @@ pub fn hertz_command(a: &HertzArgs, w: &mut dyn Write) -> Result<(), CliError> {
             "hertz needs --nu N and one of --c C or --mu M (or a subcommand: table, sweep)".into(),
         )
     })?;
-    if !(a.tol > 0.0 && a.tol.is_finite()) {
-        return Err(CliError::Invalid(format!(
-            "--tol must be positive, got {}",
-            a.tol
-        )));
-    }
+    check_tol(a.tol)?;
+    // -0 is 0 (and is shown so).
+    let (nu, c, mu) = (nu + 0.0, a.c.map(|c| c + 0.0), a.mu.map(|m| m + 0.0));
     let opts = HertzOptions {
         tol: a.tol,
         ..HertzOptions::default()
     };
-    let s = match (a.c, a.mu) {
+    let s = match (c, mu) {
         (Some(c), None) => solve_given_c(nu, c, &opts),
         (None, Some(mu)) => solve_given_mu(nu, mu, &opts),
         _ => {
@@ -120,10 +139,10 @@ pub fn hertz_command(a: &HertzArgs, w: &mut dyn Write) -> Result<(), CliError> {
     }
     .map_err(hertz_err)?;
     if let Some(path) = &a.csv {
-        write_csv(&s, path)?;
+        write_file(path, profile_csv(&s)?.as_bytes(), &[], "")?;
     }
     if let Some(path) = &a.plot {
-        super::plot::hertz_plot(&s, path)?;
+        write_file(path, super::plot::hertz_svg(&s)?.as_bytes(), &[], "")?;
     }
     if a.json {
         writeln!(
@@ -133,18 +152,12 @@ pub fn hertz_command(a: &HertzArgs, w: &mut dyn Write) -> Result<(), CliError> {
         )?;
     } else {
         write!(w, "{}", text(&s, a.c.is_some()))?;
-        if let Some(p) = &a.csv {
-            writeln!(w, "wrote {}", p.display())?;
-        }
-        if let Some(p) = &a.plot {
-            writeln!(w, "wrote {}", p.display())?;
-        }
     }
     if !s.converged {
-        eprintln!(
-            "warning: tolerance {} not reached; the error estimate {:.1e} is the honest one",
+        return Err(CliError::NotConverged(format!(
+            "tolerance {:.0e} not reached; the error estimate {:.1e} is the honest one",
             s.tol, s.error_estimate
-        );
+        )));
     }
     Ok(())
 }
@@ -208,7 +221,8 @@ fn text(s: &HertzSolution, given_c: bool) -> String {
     o
 }
 
-fn write_csv(s: &HertzSolution, path: &PathBuf) -> Result<(), CliError> {
+/// `x, p, q, mu_p, u` on a fine grid, as CSV.
+fn profile_csv(s: &HertzSolution) -> Result<String, CliError> {
     let samples = s.profile(400).map_err(hertz_err)?;
     let mut out = String::from("x,p,q,mu_p,u\n");
     for p in samples {
@@ -218,8 +232,7 @@ fn write_csv(s: &HertzSolution, path: &PathBuf) -> Result<(), CliError> {
             p.x, p.p, p.q, p.mu_p, p.u
         );
     }
-    std::fs::write(path, out)?;
-    Ok(())
+    Ok(out)
 }
 
 /// One row of the seed's Table 1: μ, ν and the published c1 (Spence), c2, c3.
@@ -269,17 +282,70 @@ fn seed_cell(nu: f64, mu: f64, c: f64, tol: f64) -> String {
     }
 }
 
-fn table(csv: bool, tol: f64, w: &mut dyn Write) -> Result<(), CliError> {
+/// How the rows of a table or sweep ended.
+#[derive(Default)]
+struct Tally {
+    total: usize,
+    failed: usize,
+    not_converged: usize,
+}
+
+impl Tally {
+    fn add<T>(&mut self, r: &Result<HertzSolution, T>) {
+        self.total += 1;
+        match r {
+            Ok(s) if !s.converged => self.not_converged += 1,
+            Ok(_) => {}
+            Err(_) => self.failed += 1,
+        }
+    }
+
+    /// The exit status: some row failed (3), else some did not converge (4).
+    fn status(&self, what: &'static str) -> Result<(), CliError> {
+        if self.failed > 0 {
+            Err(CliError::RowsFailed {
+                failed: self.failed,
+                total: self.total,
+                what,
+            })
+        } else if self.not_converged > 0 {
+            Err(CliError::NotConverged(format!(
+                "{} of {} {what} did not reach the tolerance",
+                self.not_converged, self.total
+            )))
+        } else {
+            Ok(())
+        }
+    }
+}
+
+fn table(csv: bool, which: Option<u8>, tol: f64, w: &mut dyn Write) -> Result<(), CliError> {
+    check_tol(tol)?;
     let opts = HertzOptions {
         tol,
         ..HertzOptions::default()
     };
+    // CSV is one table per output; Markdown shows both unless one is asked for.
+    let which = if csv { Some(which.unwrap_or(1)) } else { which };
+    let show1 = which != Some(2);
+    let show2 = which != Some(1);
+    let tally = std::sync::Mutex::new(Tally::default());
+    let count = |r: &Result<HertzSolution, crate::hertz::HertzError>| {
+        if let Ok(mut t) = tally.lock() {
+            t.add(r);
+        }
+    };
     // Table 1: our c for the published μ; our μ for Spence's c1.
     let rows1: Vec<Vec<String>> = TABLE1
         .par_iter()
+        .filter(|_| show1)
         .map(|&(mu, nu, c1, c2, c3)| {
             let by_mu = solve_given_mu(nu, mu, &opts);
             let by_c = c1.map(|c| solve_given_c(nu, c, &opts));
+            count(&by_mu);
+            if let Some(r) = &by_c {
+                count(r);
+            }
             let (c_ours, pstar, est) = match &by_mu {
                 Ok(s) => (
                     format!("{:.6}", s.c),
@@ -328,7 +394,13 @@ fn table(csv: bool, tol: f64, w: &mut dyn Write) -> Result<(), CliError> {
         .flat_map(|&nu| TABLE2_PAIRS.iter().map(move |&(c, mu)| (nu, c, mu)))
         .collect::<Vec<_>>()
         .par_iter()
-        .map(|&(nu, c, mu)| match solve_given_c(nu, c, &opts) {
+        .filter(|_| show2)
+        .map(|&(nu, c, mu)| {
+            let r = solve_given_c(nu, c, &opts);
+            count(&r);
+            (nu, c, mu, r)
+        })
+        .map(|(nu, c, mu, r)| match r {
             Ok(s) => vec![
                 format!("{nu}"),
                 format!("{c}"),
@@ -348,34 +420,40 @@ fn table(csv: bool, tol: f64, w: &mut dyn Write) -> Result<(), CliError> {
         })
         .collect();
     let head2 = ["ν", "c", "seed μ", "our μ(c)", "our P*", "error est."];
+    let tally = tally.into_inner().unwrap_or_default();
     if csv {
-        writeln!(w, "# table 1")?;
-        write_csv_rows(w, &head1, &rows1)?;
-        writeln!(w, "# table 2")?;
-        write_csv_rows(w, &head2, &rows2)?;
-        return Ok(());
+        if show1 {
+            write_csv_rows(w, &head1, &rows1)?;
+        } else {
+            write_csv_rows(w, &head2, &rows2)?;
+        }
+        return tally.status("solves");
     }
-    writeln!(
-        w,
-        "Table 1 of the seed paper (c for given μ; ν = 0 and 0.25) beside lambdamat\n"
-    )?;
-    write_md(w, &head1, &rows1)?;
-    writeln!(
-        w,
-        "\nc1: Spence (1975); c2, c3: Gauthier et al. (LCP), as printed in the seed. Ours: the exact stick/slip problem of\n\
+    if show1 {
+        writeln!(
+            w,
+            "Table 1 of the seed paper (c for given μ; ν = 0 and 0.25) beside lambdamat\n"
+        )?;
+        write_md(w, &head1, &rows1)?;
+        writeln!(
+            w,
+            "\nc1: Spence (1975); c2, c3: Gauthier et al. (LCP), as printed in the seed. Ours: the exact stick/slip problem of\n\
          docs/hertz.md; the error estimate is the change between the last two refinement levels. The last column runs the\n\
          seed's own algorithm (eq. 2.4 on [c,1], eq. 3.3 on [0,c)) at our c with the same numerics, levels 0..4.\n"
-    )?;
-    writeln!(
-        w,
-        "Table 2 of the seed paper (the same (c, μ) pairs for every ν) beside lambdamat\n"
-    )?;
-    write_md(w, &head2, &rows2)?;
-    writeln!(
-        w,
-        "\nThe seed uses ν = 0 pairs (c, μ) for every ν; in the exact problem μ(c) depends on ν, as the fourth column shows."
-    )?;
-    Ok(())
+        )?;
+    }
+    if show2 {
+        writeln!(
+            w,
+            "Table 2 of the seed paper (the same (c, μ) pairs for every ν) beside lambdamat\n"
+        )?;
+        write_md(w, &head2, &rows2)?;
+        writeln!(
+            w,
+            "\nThe seed uses ν = 0 pairs (c, μ) for every ν; in the exact problem μ(c) depends on ν, as the fourth column shows."
+        )?;
+    }
+    tally.status("solves")
 }
 
 fn write_md(w: &mut dyn Write, head: &[&str], rows: &[Vec<String>]) -> Result<(), CliError> {
@@ -414,8 +492,17 @@ fn write_csv_rows(w: &mut dyn Write, head: &[&str], rows: &[Vec<String>]) -> Res
     Ok(())
 }
 
-/// Parses `START:END:COUNT` into `COUNT` evenly spaced values.
-pub fn parse_range(flag: &str, s: &str) -> Result<Vec<f64>, CliError> {
+/// The most points a sweep solves (ν count × μ count): checked before
+/// anything is allocated.
+pub const MAX_SWEEP_POINTS: usize = 100_000;
+
+/// Parses `START:END:COUNT` into `COUNT` evenly spaced values (END may be
+/// below START), each inside `domain` (a description and a test).
+pub fn parse_range(
+    flag: &str,
+    s: &str,
+    domain: (&str, fn(f64) -> bool),
+) -> Result<Vec<f64>, CliError> {
     let bad = || {
         CliError::Usage(format!(
             "--{flag} {s}: expected START:END:COUNT, e.g. 0:0.45:10"
@@ -430,14 +517,29 @@ pub fn parse_range(flag: &str, s: &str) -> Result<Vec<f64>, CliError> {
         b.trim().parse().map_err(|_| bad())?,
     );
     let n: usize = n.trim().parse().map_err(|_| bad())?;
-    if n == 0 || !a.is_finite() || !b.is_finite() {
-        return Err(bad());
+    if n == 0 || n > MAX_SWEEP_POINTS {
+        return Err(CliError::Invalid(format!(
+            "--{flag} {s}: COUNT must be between 1 and {MAX_SWEEP_POINTS}"
+        )));
     }
+    let (what, inside) = domain;
+    for v in [a, b] {
+        if !inside(v) {
+            return Err(CliError::Invalid(format!(
+                "--{flag} {s}: {v} is outside {what}"
+            )));
+        }
+    }
+    let (a, b) = (a + 0.0, b + 0.0);
     Ok(if n == 1 {
         vec![a]
     } else {
         (0..n)
-            .map(|k| a + (b - a) * k as f64 / (n - 1) as f64)
+            .map(|k| {
+                // Exact at both ends: a·(1 − s) + b·s.
+                let s = k as f64 / (n - 1) as f64;
+                a * (1.0 - s) + b * s
+            })
             .collect()
     })
 }
@@ -464,8 +566,17 @@ fn sweep(
     out: Option<&PathBuf>,
     w: &mut dyn Write,
 ) -> Result<(), CliError> {
-    let nus = parse_range("nu", nu)?;
-    let mus = parse_range("mu", mu)?;
+    check_tol(tol)?;
+    let nus = parse_range("nu", nu, ("[0, 1/2]", |v| (0.0..=0.5).contains(&v)))?;
+    let mus = parse_range("mu", mu, ("μ ≥ 0 (finite)", |v| v >= 0.0 && v.is_finite()))?;
+    let points = nus.len().saturating_mul(mus.len());
+    if points > MAX_SWEEP_POINTS {
+        return Err(CliError::Invalid(format!(
+            "the sweep has {} × {} = {points} points; the limit is {MAX_SWEEP_POINTS}",
+            nus.len(),
+            mus.len()
+        )));
+    }
     let grid: Vec<(f64, f64)> = nus
         .iter()
         .flat_map(|&n| mus.iter().map(move |&m| (n, m)))
@@ -479,11 +590,15 @@ fn sweep(
         tol,
         ..HertzOptions::default()
     };
+    let tally = std::sync::Mutex::new(Tally::default());
     let rows: Vec<SweepRow> = grid
         .par_iter()
         .map(|&(nu, mu)| {
             let r = solve_given_mu(nu, mu, &opts);
             bar.inc(1);
+            if let Ok(mut t) = tally.lock() {
+                t.add(&r);
+            }
             match r {
                 Ok(s) => SweepRow {
                     nu,
@@ -546,31 +661,40 @@ fn sweep(
         }
     }
     match out {
-        Some(p) => std::fs::write(p, text)?,
+        Some(p) => write_file(p, text.as_bytes(), &[], "")?,
         None => w.write_all(text.as_bytes())?,
     }
-    // Physical checks over the whole sweep, on standard error.
+    eprintln!("{}", sweep_summary(&rows));
+    tally.into_inner().unwrap_or_default().status("solves")
+}
+
+/// The sweep's summary line: counts, then the physical checks over the
+/// solved points (stick, slip, 0 < c < 1; c non-decreasing in μ at each ν,
+/// whatever order the μ range was given in).
+fn sweep_summary(rows: &[SweepRow]) -> String {
     let solved: Vec<&SweepRow> = rows.iter().filter(|r| r.c.is_some()).collect();
     let failed = rows.len() - solved.len();
+    let head = format!("sweep: {} solves, {failed} failed", rows.len());
+    if solved.is_empty() {
+        return format!("{head}; no point solved, so no physical check");
+    }
     let phys = solved.iter().filter(|r| r.mu > 0.0).all(|r| {
         r.stick_ok == Some(true)
             && r.slip_ok == Some(true)
             && r.c.is_some_and(|c| c > 0.0 && c < 1.0)
     });
-    let monotone = nus.iter().all(|&n| {
-        let cs: Vec<f64> = solved
-            .iter()
-            .filter(|r| r.nu == n)
-            .filter_map(|r| r.c)
-            .collect();
-        cs.windows(2).all(|p| p[1] >= p[0])
-    });
-    eprintln!(
-        "sweep: {} solves, {} refused; physical checks (stick, slip, 0 < c < 1): {}; c non-decreasing in μ: {}",
-        rows.len(),
-        failed,
+    let mut by_nu: Vec<(f64, f64, f64)> = solved
+        .iter()
+        .filter_map(|r| r.c.map(|c| (r.nu, r.mu, c)))
+        .collect();
+    by_nu.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
+    let monotone = by_nu
+        .windows(2)
+        .all(|p| p[0].0 != p[1].0 || p[1].2 >= p[0].2);
+    format!(
+        "{head}; physical checks on the {} solved points (stick, slip, 0 < c < 1): {}; c non-decreasing in μ: {}",
+        solved.len(),
         if phys { "all hold" } else { "SOME FAIL" },
         if monotone { "yes" } else { "NO" }
-    );
-    Ok(())
+    )
 }

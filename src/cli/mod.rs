@@ -1,9 +1,12 @@
 //! The `lambdamat` command line (clap) and report formatting (text, LaTeX,
 //! JSON). It owns exit codes (0 ok, 1 usage, 2 invalid input, 3 failed
-//! computation) and never does algebra or parsing itself: it calls
-//! [`crate::lang`] and [`crate::algebra`] and prints what they return.
+//! computation, 4 not converged: see [`error`]) and never does algebra or
+//! parsing itself: it calls [`crate::lang`] and [`crate::algebra`] and
+//! prints what they return.
 //!
 //! * [`error`]: the top-level error and its exit codes;
+//! * [`locate`]: solve-time errors (kernels, right sides) pointed at the source;
+//! * [`output`]: the files commands write (`wrote FILE`, never over an input);
 //! * [`render`]: matrices, certificates and reports as text and LaTeX;
 //! * [`hertz`]: the flagship Hertz problem (solve, table, sweep);
 //! * [`plot`]: SVG plots;
@@ -17,6 +20,8 @@
 pub mod codegen;
 pub mod error;
 pub mod hertz;
+pub mod locate;
+pub mod output;
 pub mod plot;
 pub mod reduce;
 pub mod render;
@@ -34,9 +39,7 @@ use std::path::PathBuf;
 /// (certified Smith forms) → numerical solvers.
 #[derive(Parser, Debug)]
 #[command(name = "lambdamat", version, about, long_about = None)]
-#[command(
-    after_help = "Exit codes: 0 ok, 1 usage error, 2 invalid input (with line:column), 3 a computation failed.\nThe language is documented in README.md; grammar/lambdamat.pest is its reference."
-)]
+#[command(after_help = AFTER_HELP)]
 pub struct Cli {
     /// Override a parameter of the file for this command: `--set nu=0.25`
     /// (integers, exact decimals and fractions `a/b`; repeatable).
@@ -73,9 +76,21 @@ fn parse_sets(sets: &[String]) -> Result<Vec<(String, num_rational::BigRational)
         .collect()
 }
 
+/// The text after every `--help`: the exit codes and where the documents are.
+pub const AFTER_HELP: &str = concat!(
+    "Exit codes: 0 success (every result reached its tolerance); 1 usage error; ",
+    "2 invalid input (file, parameter or path; with line:column where there is one; nothing computed); ",
+    "3 a computation failed (tables and sweeps: at least one row failed, the count is on stderr); ",
+    "4 finished but not converged (results printed and marked). ",
+    "A closed standard output (| head) ends with 0.\n",
+    "The language: docs/language.md (grammar/lambdamat.pest is its reference); ",
+    "the Hertz problem: docs/hertz.md."
+);
+
 #[derive(Subcommand, Debug)]
 enum Command {
     /// Do everything the file asks for (its directives, in order).
+    #[command(after_help = AFTER_HELP)]
     Run(RunArgs),
     /// Certified Smith normal form (U, D, V) of the file's matrices.
     ///
@@ -84,6 +99,7 @@ enum Command {
     /// --principal s): over Q(others)[s], plus a denominator-free form.
     /// Several symbols and no principal one: invariant factors over Q[all]
     /// from determinantal divisors (no U, V claimed: Q[all] is not a PID).
+    #[command(after_help = AFTER_HELP)]
     Smith(SmithArgs),
     /// One equation for one unknown of the file's operator system.
     ///
@@ -93,16 +109,19 @@ enum Command {
     /// (non-commutative) elimination with explicit inverses, and the symbol
     /// pairs the eliminant had to commute. A singular λ-matrix is an error
     /// (exit code 2).
+    #[command(after_help = AFTER_HELP)]
     Reduce(ReduceArgs),
     /// The Hertz contact problem with finite friction, solved exactly (docs/hertz.md).
     ///
     /// `hertz --nu 0.25 --mu 0.1801` finds the stick radius c; `--c 0.5`
     /// finds μ instead. `hertz table` reproduces the seed paper's tables
     /// beside our values; `hertz sweep` solves a ν × μ grid in parallel.
+    #[command(after_help = AFTER_HELP)]
     Hertz(hertz::HertzArgs),
     /// Solve the file's operator system numerically: unknowns on a grid,
     /// outputs, an error estimate and the commutator defects of the pairs
     /// an elimination commuted.
+    #[command(after_help = AFTER_HELP)]
     Solve(SolveArgs),
     /// Write a standalone Rust solver for the file's operator system.
     ///
@@ -111,6 +130,7 @@ enum Command {
     /// solves through lambdamat's numeric layer, printing what `lambdamat
     /// solve` prints (same flags). Use it as an example or binary target of
     /// a crate that depends on lambdamat, or include it as a module.
+    #[command(after_help = AFTER_HELP)]
     Codegen(CodegenArgs),
 }
 
@@ -133,11 +153,11 @@ pub struct SolveFlags {
     /// coupled (block system), ordered (exact elimination) or commutative (the seed's single equation, a model).
     #[arg(long, default_value = "ordered", value_parser = ["coupled", "ordered", "commutative"])]
     pub method: String,
-    /// Refine until two successive answers agree to this (relative).
-    #[arg(long, default_value_t = 1e-10)]
+    /// Refine until two successive answers agree to this (relative; finite, > 0).
+    #[arg(long, default_value = "1e-10", allow_negative_numbers = true)]
     pub tol: f64,
-    /// Highest refinement level tried.
-    #[arg(long, default_value_t = 7)]
+    /// Highest refinement level tried (at most 12).
+    #[arg(long, default_value_t = 7, allow_negative_numbers = true)]
     pub max_level: usize,
     /// Print one JSON object instead of text.
     #[arg(long)]
@@ -209,12 +229,25 @@ pub struct ReduceArgs {
     pub out: OutputArgs,
 }
 
-/// Reads a source file, mapping I/O errors to invalid input.
+/// Reads a source file, mapping I/O errors to invalid input; text that is
+/// not UTF-8 is reported with the byte offset, line and column of the
+/// first bad byte.
 pub fn read_source(path: &PathBuf) -> Result<(String, String), CliError> {
     let name = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|e| CliError::Io {
+    let bytes = std::fs::read(path).map_err(|e| CliError::Io {
         path: name.clone(),
         source: e,
+    })?;
+    let text = String::from_utf8(bytes).map_err(|e| {
+        let at = e.utf8_error().valid_up_to();
+        let bytes = e.as_bytes();
+        let good = String::from_utf8_lossy(&bytes[..at]);
+        let line = good.matches('\n').count() + 1;
+        let col = good.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+        CliError::Invalid(format!(
+            "{name}:{line}:{col}: not UTF-8 text: byte 0x{:02x} at byte offset {at}",
+            bytes.get(at).copied().unwrap_or(0)
+        ))
     })?;
     Ok((text, name))
 }

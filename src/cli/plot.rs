@@ -5,7 +5,6 @@
 use super::error::CliError;
 use crate::hertz::HertzSolution;
 use plotters::prelude::*;
-use std::path::Path;
 
 /// A curve: legend, colour, stroke width and the field it draws.
 type Series = (
@@ -16,11 +15,17 @@ type Series = (
 );
 
 fn plot_err(e: impl std::fmt::Display) -> CliError {
-    CliError::Output(std::io::Error::other(format!("plot: {e}")))
+    CliError::Numeric(format!("cannot draw the plot: {e}"))
 }
 
-/// Draws the fields of `s` into the SVG file `path`.
-pub fn hertz_plot(s: &HertzSolution, path: &Path) -> Result<(), CliError> {
+/// The fields of `s` drawn as an SVG document (the caller writes it).
+pub fn hertz_svg(s: &HertzSolution) -> Result<String, CliError> {
+    let mut out = String::new();
+    draw(s, &mut out)?;
+    Ok(out)
+}
+
+fn draw(s: &HertzSolution, out: &mut String) -> Result<(), CliError> {
     let samples = s
         .profile(400)
         .map_err(|e| CliError::Numeric(e.to_string()))?;
@@ -37,7 +42,7 @@ pub fn hertz_plot(s: &HertzSolution, path: &Path) -> Result<(), CliError> {
     }
     let pad = 0.08 * (hi - lo).max(1e-12);
     let (lo, hi) = (lo - pad, hi + pad);
-    let root = SVGBackend::new(path, (900, 560)).into_drawing_area();
+    let root = SVGBackend::with_string(out, (900, 560)).into_drawing_area();
     root.fill(&WHITE).map_err(plot_err)?;
     let title = format!(
         "Hertz contact: ν = {}, μ = {:.6}, c = {:.6}",

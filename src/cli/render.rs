@@ -67,7 +67,7 @@ pub fn smith_text(r: &SmithReport) -> String {
     let _ = writeln!(out, "  mode: {}", r.mode_note);
     let _ = writeln!(out, "  algorithm: {}", r.algorithm);
     out.push('\n');
-    out.push_str(&matrix("A", &r.a));
+    out.push_str(&matrix(&r.matrix, &r.a));
     out.push('\n');
     let _ = writeln!(out, "rank: {}", r.rank);
     let _ = writeln!(out, "invariant factors: {}", list(&r.invariant_factors));
@@ -111,13 +111,15 @@ pub fn smith_latex(r: &SmithReport) -> String {
     let mut out = String::new();
     let _ = writeln!(
         out,
-        "% Smith normal form of {} over {} ({:?} mode)",
-        r.matrix, r.ring, r.mode
+        "% Smith normal form of {} over {}; mode: {}",
+        r.matrix,
+        r.ring,
+        r.mode_note.replace('\n', " ")
     );
     let Some(l) = &r.latex else {
         return out;
     };
-    let _ = writeln!(out, "\\[ A = {} \\]", pmatrix(&l.a));
+    let _ = writeln!(out, "\\[ {} = {} \\]", r.matrix, pmatrix(&l.a));
     let _ = writeln!(out, "% invariant factors: f_1, …, f_r");
     let _ = writeln!(out, "\\[ {} \\]", l.invariant_factors.join(",\\quad "));
     for (name, m) in [("D", &l.d), ("U", &l.u), ("V", &l.v)] {

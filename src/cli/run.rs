@@ -8,7 +8,7 @@ use super::OutputArgs;
 use super::error::CliError;
 use super::reduce::{print_reduction, to_json};
 use super::render;
-use super::smith::{check, load, principal, print_report, report};
+use super::smith::{check, load_with_source, principal, print_report, report};
 use super::solve;
 use crate::lang::Directive;
 use crate::plan::{SolveOptions, solve_program};
@@ -19,9 +19,10 @@ use std::path::PathBuf;
 
 /// `lambdamat run FILE`.
 pub fn run(file: &PathBuf, out: &OutputArgs, w: &mut dyn Write) -> Result<(), CliError> {
-    let p = load(file)?;
+    let (p, src) = load_with_source(file)?;
     let principal = principal(&p, None)?;
     let mut results = Vec::new();
+    let mut not_converged: Option<CliError> = None;
     let mut first = true;
     for d in &p.directives {
         let sep = |w: &mut dyn Write, first: &mut bool| -> Result<(), CliError> {
@@ -64,7 +65,9 @@ pub fn run(file: &PathBuf, out: &OutputArgs, w: &mut dyn Write) -> Result<(), Cl
                     sep(w, &mut first)?;
                     super::split::write_text(&r, w)?;
                 }
-                super::split::require_converged(&r)?;
+                if let Err(e) = super::split::require_converged(&r) {
+                    not_converged.get_or_insert(e);
+                }
             }
             Directive::Solve { unknown } => {
                 let red = reduce(&p, *unknown)?;
@@ -96,7 +99,8 @@ pub fn run(file: &PathBuf, out: &OutputArgs, w: &mut dyn Write) -> Result<(), Cl
                     }
                     continue;
                 }
-                let r = solve_program(&p, &SolveOptions::default())?;
+                let r = solve_program(&p, &SolveOptions::default())
+                    .map_err(|e| solve::located(e, &src))?;
                 if out.json {
                     results.push(json!({"kind": "solve", "result": solve::to_json(&r)}));
                 } else {
@@ -105,6 +109,9 @@ pub fn run(file: &PathBuf, out: &OutputArgs, w: &mut dyn Write) -> Result<(), Cl
                 }
                 for warning in &r.warnings {
                     eprintln!("warning: {warning}");
+                }
+                if let Err(e) = solve::converged(&r) {
+                    not_converged.get_or_insert(e);
                 }
             }
         }
@@ -123,5 +130,5 @@ pub fn run(file: &PathBuf, out: &OutputArgs, w: &mut dyn Write) -> Result<(), Cl
             file.display()
         )?;
     }
-    Ok(())
+    not_converged.map_or(Ok(()), Err)
 }

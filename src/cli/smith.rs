@@ -26,10 +26,24 @@ pub fn to_matrix(symbols: &[String], m: &MatrixDef) -> Matrix<PolyRing> {
 /// errors to [`CliError::Lang`] (and a `--set` naming no parameter of the
 /// file to [`CliError::Invalid`]).
 pub fn load(path: &std::path::PathBuf) -> Result<Program, CliError> {
+    load_with_source(path).map(|(p, _)| p)
+}
+
+/// A source file's text and the name it is shown under.
+pub struct Source {
+    /// The text.
+    pub text: String,
+    /// The file name as given.
+    pub name: String,
+}
+
+/// [`load`], keeping the text so that later errors can point into it.
+pub fn load_with_source(path: &std::path::PathBuf) -> Result<(Program, Source), CliError> {
     let (text, name) = read_source(path)?;
     let sets = super::overrides();
     if sets.is_empty() {
-        return parse_program(&text, &name).map_err(|e| CliError::Lang(Box::new(e)));
+        let p = parse_program(&text, &name).map_err(|e| CliError::Lang(Box::new(e)))?;
+        return Ok((p, Source { text, name }));
     }
     let ast = crate::lang::parse_ast(&text, &name).map_err(|e| CliError::Lang(Box::new(e)))?;
     let names = crate::lang::param_names(&ast);
@@ -45,7 +59,9 @@ pub fn load(path: &std::path::PathBuf) -> Result<Program, CliError> {
             )));
         }
     }
-    crate::lang::parse_program_with(&text, &name, sets).map_err(|e| CliError::Lang(Box::new(e)))
+    let p = crate::lang::parse_program_with(&text, &name, sets)
+        .map_err(|e| CliError::Lang(Box::new(e)))?;
+    Ok((p, Source { text, name }))
 }
 
 /// Resolves `--principal` against the file's symbols (the flag wins).

@@ -9,9 +9,8 @@ use serde_json::{Map, Value, json};
 
 use super::SolveFlags;
 use super::error::CliError;
-use crate::numeric::NumericError;
 use crate::plan::split_solve::Estimate;
-use crate::plan::{PlanError, SplitOptions, SplitReport, solve_split};
+use crate::plan::{SplitOptions, SplitReport, solve_split};
 use crate::system::Program;
 
 /// Solves `prog` and prints the report as `flags` ask.
@@ -42,13 +41,10 @@ pub fn solve_split_and_report(
 /// so a result that did not converge never exits 0).
 pub fn require_converged(r: &SplitReport) -> Result<(), CliError> {
     if !r.converged {
-        return Err(CliError::Plan(PlanError::Numeric {
-            context: "split-domain solve".into(),
-            source: NumericError::NoConvergence(format!(
-                "successive levels differ by {:.2e} > tol {:.1e} after {} levels",
-                r.error_estimate, r.tol, r.levels
-            )),
-        }));
+        return Err(CliError::NotConverged(format!(
+            "split-domain solve: successive levels differ by {:.2e} > tol {:.1e} after {} levels",
+            r.error_estimate, r.tol, r.levels
+        )));
     }
     Ok(())
 }

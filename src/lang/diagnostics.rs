@@ -64,14 +64,14 @@ impl LangErrors {
             if i > 0 {
                 out.push('\n');
             }
-            out.push_str(&format!("error: {}\n", e.message));
+            out.push_str(&format!("error: {}\n", elide_long_numbers(&e.message)));
             self.snippet(&mut out, e.span, &e.label);
             for (span, label) in &e.related {
                 out.push_str("note:\n");
                 self.snippet(&mut out, *span, label);
             }
             if let Some(help) = &e.help {
-                out.push_str(&format!("  = help: {help}\n"));
+                out.push_str(&format!("  = help: {}\n", elide_long_numbers(help)));
             }
         }
         out
@@ -86,19 +86,125 @@ impl LangErrors {
         let span_chars = text
             .get(clamp(text, span.start)..clamp(text, span.end))
             .map_or(1, |s| s.chars().take_while(|c| *c != '\n').count());
-        let width = span_chars.min(line_chars.saturating_sub(col - 1)).max(1);
+        let width = span_chars
+            .min(line_chars.saturating_sub(col - 1))
+            .clamp(1, MAX_LINE_SHOWN / 2);
+        let (shown, caret) = window(line_text, col);
         out.push_str(&format!(
             "{gutter}--> {}:{line}:{col}\n",
             self.source.name()
         ));
         out.push_str(&format!("{gutter} |\n"));
-        out.push_str(&format!("{line} | {line_text}\n"));
+        out.push_str(&format!("{line} | {shown}\n"));
         out.push_str(&format!(
-            "{gutter} | {}{} {label}\n",
-            " ".repeat(col - 1),
-            "^".repeat(width)
+            "{gutter} | {}{} {}\n",
+            " ".repeat(caret - 1),
+            "^".repeat(width),
+            elide_long_numbers(label)
         ));
     }
+}
+
+/// Longest run of digits shown in a message; longer numbers are elided.
+pub const MAX_DIGITS_SHOWN: usize = 24;
+
+/// Longest source line shown whole under an error; longer lines are cut
+/// to a window around the caret.
+pub const MAX_LINE_SHOWN: usize = 160;
+
+/// `s` with every run of more than [`MAX_DIGITS_SHOWN`] digits shortened
+/// to its first digits, `…` and its length, so that a pasted
+/// 100 000-digit literal does not flood the terminal.
+///
+/// ```
+/// use lambdamat::lang::diagnostics::elide_long_numbers;
+/// let long = "7".repeat(1000);
+/// assert_eq!(elide_long_numbers(&format!("x/{long}")), "x/777777777777…(1000 digits)");
+/// assert_eq!(elide_long_numbers("x/12"), "x/12");
+/// ```
+pub fn elide_long_numbers(s: &str) -> String {
+    let mut out = String::with_capacity(s.len().min(4096));
+    let mut run = String::new();
+    let flush = |run: &mut String, out: &mut String| {
+        if run.len() > MAX_DIGITS_SHOWN {
+            out.push_str(&run[..12]);
+            out.push_str(&format!("…({} digits)", run.len()));
+        } else {
+            out.push_str(run);
+        }
+        run.clear();
+    };
+    for c in s.chars() {
+        if c.is_ascii_digit() {
+            run.push(c);
+        } else {
+            flush(&mut run, &mut out);
+            out.push(c);
+        }
+    }
+    flush(&mut run, &mut out);
+    out
+}
+
+impl LangErrors {
+    /// One [`LangErrors`] per error, each with the same source: a terminal
+    /// renderer shows them one after another, each under its own heading.
+    pub fn split(&self) -> Vec<LangErrors> {
+        self.errors
+            .iter()
+            .map(|e| LangErrors {
+                source: NamedSource::new(self.source.name(), self.source.inner().clone()),
+                errors: vec![e.clone()],
+            })
+            .collect()
+    }
+
+    /// Whether a line shown under some error is longer than
+    /// [`MAX_LINE_SHOWN`] characters (the terminal renderer then falls back
+    /// to [`LangErrors::render`], which shows a window of it).
+    ///
+    /// Lines next to an error line count too, and so does a line with a
+    /// number longer than [`MAX_DIGITS_SHOWN`] digits: the terminal
+    /// renderer shows those lines as context, whole.
+    pub fn has_long_lines(&self) -> bool {
+        let text = self.source.inner();
+        let long =
+            |l: &str| l.chars().count() > MAX_LINE_SHOWN || elide_long_numbers(l).len() != l.len();
+        self.errors
+            .iter()
+            .map(|e| e.span)
+            .chain(
+                self.errors
+                    .iter()
+                    .flat_map(|e| e.related.iter().map(|r| r.0)),
+            )
+            .any(|span| {
+                let (line, _) = line_col(text, span.start);
+                text.lines().skip(line.saturating_sub(2)).take(3).any(long)
+            })
+    }
+}
+
+/// The window of `line` shown under an error at character column `col`
+/// (1-based) and the caret's column in it.
+fn window(line: &str, col: usize) -> (String, usize) {
+    let n = line.chars().count();
+    if n <= MAX_LINE_SHOWN {
+        return (line.to_string(), col);
+    }
+    let half = MAX_LINE_SHOWN / 2;
+    let start = col.saturating_sub(half + 1);
+    let end = (start + MAX_LINE_SHOWN).min(n);
+    let mut shown: String = line.chars().skip(start).take(end - start).collect();
+    let mut caret = col - start;
+    if start > 0 {
+        shown = format!("…{shown}");
+        caret += 1;
+    }
+    if end < n {
+        shown.push('…');
+    }
+    (shown, caret)
 }
 
 /// The largest char boundary not after `pos`.

@@ -44,6 +44,9 @@ pub enum ErrorKind {
     NotSquare,
     /// An expression nested too deeply to be processed safely.
     TooDeep,
+    /// A kernel, multiplier or right side that the numerics cannot use
+    /// (found when the system is solved, pointed at in the source).
+    Unsupported,
 }
 
 /// One error with everything needed to render it.

@@ -101,6 +101,7 @@ pub use error::{ErrorKind, LangError};
 /// does), so that the recursive passes over deeply nested input stay far
 /// from the end of the caller's stack, whatever thread the caller is on.
 pub fn parse_program(src: &str, filename: &str) -> Result<Program, LangErrors> {
+    let src = strip_bom(src);
     std::thread::scope(|s| {
         let worker = std::thread::Builder::new()
             .name("lambdamat-front-end".into())
@@ -123,6 +124,12 @@ pub fn parse_program(src: &str, filename: &str) -> Result<Program, LangErrors> {
             Err(_) => parse_program_here(src, filename),
         }
     })
+}
+
+/// `src` without a leading UTF-8 byte-order mark (editors on some systems
+/// write one); spans are offsets into the text after it.
+pub fn strip_bom(src: &str) -> &str {
+    src.strip_prefix('\u{feff}').unwrap_or(src)
 }
 
 /// Stack size of the front end's worker thread: ample for
@@ -213,5 +220,6 @@ fn parse_program_here(src: &str, filename: &str) -> Result<Program, LangErrors> 
 /// Parses `src` into its spanned AST (syntax only, no validation), on the
 /// caller's thread.
 pub fn parse_ast(src: &str, filename: &str) -> Result<ast::File, LangErrors> {
+    let src = strip_bom(src);
     parser::parse_file(src).map_err(|e| LangErrors::new(filename, src, vec![e]))
 }

@@ -521,6 +521,8 @@ fn check_nesting(src: &str) -> Result<(), LangError> {
 fn describe_rule(rule: Rule) -> Option<&'static str> {
     Some(match rule {
         Rule::EOI => "the end of the file",
+        // At the start of a file pest names the whole program: a statement.
+        Rule::program => STATEMENT,
         Rule::kw_var
         | Rule::kw_principal
         | Rule::kw_matrix

@@ -240,7 +240,13 @@ impl CompiledSystem {
 
 /// One equation per unknown, and at least one.
 fn square(equations: usize, unknowns: usize) -> Result<(), PlanError> {
-    if unknowns == 0 || equations != unknowns {
+    if unknowns == 0 {
+        return Err(PlanError::Invalid(
+            "there is no operator system to solve: declare the unknowns (`unknown p`) and give one `equation` per unknown"
+                .into(),
+        ));
+    }
+    if equations != unknowns {
         return Err(PlanError::Invalid(format!(
             "the solver needs as many equations as unknowns ({equations} equations, {unknowns} unknowns)"
         )));

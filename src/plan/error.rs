@@ -18,6 +18,15 @@ pub enum PlanError {
     /// The file's system cannot be solved as written (shape, missing parts).
     #[error("{0}")]
     Invalid(String),
+    /// The right side of an equation cannot be used (e.g. not finite at a
+    /// collocation point).
+    #[error("{reason}")]
+    RightSide {
+        /// The equation's index (0-based, source order).
+        equation: usize,
+        /// What is wrong, in words (names the equation 1-based).
+        reason: String,
+    },
     /// The system is singular before any discretisation (exact algebra).
     #[error("{0}")]
     Singular(String),

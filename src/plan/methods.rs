@@ -88,10 +88,19 @@ pub fn solve_level(
     let n = prog.unknowns.len();
     let mut g = Vec::with_capacity(n);
     for (i, eq) in prog.equations.iter().enumerate() {
-        g.push(d.values(
-            &eq.rhs,
-            &format!("right side of equation {} = {}", i + 1, eq.rhs_text),
-        )?);
+        g.push(
+            d.values(
+                &eq.rhs,
+                &format!("right side of equation {} = {}", i + 1, eq.rhs_text),
+            )
+            .map_err(|e| match e {
+                PlanError::Invalid(reason) => PlanError::RightSide {
+                    equation: i,
+                    reason,
+                },
+                other => other,
+            })?,
+        );
     }
     if method == Method::Commutative {
         return commutative(d, prog, &g, target, max_cond);

@@ -246,7 +246,12 @@ pub fn reduce(p: &Program, unknown: usize) -> Result<Reduction, ReduceError> {
         unknowns: p.unknowns.clone(),
         lambda_matrix: a.format_rows(),
         lambda_matrix_latex: a.latex_rows(),
-        ring: format!("Q[{}]", names.join(", ")),
+        // No symbols: the entries are constants, the ring is Q itself.
+        ring: if names.is_empty() {
+            "Q".to_string()
+        } else {
+            format!("Q[{}]", names.join(", "))
+        },
         invariant_factors,
         invariant_factors_latex,
         smith_checks,

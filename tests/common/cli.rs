@@ -20,6 +20,19 @@ pub fn stdout(args: &[&str]) -> String {
     String::from_utf8(out.stdout).expect("utf-8")
 }
 
+/// Standard output of a run that must end with exit code `code` (e.g. 4:
+/// finished, printed, not converged).
+pub fn stdout_with_code(args: &[&str], code: i32) -> String {
+    let out = lambdamat().args(args).output().expect("runs");
+    assert_eq!(
+        out.status.code(),
+        Some(code),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).expect("utf-8")
+}
+
 /// The JSON printed by a successful run of `args` plus `--json`.
 pub fn json(args: &[&str]) -> Value {
     serde_json::from_str(&stdout(&[args, &["--json"]].concat())).expect("valid JSON")

@@ -1,4 +1,4 @@
-//! Smith normal form, in the three honest modes of `docs/design.md`:
+//! Smith normal form, in three honest modes:
 //!
 //! 1. one symbol: over Q[λ] with unimodular U, V and monic D;
 //! 2. a principal symbol among several: over K[λ], K = Q(others), plus a
