@@ -26,4 +26,6 @@ pub mod refine;
 pub use compiled::CompiledSystem;
 pub use error::PlanError;
 pub use methods::Method;
-pub use refine::{Defect, SolveOptions, SolveReport, UnknownValues, solve_program, solve_system};
+pub use refine::{
+    Defect, SolveOptions, SolveReport, UnknownValues, solve_derived, solve_program, solve_system,
+};
