@@ -2,7 +2,8 @@
 //! the manufactured coupled system at tol 1e-10 by each method, and the
 //! punch at tol 1e-12; and the solvers written by `lambdamat codegen`
 //! (kernels as Rust functions) against the same systems compiled to
-//! closures in process. `cargo bench --bench solve` (about 30 s).
+//! closures in process; `reduce` and `codegen` on a 20-unknown system.
+//! `cargo bench --bench solve` (about 40 s).
 use std::time::Duration;
 
 use criterion::{Criterion, criterion_group, criterion_main};
@@ -83,5 +84,26 @@ fn generated(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, solve, generated);
+/// `reduce` and `codegen` on the 20-unknown system of issue 9: the
+/// derivation bounds the eliminant before expanding it (goal: well under
+/// a second each).
+fn twenty_unknowns(c: &mut Criterion) {
+    let src = include_str!("../tests/data/twenty_unknowns.lmx");
+    let prog = lambdamat::lang::parse_program(src, "twenty.lmx").expect("parses");
+    let from = lambdamat::codegen::Provenance {
+        source: "twenty.lmx".into(),
+        command: "lambdamat codegen twenty.lmx".into(),
+    };
+    let mut g = c.benchmark_group("twenty unknowns");
+    g.sample_size(10)
+        .warm_up_time(Duration::from_secs(1))
+        .measurement_time(Duration::from_secs(3));
+    g.bench_function("reduce", |b| b.iter(|| lambdamat::reduce::reduce(&prog, 0)));
+    g.bench_function("codegen", |b| {
+        b.iter(|| lambdamat::codegen::solver_source(&prog, None, &from))
+    });
+    g.finish();
+}
+
+criterion_group!(benches, solve, generated, twenty_unknowns);
 criterion_main!(benches);

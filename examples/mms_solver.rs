@@ -12,8 +12,10 @@
 //! - ordered elimination, exact (`--method ordered`, the default; gj is
 //!   the right side of equation j):
 //!   `(k1 - k2 k4^-1 k3) p = g1 - k2 k4^-1 g2`
+//!   pivots: q from equation 2 (pivot k4)
 //! - commutative eliminant, the seed's model (`--method commutative`):
 //!   `(k1*k4 - k2*k3) p = k4[sqrt(1 - x^2) + 1/3*(x^2 - 1/2)] - k2[1/3*x - x*sqrt(1 - x^2)]`
+//!   commuted pairs: (k2, k4)
 //!
 //! The system (parameters substituted):
 //!
@@ -143,6 +145,7 @@ pub fn system() -> Result<CompiledSystem, PlanError> {
         equations: vec![equation_1, equation_2],
         outputs: vec![output_1, output_2],
         target: 0,
+        principal: None,
         domain: (0.0, 1.0),
         interior: Vec::new(),
     };

@@ -20,8 +20,12 @@
 //! * [`eliminate`]: the commutative eliminant of one unknown, its commuted
 //!   pairs and its Smith cross-check;
 //! * [`ordered`]: the ordered elimination by Schur complements with
-//!   explicit inverses.
+//!   explicit inverses;
+//! * [`derivation`]: the one [`derivation::Derivation`] per target that
+//!   every command consumes (size bound, eliminant, ordered elimination,
+//!   commuted pairs).
 
+pub mod derivation;
 pub mod eliminate;
 pub mod gcd;
 pub mod intgcd;

@@ -402,7 +402,18 @@ pub enum OrderedError {
     /// The remaining equation does not contain the unknown.
     #[error("the unknown drops out of the last equation: its operator is zero")]
     ZeroLhs,
+    /// An entry of a Schur complement would exceed [`MAX_ENTRY_TERMS`] terms.
+    #[error(
+        "the ordered elimination is too large to write out: an entry of a Schur complement would have more than {MAX_ENTRY_TERMS} terms"
+    )]
+    TooLarge,
 }
+
+/// The most terms one entry of a Schur complement (or one product formed
+/// on the way) may have; past it the elimination stops with
+/// [`OrderedError::TooLarge`] instead of filling memory (products of sums
+/// grow geometrically with the number of eliminated unknowns).
+pub const MAX_ENTRY_TERMS: usize = 256;
 
 /// Sort key of a candidate pivot: (class, off the diagonal, unknown, equation).
 type PivotKey = (u8, bool, usize, usize);
@@ -529,15 +540,26 @@ pub fn ordered_elimination_of(
             if m[s][j].is_zero() {
                 continue;
             }
+            let too_large =
+                |a: &NcExpr, b: &NcExpr, c: &NcExpr| a.len() * b.len() + c.len() > MAX_ENTRY_TERMS;
+            if too_large(&m[s][j], &inv, &NcExpr::zero()) {
+                return Err(OrderedError::TooLarge);
+            }
             let f = m[s][j].mul(&inv);
             for &c in cols.iter().chain(std::iter::once(&unknown)) {
                 if !m[r][c].is_zero() {
+                    if too_large(&f, &m[r][c], &m[s][c]) {
+                        return Err(OrderedError::TooLarge);
+                    }
                     m[s][c] = m[s][c].sub(&f.mul(&m[r][c]));
                 }
             }
             let pivot_rhs = rhs[r].clone();
             for (x, y) in rhs[s].iter_mut().zip(&pivot_rhs) {
                 if !y.is_zero() {
+                    if too_large(&f, y, x) {
+                        return Err(OrderedError::TooLarge);
+                    }
                     *x = x.sub(&f.mul(y));
                 }
             }

@@ -157,18 +157,22 @@ pub fn to_json(r: &Reduction) -> Value {
         Ok(x) => json!({"lhs": sum_text(&x.lhs), "rhs": sum_text(&x.rhs)}),
         Err(e) => json!({"not_expanded": e}),
     };
-    json!({
-        "unknown": r.unknown,
-        "lambda_matrix": r.lambda_matrix,
-        "invariant_factors": r.invariant_factors,
-        "eliminant": {
+    let eliminant = match &r.eliminant_refused {
+        Some(why) => json!({"not_expanded": why}),
+        None => json!({
             "lhs": r.lhs,
             "rhs": rhs,
             "text": r.eliminant_text(),
             "lhs_ordered": r.lhs_ordered,
             "removed_factor": r.removed_factor,
             "dropped": r.dropped.iter().map(|(c, u)| json!({"operator": c, "unknown": u})).collect::<Vec<_>>(),
-        },
+        }),
+    };
+    json!({
+        "unknown": r.unknown,
+        "lambda_matrix": r.lambda_matrix,
+        "invariant_factors": r.invariant_factors,
+        "eliminant": eliminant,
         "expanded": expanded,
         "ordered": ordered,
         "ordered_inverses": ordered_inverses,
@@ -213,6 +217,16 @@ pub fn text(r: &Reduction) -> String {
         out,
         "\nEliminant (commutative: the symbols are treated as commuting):"
     );
+    if let Some(why) = &r.eliminant_refused {
+        let _ = writeln!(out, "  {why}");
+    } else {
+        eliminant_text(r, &mut out);
+    }
+    ordered_text(r, &mut out);
+    out
+}
+
+fn eliminant_text(r: &Reduction, out: &mut String) {
     let _ = writeln!(out, "  {}", r.eliminant_text());
     let _ = writeln!(
         out,
@@ -282,7 +296,9 @@ pub fn text(r: &Reduction) -> String {
             let _ = writeln!(out, "  not expanded: {e}");
         }
     }
+}
 
+fn ordered_text(r: &Reduction, out: &mut String) {
     let _ = writeln!(
         out,
         "\nOrdered elimination (no symbol commuted; exact for non-commuting operators):"
@@ -312,7 +328,12 @@ pub fn text(r: &Reduction) -> String {
         }
     }
 
-    if r.commuted_pairs.is_empty() {
+    if r.eliminant_refused.is_some() {
+        let _ = writeln!(
+            out,
+            "\nCommuted pairs: not computed (the eliminant was not expanded)"
+        );
+    } else if r.commuted_pairs.is_empty() {
         let _ = writeln!(
             out,
             "\nCommuted pairs: none (the eliminant holds for non-commuting operators)"
@@ -338,7 +359,6 @@ pub fn text(r: &Reduction) -> String {
     for n in &r.notes {
         let _ = writeln!(out, "note: {n}");
     }
-    out
 }
 
 /// The LaTeX report (formulas with `%` comments).
@@ -363,8 +383,15 @@ pub fn latex(r: &Reduction) -> String {
             r.invariant_factors_latex.join(",\\quad ")
         );
     }
-    let _ = writeln!(out, "% eliminant (commutative)");
-    let _ = writeln!(out, "\\[ {} \\]", r.eliminant_latex());
+    match &r.eliminant_refused {
+        Some(why) => {
+            let _ = writeln!(out, "% eliminant (commutative): {why}");
+        }
+        None => {
+            let _ = writeln!(out, "% eliminant (commutative)");
+            let _ = writeln!(out, "\\[ {} \\]", r.eliminant_latex());
+        }
+    }
     match &r.expanded {
         Ok(x) => {
             let _ = writeln!(out, "% expanded");

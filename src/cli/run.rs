@@ -1,7 +1,8 @@
 //! The `run` command: performs every directive of a file in order (Smith
 //! forms, checks of claimed decompositions, and for each `solve for` the
-//! reduction (eliminant, ordered elimination) followed by the numerical
-//! solve with the defaults of `lambdamat solve`) and prints the results as
+//! one derivation of that unknown, printed (eliminant, ordered elimination)
+//! and then executed by the numerical solve for that unknown with the
+//! defaults of `lambdamat solve`) and prints the results as
 //! text, LaTeX or one JSON object.
 
 use super::OutputArgs;
@@ -11,8 +12,8 @@ use super::render;
 use super::smith::{check, load_with_source, principal, print_report, report};
 use super::solve;
 use crate::lang::Directive;
-use crate::plan::{SolveOptions, solve_program};
-use crate::reduce::reduce;
+use crate::plan::{CompiledSystem, SolveOptions, solve_derived};
+use crate::reduce::{derive, reduce_with};
 use serde_json::json;
 use std::io::Write;
 use std::path::PathBuf;
@@ -70,7 +71,9 @@ pub fn run(file: &PathBuf, out: &OutputArgs, w: &mut dyn Write) -> Result<(), Cl
                 }
             }
             Directive::Solve { unknown } => {
-                let red = reduce(&p, *unknown)?;
+                // One derivation per target: printed here, executed below.
+                let derivation = derive(&p, *unknown)?;
+                let red = reduce_with(&p, &derivation)?;
                 if out.json {
                     results.push(json!({"kind": "reduce", "result": to_json(&red)}));
                 } else {
@@ -99,7 +102,9 @@ pub fn run(file: &PathBuf, out: &OutputArgs, w: &mut dyn Write) -> Result<(), Cl
                     }
                     continue;
                 }
-                let r = solve_program(&p, &SolveOptions::default())
+                let sys = CompiledSystem::from_program(&p, Some(&p.unknowns[*unknown]))
+                    .map_err(|e| solve::located(e, &src))?;
+                let r = solve_derived(&sys, Some(derivation), &SolveOptions::default())
                     .map_err(|e| solve::located(e, &src))?;
                 if out.json {
                     results.push(json!({"kind": "solve", "result": solve::to_json(&r)}));

@@ -230,25 +230,54 @@ fn header(out: &mut String, prog: &Program, sys: &CompiledSystem, from: &Provena
         "//! Unknowns on [{}, {}]; eliminations solve for `{}`.",
         sys.domain.0, sys.domain.1, sys.unknowns[sys.target]
     );
-    // The derived single equations (`lambdamat reduce`), for the reader.
-    if let Ok(r) = crate::reduce::reduce(prog, sys.target) {
+    // The derivation the solver runs (`lambdamat reduce` prints the same
+    // value), for the reader. Its eliminant is bounded before it is
+    // expanded, so this never waits for a large one.
+    let derived = sys
+        .derivation()
+        .ok()
+        .and_then(|d| crate::reduce::reduce_with(prog, &d).ok());
+    if let Some(r) = derived {
         let _ = writeln!(
             out,
             "//!\n//! Derived equations for `{}` (`lambdamat reduce`):\n//!",
             r.unknown
         );
-        if let Ok(o) = &r.ordered {
-            let _ = writeln!(
-                out,
-                "//! - ordered elimination, exact (`--method ordered`, the default; gj is\n//!   the right side of equation j):\n//!   `{}`",
-                o.text
-            );
+        match &r.ordered {
+            Ok(o) => {
+                let _ = writeln!(
+                    out,
+                    "//! - ordered elimination, exact (`--method ordered`, the default; gj is\n//!   the right side of equation j):\n//!   `{}`\n//!   pivots: {}",
+                    o.text,
+                    o.pivots.join("; ")
+                );
+            }
+            Err(e) => {
+                let _ = writeln!(out, "//! - ordered elimination: {e}");
+            }
         }
-        let _ = writeln!(
-            out,
-            "//! - commutative eliminant, the seed's model (`--method commutative`):\n//!   `{}`",
-            r.eliminant_text()
-        );
+        match &r.eliminant_refused {
+            None => {
+                let pairs: Vec<String> = r
+                    .commuted_pairs
+                    .iter()
+                    .map(|c| format!("({}, {})", c.pair[0], c.pair[1]))
+                    .collect();
+                let _ = writeln!(
+                    out,
+                    "//! - commutative eliminant, the seed's model (`--method commutative`):\n//!   `{}`\n//!   commuted pairs: {}",
+                    r.eliminant_text(),
+                    if pairs.is_empty() {
+                        "none".to_string()
+                    } else {
+                        pairs.join(", ")
+                    }
+                );
+            }
+            Some(why) => {
+                let _ = writeln!(out, "//! - commutative eliminant: {why}");
+            }
+        }
     }
     out.push_str("//!\n//! The system (parameters substituted):\n//!\n//! ```text\n");
     for line in crate::lang::pretty::pretty(prog).lines() {
@@ -413,6 +442,7 @@ fn system_fn(
     list_field(out, "equations", &eq_vars);
     list_field(out, "outputs", &out_vars);
     let _ = writeln!(out, "        target: {},", sys.target);
+    let _ = writeln!(out, "        principal: {:?},", sys.principal);
     let _ = writeln!(
         out,
         "        domain: ({}, {}),",

@@ -21,7 +21,7 @@ pub struct Factor {
 impl Factor {
     /// Value `|t - at|^exponent`.
     pub fn eval(&self, t: f64) -> f64 {
-        super::product::pow_fast((t - self.at).abs(), self.exponent)
+        pow_fast((t - self.at).abs(), self.exponent)
     }
 }
 
@@ -213,6 +213,20 @@ fn barycentric_weights(x: &[f64]) -> Vec<f64> {
             1.0 / p
         })
         .collect()
+}
+
+/// `d^e` with the square-root exponents of Abel kernels done by `sqrt`
+/// (used by the weights here and by the product rules of
+/// [`super::product`], which depend on this module, not the reverse).
+#[inline]
+pub fn pow_fast(d: f64, e: f64) -> f64 {
+    if e == -0.5 {
+        1.0 / d.sqrt()
+    } else if e == 0.5 {
+        d.sqrt()
+    } else {
+        d.powf(e)
+    }
 }
 
 #[cfg(test)]

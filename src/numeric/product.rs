@@ -10,7 +10,7 @@
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex};
 
-use super::basis::Factor;
+use super::basis::{Factor, pow_fast};
 use super::error::NumericError;
 use super::gauss::{GaussRule, gauss_jacobi};
 
@@ -44,18 +44,6 @@ impl RuleCache {
             m.insert(key, r.clone());
         }
         Ok(r)
-    }
-}
-
-/// `d^e` with the square-root exponents of Abel kernels done by `sqrt`.
-#[inline]
-pub fn pow_fast(d: f64, e: f64) -> f64 {
-    if e == -0.5 {
-        1.0 / d.sqrt()
-    } else if e == 0.5 {
-        d.sqrt()
-    } else {
-        d.powf(e)
     }
 }
 

@@ -17,6 +17,9 @@ use crate::system::{Directive, FunctionalTerm, Limit, NcPoly, Program, Term};
 use super::compile::{compile_x, constant_value, rational};
 use super::error::PlanError;
 use super::operators::build_operator;
+use crate::algebra::derivation::Derivation;
+use crate::algebra::matrix::Matrix;
+use crate::algebra::polyring::PolyRing;
 use crate::numeric::Operator;
 
 /// A compiled function of `x`.
@@ -78,6 +81,9 @@ pub struct CompiledSystem {
     pub outputs: Vec<CompiledOutput>,
     /// The unknown the eliminations solve for.
     pub target: usize,
+    /// The principal symbol (`principal k4`), preferred as pivot by the
+    /// ordered elimination.
+    pub principal: Option<usize>,
     /// The unknowns' interval.
     pub domain: (f64, f64),
     /// Constant limits strictly inside the interval (meshes are graded there).
@@ -174,6 +180,7 @@ impl CompiledSystem {
             equations,
             outputs,
             target,
+            principal: prog.principal,
             domain,
             interior,
         };
@@ -235,6 +242,29 @@ impl CompiledSystem {
             }
         }
         Ok(())
+    }
+}
+
+impl CompiledSystem {
+    /// The one [`Derivation`] of this system for its target: the same
+    /// value `lambdamat reduce` prints for the same file, since both come
+    /// from [`Derivation::new`] on the same ordered words, target and
+    /// principal symbol.
+    pub fn derivation(&self) -> Result<Derivation, PlanError> {
+        let nvars = self.symbols.len();
+        let n = self.unknowns.len();
+        let words: Vec<Vec<NcPoly>> = self.equations.iter().map(|e| e.lhs.clone()).collect();
+        let image = Matrix::new(
+            PolyRing::new(self.symbols.clone()),
+            self.equations.len(),
+            n,
+            words
+                .iter()
+                .flat_map(|r| r.iter().map(|w| w.commutative_image(nvars)))
+                .collect(),
+        );
+        Derivation::new(&image, &words, self.target, self.principal)
+            .map_err(|e| PlanError::Singular(format!("no derivation: {e}")))
     }
 }
 

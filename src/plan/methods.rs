@@ -1,25 +1,24 @@
 //! The three ways to solve one discretised language system
-//! `Σ_j A_ij(K) u_j = g_i`: `coupled` (one block system), `ordered` (exact
-//! block elimination toward the target unknown, with block pivoting:
-//! `(K11 - K12 K22⁻¹ K21) p = g1 - K12 K22⁻¹ g2` for two unknowns) and
-//! `commutative` (the seed's single equation
-//! `det(A) u_i = Σ_j adj(A)_ij g_j` with `det` and `adj` computed exactly
-//! by the algebra over Q[symbols] and then evaluated with operator
-//! matrices: a *model*, exact only if the operators commute). Also the
-//! pairs of symbols a method commuted and their measured defects. This file
-//! owns these recipes; assembly is `discrete.rs`'s, refinement `refine.rs`'s.
-use std::collections::BTreeSet;
+//! `Σ_j A_ij(K) u_j = g_i`, every product in its written order: `coupled`
+//! (one block system), `ordered` (exact block elimination toward the
+//! target unknown in the pivot order of the system's
+//! [`Derivation`], e.g. `(K11 - K12 K22⁻¹ K21) p = g1 - K12 K22⁻¹ g2`) and
+//! `commutative` (the derivation's eliminant `D_i u_i = Σ_j c_j g_j`
+//! evaluated with operator matrices: the seed's single equation, a
+//! *model*, exact only if its commuted pairs commute). Also the pairs of
+//! symbols a method commuted and their measured defects. This file owns
+//! these recipes; it executes the derivation and never re-derives;
+//! assembly is `discrete.rs`'s, refinement `refine.rs`'s.
 use std::fmt;
 use std::str::FromStr;
 
 use nalgebra::{DMatrix, DVector};
 
-use crate::algebra::matrix::Matrix;
-use crate::algebra::polyring::PolyRing;
+use crate::algebra::derivation::{Derivation, MAX_ELIMINANT_TERMS};
 use crate::numeric::NumericError;
-use crate::numeric::elimination::{apply_to_values, commutator_defect_on, product, solve_blocks};
+use crate::numeric::elimination::{apply_to_values, commutator_defect_on, solve_blocks};
 use crate::numeric::solve::CheckedLu;
-use crate::system::{MPoly, NcPoly};
+use crate::system::NcPoly;
 
 use super::compiled::CompiledSystem;
 use super::discrete::{BasisId, Discretisation};
@@ -74,17 +73,22 @@ pub struct LevelSolution {
     pub coefs: Vec<Option<DVector<f64>>>,
     /// Largest estimated condition number of a factorised matrix.
     pub cond: f64,
+    /// Where the method departed from the derivation (a pivot replaced by
+    /// a better-conditioned one), named.
+    pub warnings: Vec<String>,
 }
 
-/// Solves the system on `d` by `method`; `target` is the unknown the
-/// ordered and commutative eliminations solve for.
+/// Solves the system on `d` by `method`, executing the derivation `der`
+/// of the target unknown: `ordered` follows its pivot sequence, the
+/// commutative model applies its eliminant (which it requires).
 pub fn solve_level(
     d: &mut Discretisation,
     prog: &CompiledSystem,
     method: Method,
-    target: usize,
+    der: Option<&Derivation>,
     max_cond: f64,
 ) -> Result<LevelSolution, PlanError> {
+    let target = prog.target;
     let n = prog.unknowns.len();
     let mut g = Vec::with_capacity(n);
     for (i, eq) in prog.equations.iter().enumerate() {
@@ -103,7 +107,12 @@ pub fn solve_level(
         );
     }
     if method == Method::Commutative {
-        return commutative(d, prog, &g, target, max_cond);
+        let der = der.ok_or_else(|| {
+            PlanError::Singular(
+                "commutative model: the λ-matrix is singular (det(A) = 0 over Q[symbols]), so there is no single equation".into(),
+            )
+        })?;
+        return commutative(d, prog, &g, der, max_cond);
     }
     let mut blocks = Vec::with_capacity(n);
     for eq in &prog.equations {
@@ -121,31 +130,52 @@ pub fn solve_level(
             Ok(LevelSolution {
                 coefs: u.into_iter().map(Some).collect(),
                 cond,
+                warnings: Vec::new(),
             })
         }
-        _ => ordered(blocks, g, target, &prog.unknowns, max_cond),
+        _ => {
+            let pivots = der.map(Derivation::pivot_order).unwrap_or_default();
+            ordered(blocks, g, target, &pivots, &prog.unknowns, max_cond)
+        }
     }
 }
 
-/// Block Gaussian elimination: the unknowns other than `target` are
-/// eliminated in order (pivot block: the unknown's own equation if its
-/// block is well conditioned, else the first remaining equation whose
-/// block is), then `target` is solved and the rest back-substituted.
+/// Block Gaussian elimination in the derivation's pivot order: `pivots`
+/// lists (equation, unknown) as the ordered elimination used them; each
+/// step factorises that equation's block for that unknown and, only if it
+/// is singular or worse conditioned than `max_cond`, falls back to the
+/// first remaining equation whose block is acceptable, with a warning that
+/// names it. Without a derived order (the ordered form was too large), the
+/// unknowns other than `target` are eliminated in order, each from its own
+/// equation if possible. Then `target` is solved and the rest
+/// back-substituted.
 fn ordered(
     mut b: Vec<Vec<DMatrix<f64>>>,
     mut g: Vec<DVector<f64>>,
     target: usize,
+    pivots_in: &[(usize, usize)],
     names: &[String],
     max_cond: f64,
 ) -> Result<LevelSolution, PlanError> {
     let n = b.len();
-    let order: Vec<usize> = (0..n).filter(|&j| j != target).chain([target]).collect();
+    let derived = pivots_in.len() + 1 == n;
+    let order: Vec<usize> = if derived {
+        pivots_in.iter().map(|&(_, u)| u).chain([target]).collect()
+    } else {
+        (0..n).filter(|&j| j != target).chain([target]).collect()
+    };
+    let mut warnings = Vec::new();
     let mut left: Vec<usize> = (0..n).collect();
     let mut pivots: Vec<(usize, usize, CheckedLu)> = Vec::new();
     let mut cond: f64 = 0.0;
     for (step, &col) in order.iter().enumerate() {
+        let want = if derived {
+            pivots_in.get(step).map_or(col, |&(e, _)| e)
+        } else {
+            col
+        };
         let mut cands = left.clone();
-        cands.sort_by_key(|&r| r != col);
+        cands.sort_by_key(|&r| r != want);
         let mut chosen = None;
         let mut last: Option<NumericError> = None;
         for r in cands {
@@ -166,6 +196,15 @@ fn ordered(
                 source: last.unwrap_or(NumericError::Singular(0)),
             });
         };
+        if derived && r != want && left.contains(&want) {
+            warnings.push(format!(
+                "ordered elimination: the derivation solves equation {} for {}, but that block is {}; used equation {} instead",
+                want + 1,
+                names[col],
+                last.as_ref().map_or("unusable".into(), |e| e.to_string()),
+                r + 1
+            ));
+        }
         cond = cond.max(lu.cond());
         left.retain(|&x| x != r);
         let later = &order[step + 1..];
@@ -198,68 +237,43 @@ fn ordered(
                 .map_err(PlanError::numeric("ordered back substitution"))?,
         );
     }
-    Ok(LevelSolution { coefs: u, cond })
+    Ok(LevelSolution {
+        coefs: u,
+        cond,
+        warnings,
+    })
 }
 
-/// The λ-matrix over Q[symbols], its determinant and adjugate.
-fn algebra(
-    prog: &CompiledSystem,
-) -> Result<(Matrix<PolyRing>, MPoly, Matrix<PolyRing>), PlanError> {
-    let n = prog.unknowns.len();
-    let ring = PolyRing::new(prog.symbols.clone());
-    let nvars = prog.symbols.len();
-    let entries = prog
-        .equations
-        .iter()
-        .flat_map(|e| e.lhs.iter().map(|w| w.commutative_image(nvars)))
-        .collect();
-    let a = Matrix::new(ring, n, n, entries);
-    let det = a
-        .det()
-        .ok_or_else(|| PlanError::Invalid("the system is not square".into()))?;
-    let adj = a
-        .adjugate()
-        .ok_or_else(|| PlanError::Invalid("the system is not square".into()))?;
-    Ok((a, det, adj))
-}
-
-/// The commutative model for unknown `i`: `L u_i = Σ_j adj_ij g_j` with
-/// `L = Σ_k adj_ik A_ki` (adj's operators applied after A's, the order in
-/// which the seed multiplies the system by a row of adj), which equals
-/// `det(A)` as a commutative polynomial (checked).
+/// The commutative model for the target `i`, as derived: equation `j` is
+/// multiplied on the left by the eliminant's `c_j` (monomials read in
+/// symbol-table order) and the terms of the other unknowns are dropped, so
+/// `D_i u_i = Σ_j c_j g_j` with `D_i = Σ_j c_j A_ji` applied in written
+/// order (its commutative image is `det(A)/h`).
 fn commutative(
     d: &mut Discretisation,
     prog: &CompiledSystem,
     g: &[DVector<f64>],
-    i: usize,
+    der: &Derivation,
     max_cond: f64,
 ) -> Result<LevelSolution, PlanError> {
     let n = prog.unknowns.len();
-    let (a, det, adj) = algebra(prog)?;
-    let mut expanded = MPoly::zero(prog.symbols.len());
-    for k in 0..n {
-        expanded = expanded + adj.get(i, k) * a.get(k, i);
-    }
-    if expanded != det {
-        return Err(PlanError::Invalid(
-            "internal: adj(A)·A differs from det(A)".into(),
-        ));
-    }
-    if det.is_zero() {
-        return Err(PlanError::Singular(
-            "commutative model: det(A) = 0 over Q[symbols], so the single equation is singular"
-                .into(),
-        ));
-    }
+    let i = der.target;
+    let Some(e) = &der.eliminant else {
+        return Err(PlanError::Invalid(format!(
+            "commutative model: the eliminant was not derived: det(A) may have up to {:.3e} terms (limit {:.0}); use --method ordered or coupled",
+            der.bound.terms, MAX_ELIMINANT_TERMS
+        )));
+    };
+    let l = d.poly(&e.lhs_ordered, BasisId::Unknown(i))?;
     let dim = d.dim();
-    let mut l = DMatrix::zeros(dim, dim);
     let mut rhs = DVector::zeros(dim);
     let ctx = || PlanError::numeric("commutative model");
-    for (k, gk) in g.iter().enumerate().take(n) {
-        let adj_ik = d.poly(&NcPoly::from_mpoly(adj.get(i, k)), BasisId::Mid)?;
-        let a_ki = d.poly(&prog.equations[k].lhs[i], BasisId::Unknown(i))?;
-        l += product(&adj_ik, &d.mid, &a_ki).map_err(ctx())?;
-        rhs += apply_to_values(&adj_ik, &d.mid, gk).map_err(ctx())?;
+    for (c, gk) in e.multipliers.iter().zip(g).take(n) {
+        if c.is_zero() {
+            continue;
+        }
+        let cm = d.poly(&NcPoly::from_mpoly(c), BasisId::Mid)?;
+        rhs += apply_to_values(&cm, &d.mid, gk).map_err(ctx())?;
     }
     let lu = CheckedLu::new(&l, max_cond).map_err(PlanError::numeric(format!(
         "commutative model det(A) {} = …",
@@ -271,41 +285,19 @@ fn commutative(
     Ok(LevelSolution {
         coefs,
         cond: lu.cond(),
+        warnings: Vec::new(),
     })
 }
 
-/// The symbol pairs whose order the method fixed without knowing that
-/// they commute: none for `coupled` and `ordered` (every product is applied
-/// as written); for the commutative model, every symbol of `adj_ik` with
-/// every symbol of `A_kj` (the terms `j ≠ i` are the ones the model
-/// drops). Sorted, each once.
-pub fn commuted_pairs(prog: &CompiledSystem, method: Method, target: usize) -> Vec<(usize, usize)> {
-    let mut pairs = BTreeSet::new();
-    let vars = |p: &MPoly| -> BTreeSet<usize> {
-        (0..prog.symbols.len())
-            .filter(|&v| p.contains_var(v))
-            .collect()
-    };
-    let mut add = |a: usize, b: usize| {
-        if a != b {
-            pairs.insert((a.min(b), a.max(b)));
-        }
-    };
-    if method == Method::Commutative
-        && let Ok((_, _, adj)) = algebra(prog)
-    {
-        let n = prog.unknowns.len();
-        for k in 0..n {
-            for j in 0..n {
-                for x in vars(adj.get(target, k)) {
-                    for y in prog.equations[k].lhs[j].symbols() {
-                        add(x, y);
-                    }
-                }
-            }
-        }
+/// The symbol pairs a method commuted: none for `coupled` and `ordered`
+/// (every product is applied as written); for the commutative model, the
+/// derivation's commuted pairs ([`Derivation::commuted_pairs`]), the same
+/// list `lambdamat reduce` prints.
+pub fn commuted_pairs(method: Method, der: Option<&Derivation>) -> Vec<(usize, usize)> {
+    match (method, der) {
+        (Method::Commutative, Some(d)) => d.commuted_pairs().iter().map(|c| (c.a, c.b)).collect(),
+        _ => Vec::new(),
     }
-    pairs.into_iter().collect()
 }
 
 /// The measured defect `‖KaKb f - KbKa f‖/‖KaKb f‖` (max norm at the

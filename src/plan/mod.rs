@@ -30,5 +30,7 @@ pub mod split_solve;
 pub use compiled::CompiledSystem;
 pub use error::PlanError;
 pub use methods::Method;
-pub use refine::{Defect, SolveOptions, SolveReport, UnknownValues, solve_program, solve_system};
+pub use refine::{
+    Defect, SolveOptions, SolveReport, UnknownValues, solve_derived, solve_program, solve_system,
+};
 pub use split_solve::{SplitOptions, SplitReport, solve_split};

@@ -26,6 +26,7 @@ use super::discrete::BasisId;
 use super::discrete::{Discretisation, LevelSpec};
 use super::error::PlanError;
 use super::methods::{LevelSolution, Method, commuted_pairs, defect, defect_on, solve_level};
+use crate::algebra::derivation::Derivation;
 
 /// Defects above this are reported as warnings.
 pub const DEFECT_WARNING: f64 = 1e-8;
@@ -122,9 +123,10 @@ struct Setup {
     interior: Vec<f64>,
     candidates: Vec<Vec<Vec<Factor>>>,
     target: usize,
+    derivation: Option<Derivation>,
 }
 
-fn setup(sys: &CompiledSystem) -> Result<Setup, PlanError> {
+fn setup(sys: &CompiledSystem, derivation: Option<Derivation>) -> Result<Setup, PlanError> {
     sys.check()?;
     let n = sys.unknowns.len();
     let hi = sys.domain.1;
@@ -177,6 +179,7 @@ fn setup(sys: &CompiledSystem) -> Result<Setup, PlanError> {
         interior: sys.interior.clone(),
         candidates,
         target: sys.target,
+        derivation,
     })
 }
 
@@ -210,7 +213,13 @@ fn solve_one(
         s.ops.clone(),
         weights,
     )?;
-    let sol = solve_level(&mut disc, sys, opts.method, s.target, opts.max_cond)?;
+    let sol = solve_level(
+        &mut disc,
+        sys,
+        opts.method,
+        s.derivation.as_ref(),
+        opts.max_cond,
+    )?;
     let xs = grid(s.domain, opts.grid);
     let phi = sol
         .coefs
@@ -315,13 +324,26 @@ pub fn solve_program(prog: &Program, opts: &SolveOptions) -> Result<SolveReport,
 /// agree. This is the entry point of solvers written by `lambdamat
 /// codegen`.
 pub fn solve_system(sys: &CompiledSystem, opts: &SolveOptions) -> Result<SolveReport, PlanError> {
+    solve_derived(sys, sys.derivation().ok(), opts)
+}
+
+/// [`solve_system`] executing a derivation already built for `sys` (by
+/// [`CompiledSystem::derivation`] or [`crate::reduce::derive`] on the same
+/// file and target); `None` when the system has none (`det(A) = 0` over
+/// Q[symbols]: `coupled` and `ordered` still solve, the commutative model
+/// refuses).
+pub fn solve_derived(
+    sys: &CompiledSystem,
+    derivation: Option<Derivation>,
+    opts: &SolveOptions,
+) -> Result<SolveReport, PlanError> {
     if !(opts.tol > 0.0 && opts.tol.is_finite()) {
         return Err(PlanError::Invalid(format!(
             "tolerance {} must be positive",
             opts.tol
         )));
     }
-    let s = setup(sys)?;
+    let s = setup(sys, derivation)?;
     let max_level = opts.max_level.max(2);
     // Levels 1 and 2 for every candidate weight; keep the best.
     let mut best: Option<(f64, usize, Solved, Solved)> = None;
@@ -400,7 +422,12 @@ fn report(
     }
     let mut warnings = Vec::new();
     let mut defects = Vec::new();
-    let pairs = commuted_pairs(sys, opts.method, s.target);
+    for w in &last.sol.warnings {
+        if !warnings.contains(w) {
+            warnings.push(w.clone());
+        }
+    }
+    let pairs = commuted_pairs(opts.method, s.derivation.as_ref());
     // The defects are also measured on the system's own solution for the
     // target: the method's, or for the commutative model (whose answer is
     // not the system's) the ordered elimination's on the same level.
@@ -411,7 +438,7 @@ fn report(
             &mut last.disc,
             sys,
             Method::Ordered,
-            s.target,
+            s.derivation.as_ref(),
             opts.max_cond,
         )
         .ok()
@@ -442,7 +469,7 @@ fn report(
     let model = opts.method == Method::Commutative;
     if model {
         warnings.push(format!(
-            "the commutative method solves the seed's single equation det(A) {0} = Σ adj(A)_{0}j g_j, a model that treats the operators as commuting symbols; compare with --method ordered",
+            "the commutative method solves the seed's single equation (det(A)/h) {0} = Σ_j c_j g_j (the eliminant of `lambdamat reduce`), a model that treats the operators as commuting symbols; compare with --method ordered",
             sys.unknowns[s.target]
         ));
     }

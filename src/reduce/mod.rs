@@ -12,10 +12,10 @@
 pub mod expand;
 pub mod split;
 
-use crate::algebra::eliminate::{EliminateError, eliminate_ordered};
+use crate::algebra::derivation::{Derivation, MAX_ELIMINANT_TERMS};
+use crate::algebra::eliminate::EliminateError;
 use crate::algebra::matrix::Matrix;
 use crate::algebra::mpoly::MPoly;
-use crate::algebra::ordered::ordered_elimination_of;
 use crate::algebra::polyring::PolyRing;
 use crate::algebra::rational::fmt_q;
 use crate::algebra::smith::certify::Check;
@@ -131,6 +131,9 @@ pub struct Reduction {
     pub expanded: Result<Expanded, String>,
     /// The ordered elimination, or why there is none.
     pub ordered: Result<OrderedForm, String>,
+    /// Why the commutative eliminant was not expanded (its size bound);
+    /// `None` if it was. When set, the eliminant fields above are empty.
+    pub eliminant_refused: Option<String>,
     /// The commuted pairs.
     pub commuted_pairs: Vec<NamedPair>,
     /// Parameters substituted in the kernels.
@@ -173,23 +176,44 @@ pub fn lambda_matrix(p: &Program) -> Matrix<PolyRing> {
     Matrix::new(PolyRing::new(p.symbols.clone()), m.rows, m.cols, m.entries)
 }
 
-/// Reduces the program's system for unknown `unknown` (0-based).
-pub fn reduce(p: &Program, unknown: usize) -> Result<Reduction, ReduceError> {
+/// The one [`Derivation`] of the program's system for unknown `unknown`
+/// (0-based): what `reduce` prints, `solve` runs and `codegen` writes.
+pub fn derive(p: &Program, unknown: usize) -> Result<Derivation, ReduceError> {
     if p.equations.is_empty() {
         return Err(ReduceError::NoSystem);
     }
-    let a = lambda_matrix(p);
-    let names = &p.symbols;
     let uname = p
         .unknowns
         .get(unknown)
         .cloned()
         .ok_or(ReduceError::NoSystem)?;
-    let words = p.ordered_matrix();
-    let e = eliminate_ordered(&a, &words, unknown).map_err(|source| ReduceError::Eliminate {
-        unknown: uname.clone(),
-        source,
-    })?;
+    Derivation::new(&lambda_matrix(p), &p.ordered_matrix(), unknown, p.principal).map_err(
+        |source| ReduceError::Eliminate {
+            unknown: uname,
+            source,
+        },
+    )
+}
+
+/// Reduces the program's system for unknown `unknown` (0-based).
+pub fn reduce(p: &Program, unknown: usize) -> Result<Reduction, ReduceError> {
+    reduce_with(p, &derive(p, unknown)?)
+}
+
+/// The printable reduction of a derivation of the program's system.
+pub fn reduce_with(p: &Program, d: &Derivation) -> Result<Reduction, ReduceError> {
+    let a = lambda_matrix(p);
+    let names = &p.symbols;
+    let unknown = d.target;
+    let uname = p
+        .unknowns
+        .get(unknown)
+        .cloned()
+        .ok_or(ReduceError::NoSystem)?;
+    let ordered = ordered_form(p, d, &a, &uname);
+    let Some(e) = &d.eliminant else {
+        return Ok(refused(p, d, &a, uname, ordered));
+    };
     let fmt = |m: &MPoly| m.to_string_with(names);
     let rhs: Vec<RhsTerm> = e
         .multipliers
@@ -214,33 +238,7 @@ pub fn reduce(p: &Program, unknown: usize) -> Result<Reduction, ReduceError> {
         ),
         None => (Vec::new(), Vec::new(), Vec::new()),
     };
-    let expanded = expand_all(p, &e, unknown).map_err(|x| x.to_string());
-    let ordered = ordered_elimination_of(&a, &words, unknown, p.principal)
-        .map(|o| OrderedForm {
-            text: o.to_string_with(names, &uname),
-            latex: o.to_latex_with(names, &uname),
-            right_sides: p
-                .equations
-                .iter()
-                .enumerate()
-                .map(|(j, eq)| (format!("g{}", j + 1), eq.rhs.to_string()))
-                .collect(),
-            inverses: o.required_inverses(names),
-            pivots: o
-                .pivots
-                .iter()
-                .map(|pv| {
-                    format!(
-                        "{} from equation {} (pivot {})",
-                        p.unknowns[pv.unknown],
-                        pv.equation + 1,
-                        pv.entry.to_string_with(names)
-                    )
-                })
-                .collect(),
-            agrees_with_cramer: o.agrees_with_cramer(&a),
-        })
-        .map_err(|x| x.to_string());
+    let expanded = expand_all(p, e, unknown).map_err(|x| x.to_string());
     Ok(Reduction {
         unknown: uname,
         unknowns: p.unknowns.clone(),
@@ -268,6 +266,7 @@ pub fn reduce(p: &Program, unknown: usize) -> Result<Reduction, ReduceError> {
             .collect(),
         expanded,
         ordered,
+        eliminant_refused: None,
         commuted_pairs: e
             .commuted_pairs
             .iter()
@@ -287,6 +286,87 @@ pub fn reduce(p: &Program, unknown: usize) -> Result<Reduction, ReduceError> {
             .collect(),
         notes: product_notes(p),
     })
+}
+
+/// The ordered elimination of `d`, printable.
+fn ordered_form(
+    p: &Program,
+    d: &Derivation,
+    a: &Matrix<PolyRing>,
+    uname: &str,
+) -> Result<OrderedForm, String> {
+    let names = &p.symbols;
+    match &d.ordered {
+        Ok(o) => Ok(OrderedForm {
+            text: o.to_string_with(names, uname),
+            latex: o.to_latex_with(names, uname),
+            right_sides: p
+                .equations
+                .iter()
+                .enumerate()
+                .map(|(j, eq)| (format!("g{}", j + 1), eq.rhs.to_string()))
+                .collect(),
+            inverses: o.required_inverses(names),
+            pivots: o
+                .pivots
+                .iter()
+                .map(|pv| {
+                    format!(
+                        "{} from equation {} (pivot {})",
+                        p.unknowns[pv.unknown],
+                        pv.equation + 1,
+                        pv.entry.to_string_with(names)
+                    )
+                })
+                .collect(),
+            // Cramer's rule needs det and adj: checked only where the
+            // eliminant may be expanded.
+            agrees_with_cramer: d.bound.allows_expansion() && o.agrees_with_cramer(a),
+        }),
+        Err(e) => Err(e.to_string()),
+    }
+}
+
+/// The reduction when the eliminant's size bound forbids expanding it: the
+/// λ-matrix, the bound and the ordered elimination (if it fits).
+fn refused(
+    p: &Program,
+    d: &Derivation,
+    a: &Matrix<PolyRing>,
+    uname: String,
+    ordered: Result<OrderedForm, String>,
+) -> Reduction {
+    let why = format!(
+        "not expanded: det(A) may have up to {:.3e} terms of degree up to {} (limit {:.0} terms)",
+        d.bound.terms, d.bound.degree, MAX_ELIMINANT_TERMS
+    );
+    Reduction {
+        unknown: uname,
+        unknowns: p.unknowns.clone(),
+        lambda_matrix: a.format_rows(),
+        lambda_matrix_latex: a.latex_rows(),
+        ring: format!("Q[{}]", p.symbols.join(", ")),
+        invariant_factors: Vec::new(),
+        invariant_factors_latex: Vec::new(),
+        smith_checks: Vec::new(),
+        det: String::new(),
+        removed_factor: None,
+        lhs: String::new(),
+        lhs_latex: String::new(),
+        lhs_ordered: String::new(),
+        rhs: Vec::new(),
+        dropped: Vec::new(),
+        expanded: Err(why.clone()),
+        ordered,
+        eliminant_refused: Some(why),
+        commuted_pairs: Vec::new(),
+        params: p
+            .params
+            .iter()
+            .map(|q| (q.name.clone(), fmt_q(&q.value)))
+            .collect(),
+        notes: product_notes(p),
+    }
 }
 
 /// A note for every equation operator whose written order is not the

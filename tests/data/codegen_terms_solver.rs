@@ -12,8 +12,10 @@
 //! - ordered elimination, exact (`--method ordered`, the default; gj is
 //!   the right side of equation j):
 //!   `(h - m g^-1 h - m g^-1 - k g^-1 h - k g^-1) v = g1 + (-m g^-1 - k g^-1) g2`
+//!   pivots: u from equation 2 (pivot g)
 //! - commutative eliminant, the seed's model (`--method commutative`):
 //!   `(m*h + m + k*h + k - h*g) v = -g[1 + x] + (m + k)[x^2 - pi/8]`
+//!   commuted pairs: (m, g), (k, g)
 //!
 //! The system (parameters substituted):
 //!
@@ -141,6 +143,7 @@ pub fn system() -> Result<CompiledSystem, PlanError> {
         equations: vec![equation_1, equation_2],
         outputs: vec![output_1, output_2],
         target: 1,
+        principal: None,
         domain: (0.0, 1.0),
         interior: vec![0.5],
     };
