@@ -2,12 +2,78 @@
 //! sequence and the refusal of singular systems, all through the public
 //! numeric layer.
 use lambdamat::numeric::elimination::{
-    System2, commutator_defect, solve_blocks, solve_commutative, solve_coupled, solve_ordered,
+    apply_to_values, commutator_defect_on, product, solve_blocks,
 };
 use lambdamat::numeric::solve::{CheckedLu, solve};
 use lambdamat::numeric::{Assembler, Factor, Mesh, NumericError, Operator, PanelBasis};
 use nalgebra::{DMatrix, DVector};
 use std::f64::consts::{FRAC_PI_2, PI};
+
+// The 2×2 recipes, written here from the library's building blocks
+// (`solve_blocks`, `product`, `CheckedLu`): the library's own methods are
+// `plan::methods`, which work on any square system.
+
+/// The blocks and right sides of a 2×2 system.
+struct System2<'a> {
+    k11: &'a DMatrix<f64>,
+    k12: &'a DMatrix<f64>,
+    k21: &'a DMatrix<f64>,
+    k22: &'a DMatrix<f64>,
+    g1: &'a DVector<f64>,
+    g2: &'a DVector<f64>,
+}
+
+/// Coefficients of `p` and `q` (empty `q` for the commutative model).
+struct Solution2 {
+    p: DVector<f64>,
+    q: DVector<f64>,
+}
+
+fn solve_coupled(s: &System2, max_cond: f64) -> Result<Solution2, NumericError> {
+    let (mut x, _) = solve_blocks(
+        &[vec![s.k11, s.k12], vec![s.k21, s.k22]],
+        &[s.g1, s.g2],
+        max_cond,
+    )?;
+    let q = x.pop().expect("two unknowns");
+    let p = x.pop().expect("two unknowns");
+    Ok(Solution2 { p, q })
+}
+
+/// `(K11 - K12 K22⁻¹ K21) p = g1 - K12 K22⁻¹ g2`, then `q = K22⁻¹ (g2 - K21 p)`.
+fn solve_ordered(s: &System2, max_cond: f64) -> Result<Solution2, NumericError> {
+    let l22 = CheckedLu::new(s.k22, max_cond)?;
+    let y = l22.solve_matrix(s.k21)?;
+    let schur = s.k11 - s.k12 * y;
+    let rhs = s.g1 - s.k12 * l22.solve(s.g2)?;
+    let p = CheckedLu::new(&schur, max_cond)?.solve(&rhs)?;
+    let q = l22.solve(&(s.g2 - s.k21 * &p))?;
+    Ok(Solution2 { p, q })
+}
+
+/// The seed's model `(K22K11 - K12K21) p = K22 g1 - K12 g2` through `mid`.
+fn solve_commutative(
+    s: &System2,
+    mid: &PanelBasis,
+    max_cond: f64,
+) -> Result<Solution2, NumericError> {
+    let lhs = product(s.k22, mid, s.k11)? - product(s.k12, mid, s.k21)?;
+    let rhs = apply_to_values(s.k22, mid, s.g1)? - apply_to_values(s.k12, mid, s.g2)?;
+    let p = CheckedLu::new(&lhs, max_cond)?.solve(&rhs)?;
+    Ok(Solution2 {
+        p,
+        q: DVector::zeros(0),
+    })
+}
+
+fn commutator_defect(
+    ka: &DMatrix<f64>,
+    kb: &DMatrix<f64>,
+    mid: &PanelBasis,
+    f: &DVector<f64>,
+) -> Result<f64, NumericError> {
+    commutator_defect_on(ka, kb, ka, kb, mid, f)
+}
 
 fn kappa(i: usize, g: f64) -> Operator {
     match i {

@@ -19,6 +19,11 @@ pub fn solve_split_and_report(
     flags: &SolveFlags,
     w: &mut dyn Write,
 ) -> Result<(), CliError> {
+    if flags.method == "commutative" {
+        return Err(CliError::Invalid(
+            "--method commutative: a split-domain file is solved as one collocation system on all its subintervals; the seed's single equations per subinterval are shown by `lambdamat reduce`".into(),
+        ));
+    }
     let opts = SplitOptions {
         tol: flags.tol,
         max_level: flags.max_level,

@@ -13,8 +13,8 @@
 //! * [`roots`]: bracketing, Brent and warm-started secant iterations;
 //! * [`solve`]: dense solves that refuse singular or ill-conditioned
 //!   systems;
-//! * [`elimination`]: coupled, ordered and commutative solves of 2×2
-//!   systems, operator products and commutator defects;
+//! * [`elimination`]: the coupled block solve, operator products through
+//!   an intermediate basis and commutator defects;
 //! * [`error`]: the layer's error enum.
 //!
 //! Problem-specific code (the Hertz problem, solvers for systems from the
