@@ -78,12 +78,11 @@ fn carleman_logarithmic_equation() {
     let c = -1.0 / (PI * std::f64::consts::LN_2);
     // The weighted solution f √(1-x²) against the constant c.
     let u = &r.unknowns[0];
-    let err = u
-        .x
-        .iter()
-        .zip(&u.values)
-        .map(|(x, v)| (v * (1.0 - x * x).sqrt() - c).abs())
-        .fold(0.0, f64::max);
+    let err =
+        u.x.iter()
+            .zip(&u.values)
+            .map(|(x, v)| (v * (1.0 - x * x).sqrt() - c).abs())
+            .fold(0.0, f64::max);
     assert!(u.x.len() > 90);
     check("carleman", &r, err, 1e-10);
 }
@@ -91,7 +90,8 @@ fn carleman_logarithmic_equation() {
 #[test]
 fn airfoil_equation_bounded_solution() {
     // (1/π) PV∫ √(1-t²) U_{n-1}(t)/(t-x) dt = -T_n(x): f = √(1-t²)(1 + 2t).
-    let src = "operator h = 1/pi*pv int(-1..1) 1/(t - x) dt\nunknown f\nequation h f = 1 - x - 2*x^2\n";
+    let src =
+        "operator h = 1/pi*pv int(-1..1) 1/(t - x) dt\nunknown f\nequation h f = 1 - x - 2*x^2\n";
     let r = solve(src);
     let err = grid_error(&r, 0, |t| (1.0 - t * t).sqrt() * (1.0 + 2.0 * t));
     check("airfoil", &r, err, 1e-10);
@@ -122,7 +122,10 @@ fn love_reference(kappa: f64, sign: f64) -> f64 {
     let a = DMatrix::from_fn(n, n, |i, j| {
         (i == j) as u8 as f64 - sign * w[j] * k(t[i], t[j])
     });
-    let f = a.lu().solve(&DVector::from_element(n, 1.0)).expect("solves");
+    let f = a
+        .lu()
+        .solve(&DVector::from_element(n, 1.0))
+        .expect("solves");
     f.iter().zip(&w).map(|(f, w)| f * w).sum()
 }
 
@@ -144,17 +147,22 @@ fn love_equation_both_signs_two_widths() {
 
 #[test]
 fn endpoint_behaviour_sqrt_and_inverse_sqrt() {
-    let r = solve("operator k = id + int(0..1) x*t dt\nunknown f\nequation k f = sqrt(x) + 2/5*x\n");
+    let r =
+        solve("operator k = id + int(0..1) x*t dt\nunknown f\nequation k f = sqrt(x) + 2/5*x\n");
     check("√t", &r, grid_error(&r, 0, f64::sqrt), 1e-10);
-    let r = solve(
-        "operator k = id + int(0..1) x*t dt\nunknown f\nequation k f = 1/sqrt(x) + 2/3*x\n",
-    );
+    let r =
+        solve("operator k = id + int(0..1) x*t dt\nunknown f\nequation k f = 1/sqrt(x) + 2/3*x\n");
     check("1/√t", &r, grid_error(&r, 0, |t| 1.0 / t.sqrt()), 1e-10);
     // Both ends: f = √(t(1-t)) (∫_0^1 t f dt = π/16).
     let r = solve(
         "operator k = id + int(0..1) x*t dt\nunknown f\nequation k f = sqrt(x*(1 - x)) + pi/16*x\n",
     );
-    check("√(t(1-t))", &r, grid_error(&r, 0, |t| (t * (1.0 - t)).sqrt()), 1e-10);
+    check(
+        "√(t(1-t))",
+        &r,
+        grid_error(&r, 0, |t| (t * (1.0 - t)).sqrt()),
+        1e-10,
+    );
 }
 
 #[test]

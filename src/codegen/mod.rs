@@ -17,9 +17,9 @@ use std::collections::HashSet;
 use std::fmt::Write;
 
 use crate::numeric::Limits;
+use crate::numeric::Singularity;
 use crate::plan::PlanError;
 use crate::plan::compiled::{CompiledSystem, OutputTerm};
-use crate::numeric::Singularity;
 use crate::plan::operators::{KernelPlan, TermPlan, plan_operator};
 use crate::system::{Expr, FunctionalTerm, Program};
 

@@ -271,15 +271,9 @@ impl<'b> Assembler<'b> {
                         &mut ts,
                         &mut ws,
                     )?,
-                    None => composite_rule(
-                        seg.0,
-                        seg.1,
-                        &factors,
-                        m,
-                        &self.cache,
-                        &mut ts,
-                        &mut ws,
-                    )?,
+                    None => {
+                        composite_rule(seg.0, seg.1, &factors, m, &self.cache, &mut ts, &mut ws)?
+                    }
                 };
                 lag.resize(n, 0.0);
                 for (&t, &w) in ts.iter().zip(&ws) {

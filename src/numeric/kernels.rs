@@ -371,7 +371,14 @@ pub fn diagonal_rule(
 mod tests {
     use super::*;
 
-    fn integrate(l: f64, r: f64, x: f64, k: DiagonalKind, wf: &[Factor], g: impl Fn(f64) -> f64) -> f64 {
+    fn integrate(
+        l: f64,
+        r: f64,
+        x: f64,
+        k: DiagonalKind,
+        wf: &[Factor],
+        g: impl Fn(f64) -> f64,
+    ) -> f64 {
         let cache = RuleCache::new();
         let (mut t, mut w) = (vec![], vec![]);
         diagonal_rule(l, r, x, k, wf, 14, &cache, &mut t, &mut w).unwrap();
@@ -390,7 +397,10 @@ mod tests {
                     .map(|(u, w)| w * u.powi(k as i32))
                     .sum();
                 let exact = 1.0 / ((k + 1) as f64).powi(2);
-                assert!((s - exact).abs() < 1e-15 * 4.0, "m={m} k={k}: {s} vs {exact}");
+                assert!(
+                    (s - exact).abs() < 1e-15 * 4.0,
+                    "m={m} k={k}: {s} vs {exact}"
+                );
             }
         }
     }
@@ -458,12 +468,25 @@ mod tests {
         let got = integrate(0.0, 1.0, x, DiagonalKind::Cauchy, &[], |_| 1.0);
         let exact = ((x - 1.0) / x).ln(); // x - 1 is exact
 
-        assert!((got - exact).abs() < 1e-12 * exact.abs(), "{got} vs {exact}");
+        assert!(
+            (got - exact).abs() < 1e-12 * exact.abs(),
+            "{got} vs {exact}"
+        );
         let cache = RuleCache::new();
         let (mut t, mut w) = (vec![], vec![]);
         assert!(
-            diagonal_rule(0.0, 1.0, 1.0, DiagonalKind::Cauchy, &[], 8, &cache, &mut t, &mut w)
-                .is_err()
+            diagonal_rule(
+                0.0,
+                1.0,
+                1.0,
+                DiagonalKind::Cauchy,
+                &[],
+                8,
+                &cache,
+                &mut t,
+                &mut w
+            )
+            .is_err()
         );
     }
 
@@ -481,7 +504,10 @@ mod tests {
                     |t| kappa / (kappa * kappa + (x - t) * (x - t)),
                 );
                 let exact = ((1.0 - x) / kappa).atan() + ((1.0 + x) / kappa).atan();
-                assert!((got - exact).abs() < 1e-13, "κ={kappa} x={x}: {got} vs {exact}");
+                assert!(
+                    (got - exact).abs() < 1e-13,
+                    "κ={kappa} x={x}: {got} vs {exact}"
+                );
             }
         }
     }

@@ -332,7 +332,7 @@ pub fn diagonal_parts(e: &Expr) -> Option<(DiagonalClass, AbelParts)> {
     for (i, (f, p)) in factors.iter().enumerate() {
         let class = if let Expr::Call(Func::Ln, arg) = f {
             match match_linear(arg) {
-                Some((c, _)) if *p == 1.0 && (c.abs() - 1.0).abs() < 1e-14 => DiagonalClass::Log,
+                Some((c, true)) if *p == 1.0 && (c.abs() - 1.0).abs() < 1e-14 => DiagonalClass::Log,
                 _ => continue,
             }
         } else {

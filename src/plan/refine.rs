@@ -217,10 +217,16 @@ fn setup(sys: &CompiledSystem) -> Result<Setup, PlanError> {
         for (a, b) in ends {
             let mut w = Vec::new();
             if a != 0.0 {
-                w.push(Factor { at: lo, exponent: a });
+                w.push(Factor {
+                    at: lo,
+                    exponent: a,
+                });
             }
             if b != 0.0 {
-                w.push(Factor { at: hi, exponent: b });
+                w.push(Factor {
+                    at: hi,
+                    exponent: b,
+                });
             }
             let cand = vec![w; n];
             if !candidates.contains(&cand) {
@@ -270,13 +276,7 @@ fn solve_one(
     // Solutions of equations with peaked kernels vary on the peak's scale.
     let len = s.domain.1 - s.domain.0;
     spec.max_panel = spec.max_panel.min(PEAK_PANELS * s.peak / len);
-    let mut disc = Discretisation::new(
-        s.domain,
-        &s.interior,
-        spec,
-        s.ops.clone(),
-        weights,
-    )?;
+    let mut disc = Discretisation::new(s.domain, &s.interior, spec, s.ops.clone(), weights)?;
     let sol = solve_level(&mut disc, sys, opts.method, s.target, opts.max_cond)?;
     let xs = grid(s.domain, opts.grid);
     let phi = sol
