@@ -241,7 +241,10 @@ impl<'b> Assembler<'b> {
             };
             let near = match sing {
                 Singularity::Smooth => false,
-                Singularity::AbelSqrt => dist(x) < ETA * h || dist(-x) < ETA * h,
+                Singularity::AbelSqrt => {
+                    let near_x = |z: f64| z > p.a - ETA * h && z < p.b + ETA * h;
+                    near_x(x) || near_x(-x)
+                }
                 Singularity::Peaked { width } => dist(x).hypot(width) < ETA * h,
                 _ => dist(x) < ETA * h,
             };
@@ -250,7 +253,12 @@ impl<'b> Assembler<'b> {
             if !clipped && !near {
                 let f = &self.far[k];
                 for (q, (&t, &w)) in f.t.iter().zip(&f.w).enumerate() {
-                    let v = c * w * a(x, t) * sing.value(x, t);
+                    let mut v = c * w * a(x, t);
+                    match sing {
+                        Singularity::AbelSqrt => v /= ((t - x).abs() * (t + x).abs()).sqrt(),
+                        Singularity::Smooth => {}
+                        s => v *= s.value(x, t),
+                    }
                     for (o, lj) in out.iter_mut().zip(&f.lag[q * n..(q + 1) * n]) {
                         *o += v * lj;
                     }

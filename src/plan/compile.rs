@@ -320,7 +320,8 @@ pub enum DiagonalClass {
 /// let lambdamat::system::Term::Integral { kernel, .. } = &p.operators[0].terms[0] else { panic!() };
 /// let (class, parts) = diagonal_parts(kernel).unwrap();
 /// assert_eq!(class, DiagonalClass::Power { beta: 0.5, side: 1 });
-/// assert!((parts.scale - 2.0).abs() < 1e-15);
+/// let a = lambdamat::plan::compile::smooth_factor(&parts);
+/// assert!((a(0.3, 0.1) - 2.0).abs() < 1e-15);
 /// ```
 pub fn diagonal_parts(e: &Expr) -> Option<(DiagonalClass, AbelParts)> {
     let mut factors: Vec<(Expr, f64)> = Vec::new();
