@@ -158,8 +158,7 @@ fn codegen_for_picks_the_target_and_errors_are_clear() {
     // Abstract symbols have no kernels to generate.
     let var = lmx_file("var k\nunknown p\nequation k p = x\n");
     // Unsupported kernels are refused as `solve` refuses them.
-    let singular =
-        lmx_file("operator k = int(x..1) 1/sqrt(t - x) dt\nunknown p\nequation k p = 1\n");
+    let singular = lmx_file("operator k = int(0..1) 1/(t - x)^2 dt\nunknown p\nequation k p = 1\n");
     // Syntax errors carry line and column.
     let syntax = lmx_file("unknown p\nequation p = (x\n");
     for (f, needle) in [

@@ -61,6 +61,7 @@ fn hertz_operator_table_is_the_seeds_2_6() {
                 lower: Limit::X,
                 upper: Limit::Const(one),
                 kernel,
+                ..
             },
         ] => {
             assert_eq!(one, &q(1, 1));
@@ -76,11 +77,13 @@ fn hertz_operator_table_is_the_seeds_2_6() {
                 lower: Limit::Const(a),
                 upper: Limit::Const(b),
                 kernel: k_a,
+                ..
             },
             Term::Integral {
                 lower: Limit::Const(c),
                 upper: Limit::X,
                 kernel: k_b,
+                ..
             },
         ] => {
             assert_eq!((a, b, c), (&q(0, 1), &q(1, 1), &q(0, 1)));
@@ -98,6 +101,7 @@ fn hertz_operator_table_is_the_seeds_2_6() {
                 lower: Limit::X,
                 upper: Limit::Const(_),
                 kernel,
+                ..
             },
         ] => {
             assert!(close(kernel.eval(x, t), -x / root_tx));
@@ -173,7 +177,8 @@ fn operator_terms_identity_scalar_multiplier_integral() {
         &[Term::Integral {
             lower: Limit::Const(q(0, 1)),
             upper: Limit::X,
-            kernel: Expr::Const(q(1, 1))
+            kernel: Expr::Const(q(1, 1)),
+            pv: false,
         }]
     );
     let p = ok("operator i = id\noperator h = id/2\nunknown u\nequation (i + h) u = 1\n");
@@ -595,6 +600,7 @@ fn apply(terms: &[Term], f: &dyn Fn(f64) -> f64, x: f64) -> f64 {
                 lower,
                 upper,
                 kernel,
+                ..
             } => match (val(lower), val(upper)) {
                 (Some(0.0), None) => midpoint(
                     &|th: f64| {

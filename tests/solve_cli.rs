@@ -193,7 +193,7 @@ fn singular_system_is_exit_3_with_a_reason() {
 
 #[test]
 fn unsupported_kernel_is_exit_2_naming_the_operator() {
-    let f = file("operator weird = int(x..1) 1/sqrt(t - x) dt\nunknown p\nequation weird p = 1\n");
+    let f = file("operator weird = int(0..1) 1/(t - x)^2 dt\nunknown p\nequation weird p = 1\n");
     let out = lambdamat()
         .arg("solve")
         .arg(f.path())

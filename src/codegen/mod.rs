@@ -17,6 +17,7 @@ use std::collections::HashSet;
 use std::fmt::Write;
 
 use crate::numeric::Limits;
+use crate::numeric::Singularity;
 use crate::plan::PlanError;
 use crate::plan::compiled::{CompiledSystem, OutputTerm};
 use crate::plan::operators::{KernelPlan, TermPlan, plan_operator};
@@ -85,8 +86,11 @@ pub fn solver_source(
                     let f = names.fresh(&format!("kernel_{sym}{suffix}"));
                     kernel_fn(&mut fns, &f, sym, written, kernel);
                     let singularity = match kernel {
-                        KernelPlan::Abel(_) => "AbelSqrt",
-                        KernelPlan::Smooth(_) => "Smooth",
+                        KernelPlan::Abel(_) => "AbelSqrt".to_string(),
+                        KernelPlan::Smooth(_) => "Smooth".to_string(),
+                        KernelPlan::Diagonal(s, _) | KernelPlan::Peaked(s, _) => {
+                            format!("lambdamat::numeric::Singularity::{s:?}")
+                        }
                     };
                     let lim = match limits {
                         Limits::Upper { b } => struct_lit("Upper", &[("b", literal(*b))], 4),
@@ -544,11 +548,21 @@ fn kernel_fn(out: &mut String, name: &str, sym: &str, written: &Expr, k: &Kernel
             Body::new().abel(parts),
             "its smooth factor a(x, t) with kernel = a(x, t)/√|t² - x²|",
         ),
-        KernelPlan::Smooth(e) => (
+        KernelPlan::Smooth(e) | KernelPlan::Peaked(_, e) => (
             e.uses_x(),
             e.uses_t(),
             Body::new().expr(e),
             "a smooth kernel",
+        ),
+        KernelPlan::Diagonal(s, parts) => (
+            parts.factors.iter().any(|(f, _)| f.uses_x()),
+            parts.factors.iter().any(|(f, _)| f.uses_t()),
+            Body::new().abel(parts),
+            match s {
+                Singularity::Log => "its smooth factor a(x, t) with kernel = a(x, t) ln|x - t|",
+                Singularity::Cauchy => "its smooth factor a(x, t) with kernel = a(x, t)/(t - x)",
+                _ => "its smooth factor a(x, t) with kernel = a(x, t) |x - t|^(-β)",
+            },
         ),
     };
     let x = if uses_x { "x" } else { "_x" };

@@ -102,6 +102,8 @@ pub enum ExprKind {
         var: IntVar,
         /// Where the differential (`dt`/`dx`) was written.
         var_span: Span,
+        /// Written `pv int`: a Cauchy principal value.
+        pv: bool,
     },
 }
 

@@ -19,6 +19,7 @@ pub const KEYWORDS: &[&str] = &[
     "for",
     "output",
     "int",
+    "pv",
     "id",
     "pi",
     "sqrt",

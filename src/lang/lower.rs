@@ -237,6 +237,7 @@ enum Atom {
         lower: Limit,
         upper: Limit,
         kernel: SExpr,
+        pv: bool,
     },
 }
 
@@ -252,10 +253,12 @@ impl Atom {
                 lower,
                 upper,
                 kernel,
+                pv,
             } => Term::Integral {
                 lower,
                 upper,
                 kernel: smul(factor, kernel),
+                pv,
             },
         }
     }
@@ -279,10 +282,12 @@ fn operator_terms(e: &Expr, scope: &Scope) -> Result<Vec<(SExpr, Atom)>, LangErr
             lower,
             upper,
             integrand,
+            pv,
             ..
         } => vec![(
             one(),
             Atom::Integral {
+                pv: *pv,
                 lower: limit(lower, scope)?,
                 upper: limit(upper, scope)?,
                 kernel: match integrand {

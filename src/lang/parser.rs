@@ -392,7 +392,9 @@ fn primary(pair: Pair<'_, Rule>) -> Result<Built, LangError> {
             node(ExprKind::Call(f, Box::new(arg.expr)), span, arg.depth + 1)
         }
         Rule::integral => {
-            let mut it = pair.into_inner().skip(1);
+            let mut it = pair.into_inner().peekable();
+            let pv = it.peek().is_some_and(|p| p.as_rule() == Rule::kw_pv);
+            let mut it = it.skip(if pv { 2 } else { 1 });
             let lower = build(next(&mut it, span)?)?;
             let upper = build(next(&mut it, span)?)?;
             let mut integrand = None;
@@ -423,6 +425,7 @@ fn primary(pair: Pair<'_, Rule>) -> Result<Built, LangError> {
                     integrand: integrand.map(|b| Box::new(b.expr)),
                     var,
                     var_span,
+                    pv,
                 },
                 span,
                 depth,

@@ -262,7 +262,13 @@ fn operator_body(def: &OperatorDef) -> String {
                 lower,
                 upper,
                 kernel,
-            } => format!("int({}..{}) {kernel} dt", limit(lower), limit(upper)),
+                pv,
+            } => format!(
+                "{}int({}..{}) {kernel} dt",
+                if *pv { "pv " } else { "" },
+                limit(lower),
+                limit(upper)
+            ),
             Term::Multiply(f) => format!("{}*id", factor(f)),
             Term::Identity => "id".to_string(),
             Term::Scalar(c) => format!("{}*id", factor(&Expr::Const(c.clone()))),

@@ -397,6 +397,7 @@ impl Validator {
                 integrand,
                 var,
                 var_span,
+                ..
             } => {
                 if *var == IntVar::X {
                     self.err(

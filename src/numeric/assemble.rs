@@ -21,6 +21,7 @@ use rayon::prelude::*;
 
 use super::basis::{Factor, PanelBasis};
 use super::error::NumericError;
+use super::kernels::{DiagonalKind, diagonal_rule};
 use super::operator::{Limits, Operator, Singularity, Term};
 use super::product::{ETA, RuleCache, composite_rule};
 
@@ -194,18 +195,31 @@ impl<'b> Assembler<'b> {
         if lo.partial_cmp(&hi) != Some(std::cmp::Ordering::Less) {
             return Ok(());
         }
-        let abel = sing == Singularity::AbelSqrt;
         let mut factors: Vec<Factor> = self.basis.weight.clone();
-        if abel {
-            factors.push(Factor {
-                at: x,
-                exponent: -0.5,
-            });
-            factors.push(Factor {
-                at: -x,
-                exponent: -0.5,
-            });
-        }
+        let diagonal = match sing {
+            Singularity::AbelSqrt => {
+                factors.push(Factor {
+                    at: x,
+                    exponent: -0.5,
+                });
+                factors.push(Factor {
+                    at: -x,
+                    exponent: -0.5,
+                });
+                None
+            }
+            Singularity::Power { beta } => {
+                factors.push(Factor {
+                    at: x,
+                    exponent: -beta,
+                });
+                None
+            }
+            Singularity::Smooth => None,
+            Singularity::Log => Some(DiagonalKind::Log),
+            Singularity::Cauchy => Some(DiagonalKind::Cauchy),
+            Singularity::Peaked { width } => Some(DiagonalKind::Peaked { width }),
+        };
         let mut ts = Vec::new();
         let mut ws = Vec::new();
         let mut lag = Vec::new();
@@ -216,15 +230,34 @@ impl<'b> Assembler<'b> {
             let n = p.nodes.len();
             let seg = (p.a.max(lo), p.b.min(hi));
             let h = p.b - p.a;
-            let near_x = |z: f64| z > p.a - ETA * h && z < p.b + ETA * h;
+            let dist = |z: f64| {
+                if z < p.a {
+                    p.a - z
+                } else if z > p.b {
+                    z - p.b
+                } else {
+                    0.0
+                }
+            };
+            let near = match sing {
+                Singularity::Smooth => false,
+                Singularity::AbelSqrt => {
+                    let near_x = |z: f64| z > p.a - ETA * h && z < p.b + ETA * h;
+                    near_x(x) || near_x(-x)
+                }
+                Singularity::Peaked { width } => dist(x).hypot(width) < ETA * h,
+                _ => dist(x) < ETA * h,
+            };
             let clipped = seg.0 > p.a || seg.1 < p.b;
             let out = &mut row[p.offset..p.offset + n];
-            if !clipped && !(abel && (near_x(x) || near_x(-x))) {
+            if !clipped && !near {
                 let f = &self.far[k];
                 for (q, (&t, &w)) in f.t.iter().zip(&f.w).enumerate() {
                     let mut v = c * w * a(x, t);
-                    if abel {
-                        v /= ((t - x).abs() * (t + x).abs()).sqrt();
+                    match sing {
+                        Singularity::AbelSqrt => v /= ((t - x).abs() * (t + x).abs()).sqrt(),
+                        Singularity::Smooth => {}
+                        s => v *= s.value(x, t),
                     }
                     for (o, lj) in out.iter_mut().zip(&f.lag[q * n..(q + 1) * n]) {
                         *o += v * lj;
@@ -233,15 +266,23 @@ impl<'b> Assembler<'b> {
             } else {
                 ts.clear();
                 ws.clear();
-                composite_rule(
-                    seg.0,
-                    seg.1,
-                    &factors,
-                    n.div_ceil(2) + self.extra,
-                    &self.cache,
-                    &mut ts,
-                    &mut ws,
-                )?;
+                let m = n.div_ceil(2) + self.extra;
+                match diagonal {
+                    Some(kind) => diagonal_rule(
+                        seg.0,
+                        seg.1,
+                        x,
+                        kind,
+                        &self.basis.weight,
+                        m,
+                        &self.cache,
+                        &mut ts,
+                        &mut ws,
+                    )?,
+                    None => {
+                        composite_rule(seg.0, seg.1, &factors, m, &self.cache, &mut ts, &mut ws)?
+                    }
+                };
                 lag.resize(n, 0.0);
                 for (&t, &w) in ts.iter().zip(&ws) {
                     p.lagrange(t, &mut lag);

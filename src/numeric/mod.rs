@@ -6,6 +6,8 @@
 //! * [`basis`]: weighted, discontinuous piecewise-polynomial trial spaces;
 //! * [`product`]: product-integration rules exact for endpoint and diagonal
 //!   power singularities, with geometric sub-grading near them;
+//! * [`kernels`]: product rules for `ln|t-x|`, Cauchy principal values and
+//!   sharply peaked smooth kernels;
 //! * [`operator`]: operators as data (Abel-type and smooth integral terms,
 //!   multipliers, identity) with kernels as closures;
 //! * [`assemble`]: collocation matrices of operators;
@@ -25,6 +27,7 @@ pub mod elimination;
 pub mod error;
 pub mod gamma;
 pub mod gauss;
+pub mod kernels;
 pub mod lu;
 pub mod mesh;
 pub mod operator;

@@ -1,6 +1,7 @@
 //! Linear operators as data: linear combinations of integral terms of Abel
 //! type (`∫_x^b`, `∫_a^x`, `∫_a^b` with kernel `a(x,t)|t²-x²|^{-1/2}`),
-//! smooth integral terms (`∫_a^b a(x,t) f(t) dt`) and multiplication by a
+//! power, logarithmic, Cauchy principal-value and sharply peaked kernels
+//! (`a(x,t)|x-t|^{-β}`, `a(x,t)ln|x-t|`, `PV a(x,t)/(t-x)`), smooth integral terms (`∫_a^b a(x,t) f(t) dt`) and multiplication by a
 //! function of `x` (the identity is multiplication by 1). Kernels are
 //! closures compiled once by the caller (for example from the language's
 //! kernel expressions) and shared by `Arc`. This file owns the description
@@ -48,12 +49,41 @@ impl Limits {
 }
 
 /// The singular factor of an integral term's kernel.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Singularity {
-    /// Kernel `a(x,t) |t² - x²|^{-1/2}`.
+    /// Kernel `a(x,t) |t² - x²|^{-1/2}` (the Hertz family).
     AbelSqrt,
     /// Kernel `a(x,t)` (smooth).
     Smooth,
+    /// Kernel `a(x,t) |x - t|^{-β}`, `0 < β < 1` (Abel of order `1 - β`
+    /// when the range is one-sided).
+    Power {
+        /// The exponent `β`.
+        beta: f64,
+    },
+    /// Kernel `a(x,t) ln|x - t|`.
+    Log,
+    /// Kernel `a(x,t)/(t - x)`, integrated as a Cauchy principal value.
+    Cauchy,
+    /// A smooth kernel `a(x,t)` sharply peaked at `t = x`: its nearest
+    /// complex singularities are `width` away from the real axis.
+    Peaked {
+        /// That distance.
+        width: f64,
+    },
+}
+
+impl Singularity {
+    /// `S(x, t)` for `t ≠ x` (1 for smooth and peaked kernels).
+    pub fn value(&self, x: f64, t: f64) -> f64 {
+        match *self {
+            Singularity::AbelSqrt => 1.0 / ((t - x).abs() * (t + x).abs()).sqrt(),
+            Singularity::Smooth | Singularity::Peaked { .. } => 1.0,
+            Singularity::Power { beta } => super::product::pow_fast((t - x).abs(), -beta),
+            Singularity::Log => (t - x).abs().ln(),
+            Singularity::Cauchy => 1.0 / (t - x),
+        }
+    }
 }
 
 /// One term of an [`Operator`].

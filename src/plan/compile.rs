@@ -286,6 +286,118 @@ fn match_base(e: &Expr) -> Option<(f64, AbelBase)> {
     Some((c, kind))
 }
 
+/// A diagonal singular factor recognised in a kernel (other than the
+/// Hertz family `|t²-x²|^(-1/2)`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum DiagonalClass {
+    /// `|x - t|^(-β)`, `0 < β < 1`; `side` says where the base is real:
+    /// `1` for `t < x` only (`(x-t)^(-β)`), `-1` for `t > x` only, `0`
+    /// for both (`abs(x - t)^(-β)`).
+    Power {
+        /// The exponent `β`.
+        beta: f64,
+        /// Where the written base is real.
+        side: i8,
+    },
+    /// `ln|x - t|`.
+    Log,
+    /// `1/(t - x)`.
+    Cauchy,
+}
+
+/// Recognises `a(x,t) · S(x,t)` with `S` one of [`DiagonalClass`],
+/// however it is written (`1/sqrt(x - t)`, `(x - t)^(-1/3)`,
+/// `1/sqrt(abs(x - t))`, `ln(abs(x - t))`, `1/(t - x)`, `-1/(x - t)`),
+/// returning the class and the smooth factor `a` as [`AbelParts`] (its
+/// `base` field is unused). The singular base is recognised by value: it
+/// must equal `c (x - t)` (or `|c (x - t)|`) at sample points.
+///
+/// ```
+/// use lambdamat::plan::compile::{diagonal_parts, DiagonalClass};
+/// let p = lambdamat::lang::parse_program(
+///     "operator k = int(0..x) 2/sqrt(x - t) dt\nunknown p\nequation k p = 1",
+///     "a.lmx").unwrap();
+/// let lambdamat::system::Term::Integral { kernel, .. } = &p.operators[0].terms[0] else { panic!() };
+/// let (class, parts) = diagonal_parts(kernel).unwrap();
+/// assert_eq!(class, DiagonalClass::Power { beta: 0.5, side: 1 });
+/// let a = lambdamat::plan::compile::smooth_factor(&parts);
+/// assert!((a(0.3, 0.1) - 2.0).abs() < 1e-15);
+/// ```
+pub fn diagonal_parts(e: &Expr) -> Option<(DiagonalClass, AbelParts)> {
+    let mut factors: Vec<(Expr, f64)> = Vec::new();
+    // A found base stops `flatten` from looking for the Hertz base.
+    let mut found = Some((1.0, AbelBase::Abs));
+    let mut sign = 1.0;
+    flatten(e, 1.0, &mut factors, &mut found, &mut sign);
+    let mut scale = sign;
+    for (i, (f, p)) in factors.iter().enumerate() {
+        let class = if let Expr::Call(Func::Ln, arg) = f {
+            match match_linear(arg) {
+                Some((c, true)) if *p == 1.0 && (c.abs() - 1.0).abs() < 1e-14 => DiagonalClass::Log,
+                _ => continue,
+            }
+        } else {
+            let Some((c, abs)) = match_linear(f) else {
+                continue;
+            };
+            if *p == -1.0 && !abs {
+                // c (x - t) = -c (t - x).
+                scale /= -c;
+                DiagonalClass::Cauchy
+            } else if *p > -1.0 && *p < 0.0 {
+                scale *= c.abs().powf(*p);
+                let side = if abs {
+                    0
+                } else if c > 0.0 {
+                    1
+                } else {
+                    -1
+                };
+                DiagonalClass::Power { beta: -*p, side }
+            } else {
+                continue;
+            }
+        };
+        let mut rest = factors.clone();
+        rest.remove(i);
+        return Some((
+            class,
+            AbelParts {
+                scale,
+                factors: rest,
+                base: AbelBase::Abs,
+            },
+        ));
+    }
+    None
+}
+
+/// `Some((c, abs))` if `e` equals `c (x - t)` (or `|c (x - t)|`) at
+/// sample points, with `c` a nonzero constant.
+fn match_linear(e: &Expr) -> Option<(f64, bool)> {
+    if !e.uses_x() || !e.uses_t() {
+        return None;
+    }
+    let (inner, abs) = match e {
+        Expr::Call(Func::Abs, a) => (a.as_ref(), true),
+        other => (other, false),
+    };
+    let f = compile(inner);
+    let mut c: Option<f64> = None;
+    for &(x, t) in &SAMPLES {
+        let r = f(x, t) / (x - t);
+        if !r.is_finite() || r == 0.0 {
+            return None;
+        }
+        match c {
+            None => c = Some(r),
+            Some(c0) if (r - c0).abs() <= 1e-12 * c0.abs() => {}
+            Some(_) => return None,
+        }
+    }
+    c.map(|c| (c, abs))
+}
+
 /// The value of a constant expression (no `x`, `t`), if finite.
 pub fn constant_value(e: &Expr) -> Option<f64> {
     if e.uses_x() || e.uses_t() {

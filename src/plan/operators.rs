@@ -11,7 +11,8 @@ use crate::numeric::{Limits, Operator, Singularity};
 use crate::system::{Expr, Limit, OperatorDef, Term};
 
 use super::compile::{
-    AbelBase, AbelParts, Fn2, abel_parts, compile, compile_x, rational, smooth_factor,
+    AbelBase, AbelParts, DiagonalClass, Fn2, abel_parts, compile, compile_x, diagonal_parts,
+    rational, smooth_factor,
 };
 use super::error::PlanError;
 
@@ -46,6 +47,12 @@ pub enum KernelPlan {
     Abel(AbelParts),
     /// A smooth kernel.
     Smooth(Expr),
+    /// `a(x,t)·S(x,t)` with a diagonal singular factor `S` (power, log,
+    /// Cauchy): the numeric class and the smooth factor `a`.
+    Diagonal(Singularity, AbelParts),
+    /// A smooth kernel sharply peaked at `t = x` (the numeric class
+    /// carries the estimated width).
+    Peaked(Singularity, Expr),
 }
 
 impl KernelPlan {
@@ -54,6 +61,7 @@ impl KernelPlan {
         match self {
             KernelPlan::Abel(_) => Singularity::AbelSqrt,
             KernelPlan::Smooth(_) => Singularity::Smooth,
+            KernelPlan::Diagonal(s, _) | KernelPlan::Peaked(s, _) => *s,
         }
     }
 
@@ -61,7 +69,8 @@ impl KernelPlan {
     pub fn compile(&self) -> Fn2 {
         match self {
             KernelPlan::Abel(parts) => smooth_factor(parts),
-            KernelPlan::Smooth(e) => compile(e),
+            KernelPlan::Smooth(e) | KernelPlan::Peaked(_, e) => compile(e),
+            KernelPlan::Diagonal(_, parts) => smooth_factor(parts),
         }
     }
 }
@@ -122,6 +131,7 @@ pub fn plan_operator(
                 lower,
                 upper,
                 kernel,
+                pv,
             } => {
                 let (limits, sign) = match (lower, upper) {
                     (Limit::X, Limit::X) => continue,
@@ -151,6 +161,11 @@ pub fn plan_operator(
                                 "kernel {kernel} is not real on all of its range (write abs(t^2 - x^2))"
                             )));
                         }
+                        if *pv {
+                            return Err(unsupported(format!(
+                                "pv int: kernel {kernel} has no factor 1/(t - x)"
+                            )));
+                        }
                         if domain.0 < 0.0 {
                             return Err(unsupported(format!(
                                 "Abel kernel {kernel} needs unknowns on x ≥ 0, not on [{}, {}]",
@@ -159,11 +174,26 @@ pub fn plan_operator(
                         }
                         KernelPlan::Abel(parts)
                     }
-                    None => KernelPlan::Smooth(kernel.clone()),
+                    None => match diagonal_parts(kernel) {
+                        Some((class, parts)) => {
+                            diagonal_plan(class, parts, limits, *pv, kernel).map_err(unsupported)?
+                        }
+                        None if *pv => {
+                            return Err(unsupported(format!(
+                                "pv int: kernel {kernel} has no factor 1/(t - x) whose principal value could be taken"
+                            )));
+                        }
+                        None => match peak_width(&compile(kernel), limits, domain) {
+                            Some(w) => {
+                                KernelPlan::Peaked(Singularity::Peaked { width: w }, kernel.clone())
+                            }
+                            None => KernelPlan::Smooth(kernel.clone()),
+                        },
+                    },
                 };
                 check_regular(&plan.compile(), limits, domain).map_err(|why| {
                     unsupported(format!(
-                        "kernel {kernel}: {why}; supported kernels are smooth or a smooth factor times |t^2 - x^2|^(-1/2)"
+                        "kernel {kernel}: {why}; supported kernels are a smooth factor times 1, |t^2 - x^2|^(-1/2), |x - t|^(-b) (0 < b < 1), ln(abs(x - t)) or (in a pv integral) 1/(t - x)"
                     ))
                 })?;
                 TermPlan::Integral {
@@ -177,6 +207,88 @@ pub fn plan_operator(
         out.push(piece);
     }
     Ok(out)
+}
+
+/// The plan of a kernel with a recognised diagonal factor: the base must
+/// be real on the range, and a Cauchy factor needs a principal value.
+fn diagonal_plan(
+    class: DiagonalClass,
+    parts: AbelParts,
+    limits: Limits,
+    pv: bool,
+    kernel: &Expr,
+) -> Result<KernelPlan, String> {
+    let sing = match class {
+        DiagonalClass::Power { beta, side } => {
+            let real = matches!(
+                (side, limits),
+                (0, _) | (1, Limits::Lower { .. }) | (-1, Limits::Upper { .. })
+            );
+            if !real {
+                let fix = if side == 1 { "x - t" } else { "t - x" };
+                return Err(format!(
+                    "kernel {kernel} (class |x - t|^(-{beta})) is not real on all of its range (write abs({fix}))"
+                ));
+            }
+            Singularity::Power { beta }
+        }
+        DiagonalClass::Log => Singularity::Log,
+        DiagonalClass::Cauchy => {
+            if !pv {
+                return Err(format!(
+                    "kernel {kernel} (class Cauchy 1/(t - x)) is not integrable: mark the integral as a principal value, `pv int(a..b) ... dt`"
+                ));
+            }
+            if !matches!(limits, Limits::Fixed { .. }) {
+                return Err(format!(
+                    "kernel {kernel} (class Cauchy 1/(t - x)): a principal value needs constant limits"
+                ));
+            }
+            Singularity::Cauchy
+        }
+    };
+    if pv && sing != Singularity::Cauchy {
+        return Err(format!(
+            "pv int: kernel {kernel} has no factor 1/(t - x) whose principal value could be taken"
+        ));
+    }
+    Ok(KernelPlan::Diagonal(sing, parts))
+}
+
+/// Kernels whose diagonal curvature scale `√|k/∂²ₜk|` is below this
+/// fraction of the interval are integrated as peaked.
+const PEAK_FRACTION: f64 = 0.125;
+
+/// The width of a smooth kernel sharply peaked at `t = x` (estimated from
+/// `√|k(x,x) / ∂²ₜk(x,x)|` at sample points by finite differences), or
+/// `None` if it is not peaked on the scale of the interval.
+fn peak_width(k: &Fn2, limits: Limits, domain: (f64, f64)) -> Option<f64> {
+    let (lo, hi) = domain;
+    let len = hi - lo;
+    let mut width = f64::INFINITY;
+    for fx in [0.1, 0.37, 0.5, 0.71, 0.9] {
+        let x = lo + fx * len;
+        let (l, h) = limits.at(x);
+        if !(x > l && x < h) {
+            continue;
+        }
+        let mut step = 1e-2 * len;
+        let mut w = f64::INFINITY;
+        for _ in 0..6 {
+            let (a, b, c) = (k(x, x - step), k(x, x), k(x, x + step));
+            let d2 = (a - 2.0 * b + c) / (step * step);
+            if !(d2.is_finite() && b.is_finite()) || d2 == 0.0 || b == 0.0 {
+                break;
+            }
+            w = (b / d2).abs().sqrt();
+            if step <= 0.05 * w {
+                break;
+            }
+            step = 0.05 * w;
+        }
+        width = width.min(w);
+    }
+    (width < PEAK_FRACTION * len).then_some(width)
 }
 
 /// Checks that `k` is finite on its range at sample points and does not
@@ -256,8 +368,9 @@ mod tests {
     #[test]
     fn unsupported_kernels_name_the_operator() {
         for src in [
-            "int(x..1) 1/sqrt(t - x) dt",
-            "int(0..1) ln(abs(t - x)) dt",
+            "int(x..1) 1/sqrt(x - t) dt",
+            "int(0..1) 1/(t - x)^2 dt",
+            "int(0..1) ln(t - x) dt",
             "int(0..1) t/sqrt(t^2 - x^2) dt",
             "int(x..1) t/sqrt(x^2 - t^2) dt",
             "int(0..1) 1/(t - x) dt",

@@ -172,6 +172,7 @@ pub fn expand_word(
                         lower,
                         upper,
                         kernel,
+                        ..
                     } => {
                         let (c, k) = peel(kernel);
                         let bound = |l: &Limit| match l {

@@ -27,6 +27,8 @@ pub enum Term {
         upper: Limit,
         /// The kernel in `x` and `t` (any outer factor is folded in).
         kernel: Expr,
+        /// A Cauchy principal value (`pv int`).
+        pv: bool,
     },
     /// `m(x) f(x)` for a function `m` that is not a rational constant
     /// (usually it depends on `x`; it may also be e.g. `pi`).
