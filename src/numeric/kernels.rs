@@ -25,9 +25,10 @@ use std::sync::{Arc, Mutex, OnceLock};
 use nalgebra::{DMatrix, SymmetricEigen};
 
 use super::basis::Factor;
+use super::basis::pow_fast;
 use super::error::NumericError;
 use super::gauss::gauss_legendre;
-use super::product::{ETA, RuleCache, pow_fast};
+use super::product::{ETA, RuleCache};
 
 /// The singular factor handled here.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -79,7 +79,7 @@ impl Singularity {
         match *self {
             Singularity::AbelSqrt => 1.0 / ((t - x).abs() * (t + x).abs()).sqrt(),
             Singularity::Smooth | Singularity::Peaked { .. } => 1.0,
-            Singularity::Power { beta } => super::product::pow_fast((t - x).abs(), -beta),
+            Singularity::Power { beta } => super::basis::pow_fast((t - x).abs(), -beta),
             Singularity::Log => (t - x).abs().ln(),
             Singularity::Cauchy => 1.0 / (t - x),
         }
