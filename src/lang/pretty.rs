@@ -6,7 +6,9 @@
 
 use std::fmt::Write;
 
-use num_traits::{One, Signed};
+use num_traits::One;
+
+use crate::algebra::print::{Node, PrintOptions, print};
 
 use crate::system::{
     Directive, Expr, FunctionalTerm, Limit, MatrixDef, OperatorDef, Program, Term,
@@ -47,28 +49,27 @@ pub fn pretty(program: &Program) -> String {
         let _ = writeln!(out, "unknown {}", program.unknowns.join(", "));
     }
     for eq in &program.equations {
-        let mut terms: Vec<String> = eq
+        let terms: Vec<(bool, Node)> = eq
             .lhs
             .iter()
             .zip(&program.unknowns)
             .filter(|(c, _)| !c.is_zero())
             .map(|(c, u)| {
-                let single_positive =
-                    c.terms().len() == 1 && c.terms().first().is_some_and(|(_, k)| k.is_positive());
-                if c.as_constant().is_some_and(|v| v.is_one()) {
-                    u.clone()
-                } else if single_positive {
-                    format!("{} {u}", c.to_string_with(names))
-                } else {
-                    format!("({}) {u}", c.to_string_with(names))
-                }
+                let (neg, op) = c.to_node(names).split_sign();
+                let term = match op {
+                    Node::Num(v) if v.is_one() => Node::sym(u),
+                    op => Node::Apply(Box::new(op), Box::new(Node::sym(u))),
+                };
+                (neg, term)
             })
             .collect();
-        if terms.is_empty() {
+        let lhs = if terms.is_empty() {
             let first = program.unknowns.first().map_or("p", String::as_str);
-            terms.push(format!("0 {first}"));
-        }
-        let _ = writeln!(out, "equation {} = {}", terms.join(" + "), eq.rhs);
+            format!("0 {first}")
+        } else {
+            print(&Node::Terms(terms), PrintOptions::LMX)
+        };
+        let _ = writeln!(out, "equation {lhs} = {}", eq.rhs);
     }
     for o in &program.outputs {
         let terms: Vec<String> = o
@@ -114,7 +115,7 @@ fn matrix(m: &MatrixDef, names: &[String]) -> String {
         .chunks(m.cols)
         .map(|row| {
             row.iter()
-                .map(|e| e.to_string_with(names))
+                .map(|e| print(&e.to_node(names), PrintOptions::LMX))
                 .collect::<Vec<_>>()
                 .join(", ")
         })
