@@ -233,6 +233,18 @@ impl<R: Ring> Matrix<R> {
             .collect()
     }
 
+    /// Rows of entries in the language's syntax (for machine-read reports:
+    /// each entry parses back to its value).
+    pub fn lmx_rows(&self) -> Vec<Vec<String>> {
+        (0..self.rows)
+            .map(|i| {
+                (0..self.cols)
+                    .map(|j| self.ring.lmx(self.get(i, j)))
+                    .collect()
+            })
+            .collect()
+    }
+
     /// Rows of LaTeX entries (for reports).
     pub fn latex_rows(&self) -> Vec<Vec<String>> {
         (0..self.rows)

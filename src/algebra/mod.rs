@@ -12,6 +12,8 @@
 //! * [`ratfunc`]: the field Q(s1..sn) of reduced rational functions;
 //! * [`upoly`]: dense univariate polynomials over any field object (Q[x],
 //!   Q(others)[λ]);
+//! * [`print`]: the one printer (text, LaTeX, the language's syntax) on a
+//!   print tree that every ring builds;
 //! * [`matrix`]: `Matrix<R>` over a ring object, Bareiss determinant,
 //!   adjugate, rank, minors;
 //! * [`smith`]: the three honest Smith modes and their certificates;
@@ -37,6 +39,7 @@ pub mod mpoly;
 pub mod ncpoly;
 pub mod ordered;
 pub mod polyring;
+pub mod print;
 pub mod qx;
 pub mod ratfunc;
 pub mod rational;

@@ -5,7 +5,9 @@
 //! degrees, printing); gcd lives in [`super::gcd`], and names are only
 //! borrowed for printing.
 
-use super::rational::{Q, fmt_q, primitive_scale};
+pub use super::print::latex_name;
+use super::print::{Node, PrintOptions, print};
+use super::rational::{Q, primitive_scale};
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 use std::cmp::Ordering;
@@ -316,116 +318,47 @@ impl MPoly {
         })
     }
 
+    /// The print tree: a signed sum of `coefficient*monomial` terms,
+    /// highest first (see [`super::print`]).
+    pub fn to_node<S: AsRef<str>>(&self, names: &[S]) -> Node {
+        Node::Terms(
+            self.terms
+                .iter()
+                .map(|(m, c)| {
+                    let mut fs = vec![Node::Num(c.abs())];
+                    fs.extend(monomial_factors(m, names));
+                    (c.is_negative(), Node::product(fs))
+                })
+                .collect(),
+        )
+    }
+
     /// Prints with the given variable names, e.g. `k1*k4 - k2*k3` or
-    /// `x^2 + 1/2*x - 3` (highest term first).
+    /// `x^2 + 1/2*x - 3` (highest term first); this is also the language's
+    /// syntax.
     pub fn to_string_with<S: AsRef<str>>(&self, names: &[S]) -> String {
-        if self.terms.is_empty() {
-            return "0".into();
-        }
-        let mut out = String::new();
-        for (i, (m, c)) in self.terms.iter().enumerate() {
-            let neg = c.is_negative();
-            let a = c.abs();
-            if i == 0 {
-                if neg {
-                    out.push('-');
-                }
-            } else {
-                out.push_str(if neg { " - " } else { " + " });
-            }
-            let mono = fmt_monomial(m, names);
-            match (mono.is_empty(), a.is_one()) {
-                (true, _) => out.push_str(&fmt_q(&a)),
-                (false, true) => out.push_str(&mono),
-                (false, false) => {
-                    out.push_str(&fmt_q(&a));
-                    out.push('*');
-                    out.push_str(&mono);
-                }
-            }
-        }
-        out
+        print(&self.to_node(names), PrintOptions::TEXT)
     }
-}
 
-/// LaTeX name of a symbol: `k1` → `k_{1}`, `lambda` → `\\lambda`.
-pub fn latex_name(name: &str) -> String {
-    const GREEK: [&str; 12] = [
-        "alpha", "beta", "gamma", "delta", "kappa", "lambda", "mu", "nu", "sigma", "tau", "phi",
-        "omega",
-    ];
-    let split = name
-        .find(|c: char| c.is_ascii_digit())
-        .unwrap_or(name.len());
-    let (head, digits) = name.split_at(split);
-    let head = if GREEK.contains(&head) {
-        format!("\\{head}")
-    } else {
-        head.to_string()
-    };
-    if digits.is_empty() || !digits.chars().all(|c| c.is_ascii_digit()) {
-        if digits.is_empty() {
-            head
-        } else {
-            format!("\\mathit{{{name}}}")
-        }
-    } else {
-        format!("{head}_{{{digits}}}")
-    }
-}
-
-impl MPoly {
     /// LaTeX form with the given variable names, e.g. `k_{1} k_{4} - k_{2} k_{3}`.
     pub fn to_latex_with<S: AsRef<str>>(&self, names: &[S]) -> String {
-        if self.terms.is_empty() {
-            return "0".into();
-        }
-        let mut out = String::new();
-        for (i, (m, c)) in self.terms.iter().enumerate() {
-            let neg = c.is_negative();
-            if i == 0 {
-                if neg {
-                    out.push('-');
-                }
-            } else {
-                out.push_str(if neg { " - " } else { " + " });
-            }
-            let a = c.abs();
-            let mono: Vec<String> = m
-                .iter()
-                .enumerate()
-                .filter(|(_, e)| **e > 0)
-                .map(|(v, &e)| {
-                    let n = latex_name(names.get(v).map(|s| s.as_ref()).unwrap_or("s"));
-                    if e == 1 { n } else { format!("{n}^{{{e}}}") }
-                })
-                .collect();
-            if mono.is_empty() || !a.is_one() {
-                out.push_str(&super::rational::latex_q(&a));
-                if !mono.is_empty() {
-                    out.push(' ');
-                }
-            }
-            out.push_str(&mono.join(" "));
-        }
-        out
+        print(&self.to_node(names), PrintOptions::LATEX)
     }
 }
 
-fn fmt_monomial<S: AsRef<str>>(m: &[u32], names: &[S]) -> String {
-    let mut parts = Vec::new();
-    for (v, &e) in m.iter().enumerate() {
-        let name = names
-            .get(v)
-            .map(|s| s.as_ref().to_string())
-            .unwrap_or_else(|| format!("s{v}"));
-        match e {
-            0 => {}
-            1 => parts.push(name),
-            _ => parts.push(format!("{name}^{e}")),
-        }
-    }
-    parts.join("*")
+/// The factors `name^e` of a monomial, in variable order.
+pub fn monomial_factors<S: AsRef<str>>(m: &[u32], names: &[S]) -> Vec<Node> {
+    m.iter()
+        .enumerate()
+        .filter(|(_, e)| **e > 0)
+        .map(|(v, &e)| {
+            let name = names
+                .get(v)
+                .map(|s| s.as_ref().to_string())
+                .unwrap_or_else(|| format!("s{v}"));
+            Node::pow_i(Node::Sym(name), i64::from(e))
+        })
+        .collect()
 }
 
 fn merge(a: &MPoly, b: &MPoly, negate_b: bool) -> MPoly {

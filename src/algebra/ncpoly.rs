@@ -5,8 +5,9 @@
 //! only that arithmetic; it must not know about files, operators' kernels or
 //! the elimination that uses it ([`super::eliminate`]).
 
-use super::mpoly::{MPoly, latex_name};
-use super::rational::{Q, fmt_q, latex_q};
+use super::mpoly::MPoly;
+use super::print::{Node, PrintOptions, print};
+use super::rational::Q;
 use num_traits::{One, Signed, Zero};
 use std::collections::{BTreeMap, BTreeSet};
 
@@ -209,44 +210,37 @@ impl NcPoly {
         acc.is_zero()
     }
 
+    /// The print tree: a signed sum of `coefficient*word` terms in the
+    /// order of [`NcPoly::terms`].
+    pub fn to_node<S: AsRef<str>>(&self, names: &[S]) -> Node {
+        Node::Terms(
+            self.terms()
+                .into_iter()
+                .map(|(w, c)| {
+                    let word = word_node(w, names);
+                    (
+                        c.is_negative(),
+                        Node::product(vec![Node::Num(c.abs()), word]),
+                    )
+                })
+                .collect(),
+        )
+    }
+
     /// Prints words with spaces between the factors, e.g. `k4 k1 - k2 k3`,
     /// runs of one symbol as powers (`k4^2`).
     pub fn to_string_with<S: AsRef<str>>(&self, names: &[S]) -> String {
-        self.render(|w| word_text(w, names), fmt_q, "*")
+        print(&self.to_node(names), PrintOptions::TEXT)
     }
 
     /// LaTeX form, e.g. `k_{4} k_{1} - k_{2} k_{3}`.
     pub fn to_latex_with<S: AsRef<str>>(&self, names: &[S]) -> String {
-        self.render(|w| word_latex(w, names), latex_q, " ")
+        print(&self.to_node(names), PrintOptions::LATEX)
     }
 
-    fn render(&self, word: impl Fn(&Word) -> String, num: fn(&Q) -> String, sep: &str) -> String {
-        let terms = self.terms();
-        if terms.is_empty() {
-            return "0".into();
-        }
-        let mut out = String::new();
-        for (i, (w, c)) in terms.into_iter().enumerate() {
-            let neg = c.is_negative();
-            out.push_str(match (i, neg) {
-                (0, true) => "-",
-                (0, false) => "",
-                (_, true) => " - ",
-                (_, false) => " + ",
-            });
-            let a = c.abs();
-            let ws = word(w);
-            match (ws.is_empty(), a.is_one()) {
-                (true, _) => out.push_str(&num(&a)),
-                (false, true) => out.push_str(&ws),
-                (false, false) => {
-                    out.push_str(&num(&a));
-                    out.push_str(sep);
-                    out.push_str(&ws);
-                }
-            }
-        }
-        out
+    /// The language's syntax, e.g. `k4*k1 - k2*k3` (parses back).
+    pub fn to_lmx_with<S: AsRef<str>>(&self, names: &[S]) -> String {
+        print(&self.to_node(names), PrintOptions::LMX)
     }
 }
 
@@ -282,28 +276,33 @@ fn name_of<S: AsRef<str>>(names: &[S], s: usize) -> String {
         .unwrap_or_else(|| format!("s{s}"))
 }
 
+/// The print tree of a word: runs of one symbol as powers (`k4^2 k3`).
+pub fn word_node<S: AsRef<str>>(w: &Word, names: &[S]) -> Node {
+    let mut fs: Vec<Node> = runs(w)
+        .into_iter()
+        .map(|(s, k)| Node::pow_i(Node::Sym(name_of(names, s)), k as i64))
+        .collect();
+    match fs.len() {
+        0 => Node::Num(Q::one()),
+        1 => fs.remove(0),
+        _ => Node::Word(fs),
+    }
+}
+
 /// A word as text: `k4 k1`, `k4^2 k3`.
 pub fn word_text<S: AsRef<str>>(w: &Word, names: &[S]) -> String {
-    runs(w)
-        .into_iter()
-        .map(|(s, k)| {
-            let n = name_of(names, s);
-            if k == 1 { n } else { format!("{n}^{k}") }
-        })
-        .collect::<Vec<_>>()
-        .join(" ")
+    if w.is_empty() {
+        return String::new();
+    }
+    print(&word_node(w, names), PrintOptions::TEXT)
 }
 
 /// A word in LaTeX: `k_{4} k_{1}`.
 pub fn word_latex<S: AsRef<str>>(w: &Word, names: &[S]) -> String {
-    runs(w)
-        .into_iter()
-        .map(|(s, k)| {
-            let n = latex_name(&name_of(names, s));
-            if k == 1 { n } else { format!("{n}^{{{k}}}") }
-        })
-        .collect::<Vec<_>>()
-        .join(" ")
+    if w.is_empty() {
+        return String::new();
+    }
+    print(&word_node(w, names), PrintOptions::LATEX)
 }
 
 /// The lexicographically least word equivalent to `w` when the pairs for

@@ -8,11 +8,12 @@
 //! files, kernels or printing beyond names borrowed for display.
 
 use super::matrix::Matrix;
-use super::mpoly::{MPoly, latex_name};
+use super::mpoly::MPoly;
 use super::ncpoly::NcPoly;
 use super::polyring::PolyRing;
+use super::print::{Node, PrintOptions, print};
 use super::ratfunc::{RatFunc, RatFuncField};
-use super::rational::{Q, fmt_q, latex_q};
+use super::rational::Q;
 use super::ring::{Field, Ring};
 use num_traits::{One, Signed, Zero};
 
@@ -230,57 +231,44 @@ impl NcExpr {
         Some(acc)
     }
 
+    /// The print tree: a signed sum of ordered products
+    /// `coefficient factor…`, a run of one symbol as a power, the inverse
+    /// of a symbol as `k4^-1` and of a sum as `(…)^-1`.
+    pub fn to_node<S: AsRef<str>>(&self, names: &[S]) -> Node {
+        Node::Terms(
+            self.terms
+                .iter()
+                .map(|(c, fs)| {
+                    let mut word = Vec::new();
+                    if !c.abs().is_one() || fs.is_empty() {
+                        word.push(Node::Num(c.abs()));
+                    }
+                    word.extend(factor_nodes(fs, names));
+                    let node = if word.len() == 1 {
+                        word.remove(0)
+                    } else {
+                        Node::Word(word)
+                    };
+                    (c.is_negative(), node)
+                })
+                .collect(),
+        )
+    }
+
     /// Text form: products by juxtaposition, `k4^-1` for the inverse of a
     /// symbol, `(…)^-1` otherwise: `k1 - k2 k4^-1 k3`.
     pub fn to_string_with<S: AsRef<str>>(&self, names: &[S]) -> String {
-        self.render(names, false)
+        print(&self.to_node(names), PrintOptions::TEXT)
     }
 
     /// LaTeX form: `k_{1} - k_{2} k_{4}^{-1} k_{3}`.
     pub fn to_latex_with<S: AsRef<str>>(&self, names: &[S]) -> String {
-        self.render(names, true)
+        print(&self.to_node(names), PrintOptions::LATEX)
     }
 
-    fn render<S: AsRef<str>>(&self, names: &[S], latex: bool) -> String {
-        if self.terms.is_empty() {
-            return "0".into();
-        }
-        let mut out = String::new();
-        for (i, (c, fs)) in self.terms.iter().enumerate() {
-            out.push_str(match (i, c.is_negative()) {
-                (0, true) => "-",
-                (0, false) => "",
-                (_, true) => " - ",
-                (_, false) => " + ",
-            });
-            let a = c.abs();
-            let prod = render_factors(fs, names, latex);
-            let num = if latex { latex_q(&a) } else { fmt_q(&a) };
-            match (prod.is_empty(), a.is_one()) {
-                (true, _) => out.push_str(&num),
-                (false, true) => out.push_str(&prod),
-                (false, false) => {
-                    out.push_str(&num);
-                    out.push(' ');
-                    out.push_str(&prod);
-                }
-            }
-        }
-        out
-    }
-
-    /// The text form, parenthesised if it is a sum (for use as a factor).
-    pub fn grouped<S: AsRef<str>>(&self, names: &[S], latex: bool) -> String {
-        let s = self.render(names, latex);
-        if self.terms.len() > 1 {
-            if latex {
-                format!("\\left({s}\\right)")
-            } else {
-                format!("({s})")
-            }
-        } else {
-            s
-        }
+    /// The language's syntax: `k1 - k2*k4^(-1)*k3`.
+    pub fn to_lmx_with<S: AsRef<str>>(&self, names: &[S]) -> String {
+        print(&self.to_node(names), PrintOptions::LMX)
     }
 }
 
@@ -303,15 +291,16 @@ fn cancel_inverses(fs: Vec<Factor>) -> Vec<Factor> {
     out
 }
 
-fn render_factors<S: AsRef<str>>(fs: &[Factor], names: &[S], latex: bool) -> String {
+fn factor_nodes<S: AsRef<str>>(fs: &[Factor], names: &[S]) -> Vec<Node> {
     let name = |i: usize| {
-        let n = names
-            .get(i)
-            .map(|s| s.as_ref().to_string())
-            .unwrap_or_else(|| format!("s{i}"));
-        if latex { latex_name(&n) } else { n }
+        Node::Sym(
+            names
+                .get(i)
+                .map(|s| s.as_ref().to_string())
+                .unwrap_or_else(|| format!("s{i}")),
+        )
     };
-    let mut parts: Vec<String> = Vec::new();
+    let mut parts: Vec<Node> = Vec::new();
     let mut k = 0;
     while k < fs.len() {
         match &fs[k] {
@@ -320,35 +309,20 @@ fn render_factors<S: AsRef<str>>(fs: &[Factor], names: &[S], latex: bool) -> Str
                 while fs.get(k + run) == Some(&Factor::Sym(*i)) {
                     run += 1;
                 }
-                parts.push(match (run, latex) {
-                    (1, _) => name(*i),
-                    (r, false) => format!("{}^{r}", name(*i)),
-                    (r, true) => format!("{}^{{{r}}}", name(*i)),
-                });
+                parts.push(Node::pow_i(name(*i), run as i64));
                 k += run;
             }
             Factor::Inv(e) => {
                 let inner = match e.as_scaled_symbol() {
                     Some((c, i)) if c.is_one() => name(i),
-                    _ => {
-                        let s = e.render(names, latex);
-                        if latex {
-                            format!("\\left({s}\\right)")
-                        } else {
-                            format!("({s})")
-                        }
-                    }
+                    _ => e.to_node(names),
                 };
-                parts.push(if latex {
-                    format!("{inner}^{{-1}}")
-                } else {
-                    format!("{inner}^-1")
-                });
+                parts.push(Node::pow_i(inner, -1));
                 k += 1;
             }
         }
     }
-    parts.join(" ")
+    parts
 }
 
 /// One pivot of the elimination: unknown `unknown` was solved from
@@ -597,49 +571,68 @@ impl OrderedElimination {
         self.render(names, unknown, true)
     }
 
-    fn render<S: AsRef<str>>(&self, names: &[S], unknown: &str, latex: bool) -> String {
+    /// The print tree of the equation `lhs u = Σ rhs_j g_j`.
+    pub fn to_node<S: AsRef<str>>(&self, names: &[S], unknown: &str) -> Node {
+        let u = Node::sym(unknown);
         let lhs = match self.lhs.as_constant() {
-            Some(c) if c.is_one() => unknown.to_string(),
-            _ => format!("{} {unknown}", self.lhs.grouped(names, latex)),
+            Some(c) if c.is_one() => u,
+            _ => Node::Apply(Box::new(self.lhs.to_node(names)), Box::new(u)),
         };
-        let mut out = String::new();
+        let mut terms = Vec::new();
         for (j, r) in self.rhs.iter().enumerate() {
             if r.is_zero() {
                 continue;
             }
-            let g = if latex {
-                format!("g_{{{}}}", j + 1)
-            } else {
-                format!("g{}", j + 1)
+            let g = Node::Sym(format!("g{}", j + 1));
+            let (neg, body) = match r.to_node(names) {
+                Node::Terms(mut ts) if ts.len() == 1 => ts.remove(0),
+                sum => (false, sum),
             };
-            let (neg, body) = if r.len() == 1 {
-                let neg = r.terms[0].0.is_negative();
-                let pos = if neg { r.neg() } else { r.clone() };
-                (neg, pos.render(names, latex))
-            } else {
-                (false, r.grouped(names, latex))
+            let term = match body {
+                Node::Num(c) if c.is_one() => g,
+                Node::Word(mut fs) => {
+                    fs.push(g);
+                    Node::Word(fs)
+                }
+                other => Node::Word(vec![other, g]),
             };
-            let term = if body == "1" {
-                g
-            } else {
-                format!("{body} {g}")
-            };
-            out.push_str(match (out.is_empty(), neg) {
-                (true, true) => "-",
-                (true, false) => "",
-                (false, true) => " - ",
-                (false, false) => " + ",
-            });
-            out.push_str(&term);
+            terms.push((neg, term));
         }
-        if out.is_empty() {
-            out.push('0');
-        }
-        format!("{lhs} = {out}")
+        Node::Equation(Box::new(lhs), Box::new(Node::Terms(terms)))
+    }
+
+    fn render<S: AsRef<str>>(&self, names: &[S], unknown: &str, latex: bool) -> String {
+        let opts = if latex {
+            PrintOptions::LATEX
+        } else {
+            PrintOptions::TEXT
+        };
+        print(&self.to_node(names, unknown), opts)
+    }
+
+    /// The equation in the language's syntax:
+    /// `(k1 - k2*k4^(-1)*k3) p = g1 - k2*k4^(-1)*g2`.
+    pub fn to_lmx_with<S: AsRef<str>>(&self, names: &[S], unknown: &str) -> String {
+        print(&self.to_node(names, unknown), PrintOptions::LMX)
     }
 
     /// The distinct inverses the result uses, as text (`k4^-1`).
     pub fn required_inverses<S: AsRef<str>>(&self, names: &[S]) -> Vec<String> {
+        self.inverse_nodes(names)
+            .iter()
+            .map(|n| print(n, PrintOptions::TEXT))
+            .collect()
+    }
+
+    /// The distinct inverses in the language's syntax (`k4^(-1)`).
+    pub fn required_inverses_lmx<S: AsRef<str>>(&self, names: &[S]) -> Vec<String> {
+        self.inverse_nodes(names)
+            .iter()
+            .map(|n| print(n, PrintOptions::LMX))
+            .collect()
+    }
+
+    fn inverse_nodes<S: AsRef<str>>(&self, names: &[S]) -> Vec<Node> {
         let mut all = self.lhs.inverses();
         for r in &self.rhs {
             for x in r.inverses() {
@@ -649,7 +642,7 @@ impl OrderedElimination {
             }
         }
         all.iter()
-            .map(|e| format!("{}^-1", e.grouped(names, false)))
+            .map(|e| Node::pow_i(e.to_node(names), -1))
             .collect()
     }
 

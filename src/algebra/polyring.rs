@@ -4,6 +4,7 @@
 
 use super::gcd::gcd;
 use super::mpoly::MPoly;
+use super::print::Node;
 use super::ring::{GcdDomain, Ring};
 
 /// Q[names...] with a fixed variable order.
@@ -50,11 +51,8 @@ impl Ring for PolyRing {
     fn is_unit(&self, a: &MPoly) -> bool {
         a.is_nonzero_constant()
     }
-    fn format(&self, a: &MPoly) -> String {
-        a.to_string_with(&self.names)
-    }
-    fn latex(&self, a: &MPoly) -> String {
-        a.to_latex_with(&self.names)
+    fn node(&self, a: &MPoly) -> Node {
+        a.to_node(&self.names)
     }
     fn is_negative(&self, a: &MPoly) -> bool {
         a.leading()

@@ -329,11 +329,8 @@ impl Ring for QxRing {
         }
         QPoly::new(acc, l)
     }
-    fn format(&self, a: &QPoly) -> String {
-        self.printer().format(&a.to_upoly())
-    }
-    fn latex(&self, a: &QPoly) -> String {
-        self.printer().latex(&a.to_upoly())
+    fn node(&self, a: &QPoly) -> crate::algebra::print::Node {
+        self.printer().node(&a.to_upoly())
     }
     fn is_negative(&self, a: &QPoly) -> bool {
         a.num.last().is_some_and(|c| c.is_negative())

@@ -7,6 +7,7 @@
 
 use super::gcd::gcd_cofactors;
 use super::mpoly::MPoly;
+use super::print::Node;
 use super::rational::Q;
 use super::ring::{Field, Ring};
 use num_traits::One;
@@ -92,14 +93,6 @@ impl RatFuncField {
     }
 }
 
-fn wrap(s: String) -> String {
-    if s.contains(' ') || s.contains('*') {
-        format!("({s})")
-    } else {
-        s
-    }
-}
-
 impl Ring for RatFuncField {
     type Elem = RatFunc;
     fn zero(&self) -> RatFunc {
@@ -135,22 +128,16 @@ impl Ring for RatFuncField {
     fn is_unit(&self, a: &RatFunc) -> bool {
         !a.num.is_zero()
     }
-    fn format(&self, a: &RatFunc) -> String {
-        let n = self.format_poly(&a.num);
+    /// `num` or `num/den`, a leading minus of the numerator in front of
+    /// the whole fraction: `-(k1 + 1)/k1`.
+    fn node(&self, a: &RatFunc) -> Node {
+        let num = a.num.to_node(&self.names);
         if a.is_polynomial() {
-            n
-        } else {
-            let n = if n.contains(' ') { format!("({n})") } else { n };
-            format!("{n}/{}", wrap(self.format_poly(&a.den)))
+            return num;
         }
-    }
-    fn latex(&self, a: &RatFunc) -> String {
-        let n = a.num.to_latex_with(&self.names);
-        if a.is_polynomial() {
-            n
-        } else {
-            format!("\\frac{{{n}}}{{{}}}", a.den.to_latex_with(&self.names))
-        }
+        let (neg, n) = num.split_sign();
+        let q = Node::Div(Box::new(n), Box::new(a.den.to_node(&self.names)));
+        if neg { Node::Terms(vec![(true, q)]) } else { q }
     }
     fn is_negative(&self, a: &RatFunc) -> bool {
         a.num

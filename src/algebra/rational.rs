@@ -2,6 +2,7 @@
 //! object, plus the small helpers every other algebra module uses to build
 //! and print rationals. Nothing here knows about polynomials.
 
+use super::print::{Node, PrintOptions, print};
 use super::ring::{Field, Ring};
 use num_bigint::BigInt;
 use num_integer::Integer;
@@ -23,21 +24,12 @@ pub fn qi(n: i64) -> Q {
 
 /// Prints `a` as `n` or `n/d`.
 pub fn fmt_q(a: &Q) -> String {
-    if a.denom().is_one() {
-        a.numer().to_string()
-    } else {
-        format!("{}/{}", a.numer(), a.denom())
-    }
+    print(&Node::Num(a.clone()), PrintOptions::TEXT)
 }
 
 /// LaTeX form of `a`: `n` or `\frac{n}{d}` (with the sign in front).
 pub fn latex_q(a: &Q) -> String {
-    if a.denom().is_one() {
-        a.numer().to_string()
-    } else {
-        let sign = if a.is_negative() { "-" } else { "" };
-        format!("{sign}\\frac{{{}}}{{{}}}", a.numer().abs(), a.denom())
-    }
+    print(&Node::Num(a.clone()), PrintOptions::LATEX)
 }
 
 /// The unit `u > 0` such that `u * c` are coprime integers for all `c` in
@@ -93,11 +85,8 @@ impl Ring for Rationals {
     fn is_one(&self, a: &Q) -> bool {
         a.is_one()
     }
-    fn format(&self, a: &Q) -> String {
-        fmt_q(a)
-    }
-    fn latex(&self, a: &Q) -> String {
-        latex_q(a)
+    fn node(&self, a: &Q) -> Node {
+        Node::Num(a.clone())
     }
     fn is_negative(&self, a: &Q) -> bool {
         a.is_negative()

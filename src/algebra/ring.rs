@@ -4,6 +4,7 @@
 //! `Matrix<R>` type serves Q, Q[x], Q[s1..sn] and Q(others)[λ]. This module
 //! only states the contracts; implementations live with their element types.
 
+use super::print::{Node, PrintOptions, print};
 use std::fmt::Debug;
 
 /// A commutative ring with one, given as an object that knows how to operate
@@ -47,10 +48,21 @@ pub trait Ring: Clone + Debug {
     }
     /// Whether `a` is invertible in this ring.
     fn is_unit(&self, a: &Self::Elem) -> bool;
-    /// Human-readable form of an element (expanded, highest degree first).
-    fn format(&self, a: &Self::Elem) -> String;
+    /// The print tree of an element (expanded, highest degree first): the
+    /// one source of [`Ring::format`], [`Ring::latex`] and [`Ring::lmx`].
+    fn node(&self, a: &Self::Elem) -> Node;
+    /// Human-readable form of an element.
+    fn format(&self, a: &Self::Elem) -> String {
+        print(&self.node(a), PrintOptions::TEXT)
+    }
     /// LaTeX form of an element.
-    fn latex(&self, a: &Self::Elem) -> String;
+    fn latex(&self, a: &Self::Elem) -> String {
+        print(&self.node(a), PrintOptions::LATEX)
+    }
+    /// The element in the language's syntax (parses back to it).
+    fn lmx(&self, a: &Self::Elem) -> String {
+        print(&self.node(a), PrintOptions::LMX)
+    }
     /// Whether the printed form of `a` starts with a minus sign (used to
     /// print sums as `a - b` rather than `a + -b`).
     fn is_negative(&self, _a: &Self::Elem) -> bool {

@@ -3,6 +3,7 @@
 //! symbol, K = Q(others) for a principal symbol). Owns the coefficient
 //! vectors, long division and printing; knows nothing of matrices.
 
+use super::print::Node;
 use super::ring::{EuclideanDomain, Field, GcdDomain, Ring};
 
 /// A polynomial `Σ c[k] λ^k`, coefficients low degree first, no trailing
@@ -67,59 +68,24 @@ impl<K: Field> UPolyRing<K> {
         a.0.last().cloned().unwrap_or_else(|| self.k.zero())
     }
 
-    fn term(&self, c: &K::Elem, k: usize, latex: bool) -> (bool, String) {
-        let neg = self.k.is_negative(c);
-        let c = if neg { self.k.neg(c) } else { c.clone() };
-        let s = if latex {
-            self.k.latex(&c)
-        } else {
-            self.k.format(&c)
-        };
-        let var = if latex {
-            super::mpoly::latex_name(&self.var)
-        } else {
-            self.var.clone()
-        };
-        let power = match (k, latex) {
-            (0, _) => String::new(),
-            (1, _) => var,
-            (_, false) => format!("{var}^{k}"),
-            (_, true) => format!("{var}^{{{k}}}"),
-        };
-        let body = if power.is_empty() {
-            s
-        } else if self.k.is_one(&c) {
-            power
-        } else if latex {
-            if s.contains(' ') {
-                format!("\\left({s}\\right) {power}")
-            } else {
-                format!("{s} {power}")
-            }
-        } else if s.contains(' ') {
-            format!("({s})*{power}")
-        } else {
-            format!("{s}*{power}")
-        };
-        (neg, body)
-    }
-
-    fn render(&self, a: &UPoly<K::Elem>, latex: bool) -> String {
-        let mut out = String::new();
-        for (k, c) in a.0.iter().enumerate().rev() {
-            if self.k.is_zero(c) {
-                continue;
-            }
-            let (neg, body) = self.term(c, k, latex);
-            match (out.is_empty(), neg) {
-                (true, true) => out.push('-'),
-                (true, false) => {}
-                (false, true) => out.push_str(" - "),
-                (false, false) => out.push_str(" + "),
-            }
-            out.push_str(&body);
+    /// The term `c·var^k` as `(negative, magnitude)`: a sign of the
+    /// coefficient is taken out, a sum keeps its parentheses through the
+    /// printer (`(k1 + 1)*k4`), a fraction is grouped (`(1/k1)*k4^2`).
+    fn term_node(&self, c: &K::Elem, k: usize) -> (bool, Node) {
+        let (neg, mag) = self.k.node(c).split_sign();
+        if k == 0 {
+            return (neg, mag);
         }
-        if out.is_empty() { "0".into() } else { out }
+        let power = Node::pow_i(Node::Sym(self.var.clone()), k as i64);
+        let coeff = match mag {
+            Node::Terms(mut ts) if ts.len() == 1 && !ts[0].0 => ts.remove(0).1,
+            other => other,
+        };
+        let coeff = match coeff {
+            Node::Div(..) => Node::Group(Box::new(coeff)),
+            other => other,
+        };
+        (neg, Node::product(vec![coeff, power]))
     }
 }
 
@@ -177,11 +143,15 @@ impl<K: Field> Ring for UPolyRing<K> {
     fn is_unit(&self, a: &Self::Elem) -> bool {
         a.0.len() == 1
     }
-    fn format(&self, a: &Self::Elem) -> String {
-        self.render(a, false)
-    }
-    fn latex(&self, a: &Self::Elem) -> String {
-        self.render(a, true)
+    fn node(&self, a: &Self::Elem) -> Node {
+        Node::Terms(
+            a.0.iter()
+                .enumerate()
+                .rev()
+                .filter(|(_, c)| !self.k.is_zero(c))
+                .map(|(k, c)| self.term_node(c, k))
+                .collect(),
+        )
     }
     fn is_negative(&self, a: &Self::Elem) -> bool {
         a.0.last().is_some_and(|c| self.k.is_negative(c))

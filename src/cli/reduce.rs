@@ -138,7 +138,11 @@ pub fn print_reduction(r: &Reduction, out: &OutputArgs, w: &mut dyn Write) -> Re
     Ok(())
 }
 
-/// The JSON object of a reduction.
+/// The JSON object of a reduction. Every formula in it is in the
+/// language's syntax and parses back with [`crate::lang::formula`] (ring
+/// elements) or the language's expression grammar (right sides `value`),
+/// except the display strings `eliminant.text` (with `op[value]`
+/// applications) and `expanded` (iterated integrals), which are prose.
 pub fn to_json(r: &Reduction) -> Value {
     let rhs: Vec<Value> = r
         .rhs
@@ -147,8 +151,8 @@ pub fn to_json(r: &Reduction) -> Value {
         .collect();
     let (ordered, ordered_inverses, ordered_pivots) = match &r.ordered {
         Ok(o) => (
-            Value::String(o.text.clone()),
-            json!(o.inverses),
+            Value::String(o.lmx.clone()),
+            json!(o.inverses_lmx),
             json!(o.pivots),
         ),
         Err(e) => (Value::Null, json!([]), json!([e])),
@@ -163,9 +167,9 @@ pub fn to_json(r: &Reduction) -> Value {
             "lhs": r.lhs,
             "rhs": rhs,
             "text": r.eliminant_text(),
-            "lhs_ordered": r.lhs_ordered,
+            "lhs_ordered": r.lhs_ordered_lmx,
             "removed_factor": r.removed_factor,
-            "dropped": r.dropped.iter().map(|(c, u)| json!({"operator": c, "unknown": u})).collect::<Vec<_>>(),
+            "dropped": r.dropped.iter().zip(&r.dropped_lmx).map(|((_, u), c)| json!({"operator": c, "unknown": u})).collect::<Vec<_>>(),
         }),
     };
     json!({

@@ -10,7 +10,9 @@
 //!   with a span, and the [`scope`] (name table, parameter values);
 //! * [`diagnostics`]: [`LangErrors`], the only place that formats line:column;
 //! * [`lower`]: validated AST → span-free [`Program`] (see [`crate::system`]);
-//! * [`pretty`]: [`Program`] → source text that parses back to it.
+//! * [`pretty`]: [`Program`] → source text that parses back to it;
+//! * [`formula`]: one printed formula → the exact value it stands for
+//!   (polynomial, rational function, ordered operator expression).
 //!
 //! # The language
 //!
@@ -67,6 +69,7 @@
 pub mod ast;
 pub mod diagnostics;
 pub mod error;
+pub mod formula;
 pub mod keywords;
 pub mod lower;
 pub mod lower_contact;

@@ -77,6 +77,30 @@ pub fn parse_file(src: &str) -> Result<File, LangError> {
     Ok(File { statements })
 }
 
+/// Parses one expression on its own (the `formula` rule): the syntax of a
+/// printed formula, before any meaning is given to its names.
+pub fn parse_formula(src: &str) -> Result<Expr, LangError> {
+    check_nesting(src)?;
+    let mut pairs = match LmxParser::parse(Rule::formula, src) {
+        Ok(pairs) => pairs,
+        Err(_) => {
+            pest::set_error_detail(true);
+            return Err(match LmxParser::parse(Rule::formula, src) {
+                Err(e) => syntax_error(&e, src),
+                Ok(_) => internal(Span::default(), "the parser changed its mind"),
+            });
+        }
+    };
+    let formula = pairs
+        .next()
+        .ok_or_else(|| internal(Span::default(), "empty formula"))?;
+    let inner = formula
+        .into_inner()
+        .find(|p| p.as_rule() == Rule::expr)
+        .ok_or_else(|| internal(Span::default(), "no expression"))?;
+    expr(inner)
+}
+
 fn span_of(pair: &Pair<'_, Rule>) -> Span {
     let s = pair.as_span();
     Span::new(s.start(), s.end())

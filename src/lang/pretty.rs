@@ -6,40 +6,13 @@
 
 use std::fmt::Write;
 
-use num_traits::{One, Signed};
+use num_traits::One;
 
-use crate::algebra::ncpoly::word_text;
-use crate::algebra::rational::fmt_q;
+use crate::algebra::print::{Node, PrintOptions, print};
+
 use crate::system::{
-    Directive, Expr, FunctionalTerm, Limit, MatrixDef, NcPoly, OperatorDef, Program, Term,
+    Directive, Expr, FunctionalTerm, Limit, MatrixDef, OperatorDef, Program, Term,
 };
-
-/// An ordered operator in source syntax: `k2*k1 - 1/3*k4^2*k3` (products
-/// in the order they are applied from the left, as written).
-fn operator_source(c: &NcPoly, names: &[String]) -> String {
-    let mut out = String::new();
-    for (i, (w, k)) in c.terms().into_iter().enumerate() {
-        out.push_str(match (i, k.is_negative()) {
-            (0, true) => "-",
-            (0, false) => "",
-            (_, true) => " - ",
-            (_, false) => " + ",
-        });
-        let a = k.abs();
-        let word = word_text(w, names).replace(' ', "*");
-        match (word.is_empty(), a.is_one()) {
-            (true, _) => out.push_str(&fmt_q(&a)),
-            (false, true) => out.push_str(&word),
-            (false, false) => {
-                let _ = write!(out, "{}*{word}", fmt_q(&a));
-            }
-        }
-    }
-    if out.is_empty() {
-        out.push('0');
-    }
-    out
-}
 
 /// An interval in source syntax.
 fn interval(d: &crate::system::contact::Interval, slots: &[String]) -> String {
@@ -164,32 +137,31 @@ pub fn pretty(program: &Program) -> String {
         let _ = writeln!(out, "unknown {}{domain}", program.unknowns.join(", "));
     }
     for (i, eq) in program.equations.iter().enumerate() {
-        let mut terms: Vec<String> = eq
+        let terms: Vec<(bool, Node)> = eq
             .lhs
             .iter()
             .zip(&program.unknowns)
             .filter(|(c, _)| !c.is_zero())
             .map(|(c, u)| {
-                let single_positive =
-                    c.terms().len() == 1 && c.terms().first().is_some_and(|(_, k)| k.is_positive());
-                if c.as_constant().is_some_and(|v| v.is_one()) {
-                    u.clone()
-                } else if single_positive {
-                    format!("{} {u}", operator_source(c, names))
-                } else {
-                    format!("({}) {u}", operator_source(c, names))
-                }
+                let (neg, op) = c.to_node(names).split_sign();
+                let term = match op {
+                    Node::Num(v) if v.is_one() => Node::sym(u),
+                    op => Node::Apply(Box::new(op), Box::new(Node::sym(u))),
+                };
+                (neg, term)
             })
             .collect();
-        if terms.is_empty() {
+        let lhs = if terms.is_empty() {
             let first = program.unknowns.first().map_or("p", String::as_str);
-            terms.push(format!("0 {first}"));
-        }
+            format!("0 {first}")
+        } else {
+            print(&Node::Terms(terms), PrintOptions::LMX)
+        };
         let domain = match c.equation_domains.get(i) {
             Some(Some(d)) => format!(" on {}", interval(d, &slots)),
             _ => String::new(),
         };
-        let _ = writeln!(out, "equation {} = {}{domain}", terms.join(" + "), eq.rhs);
+        let _ = writeln!(out, "equation {lhs} = {}{domain}", eq.rhs);
     }
     contact(program, &slots, &mut out);
     for o in &program.outputs {
@@ -236,7 +208,7 @@ fn matrix(m: &MatrixDef, names: &[String]) -> String {
         .chunks(m.cols)
         .map(|row| {
             row.iter()
-                .map(|e| e.to_string_with(names))
+                .map(|e| print(&e.to_node(names), PrintOptions::LMX))
                 .collect::<Vec<_>>()
                 .join(", ")
         })

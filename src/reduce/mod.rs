@@ -84,10 +84,14 @@ pub struct OrderedForm {
     pub text: String,
     /// LaTeX form.
     pub latex: String,
+    /// The language's syntax: `(k1 - k2*k4^(-1)*k3) p = g1 - k2*k4^(-1)*g2`.
+    pub lmx: String,
     /// `g1 = 1, g2 = 0`.
     pub right_sides: Vec<(String, String)>,
     /// The inverses the result needs (`k4^-1`).
     pub inverses: Vec<String>,
+    /// The same inverses in the language's syntax (`k4^(-1)`).
+    pub inverses_lmx: Vec<String>,
     /// Pivot steps, e.g. `q from equation 2 (pivot k4)`.
     pub pivots: Vec<String>,
     /// Whether the commutative image agrees with Cramer's rule.
@@ -123,10 +127,14 @@ pub struct Reduction {
     pub lhs_latex: String,
     /// The left side operator in the derivation's order (`k4 k1 - k2 k3`).
     pub lhs_ordered: String,
+    /// The same in the language's syntax (`k4*k1 - k2*k3`).
+    pub lhs_ordered_lmx: String,
     /// Right side terms (nonzero operators only).
     pub rhs: Vec<RhsTerm>,
     /// Dropped terms: `(ordered coefficient, unknown)`.
     pub dropped: Vec<(String, String)>,
+    /// The dropped coefficients in the language's syntax, in the same order.
+    pub dropped_lmx: Vec<String>,
     /// The expanded form, or why there is none.
     pub expanded: Result<Expanded, String>,
     /// The ordered elimination, or why there is none.
@@ -258,11 +266,17 @@ pub fn reduce_with(p: &Program, d: &Derivation) -> Result<Reduction, ReduceError
         lhs: fmt(&e.lhs),
         lhs_latex: e.lhs.to_latex_with(names),
         lhs_ordered: e.lhs_ordered.to_string_with(names),
+        lhs_ordered_lmx: e.lhs_ordered.to_lmx_with(names),
         rhs,
         dropped: e
             .dropped
             .iter()
             .map(|(k, c)| (c.to_string_with(names), p.unknowns[*k].clone()))
+            .collect(),
+        dropped_lmx: e
+            .dropped
+            .iter()
+            .map(|(_, c)| c.to_lmx_with(names))
             .collect(),
         expanded,
         ordered,
@@ -300,6 +314,7 @@ fn ordered_form(
         Ok(o) => Ok(OrderedForm {
             text: o.to_string_with(names, uname),
             latex: o.to_latex_with(names, uname),
+            lmx: o.to_lmx_with(names, uname),
             right_sides: p
                 .equations
                 .iter()
@@ -307,6 +322,7 @@ fn ordered_form(
                 .map(|(j, eq)| (format!("g{}", j + 1), eq.rhs.to_string()))
                 .collect(),
             inverses: o.required_inverses(names),
+            inverses_lmx: o.required_inverses_lmx(names),
             pivots: o
                 .pivots
                 .iter()
@@ -354,8 +370,10 @@ fn refused(
         lhs: String::new(),
         lhs_latex: String::new(),
         lhs_ordered: String::new(),
+        lhs_ordered_lmx: String::new(),
         rhs: Vec::new(),
         dropped: Vec::new(),
+        dropped_lmx: Vec::new(),
         expanded: Err(why.clone()),
         ordered,
         eliminant_refused: Some(why),

@@ -2,13 +2,15 @@
 //! integration variable `t`: kernels, multipliers, right sides and output
 //! weights. Parameters are already replaced by their exact values and every
 //! rational subexpression is folded into one [`Expr::Const`]. This module owns
-//! the tree, its evaluation at a point and its printing in source syntax; it
+//! the tree, its evaluation at a point and its print tree (laid out by [`crate::algebra::print`]) in source syntax; it
 //! must not parse, and compiling trees to closures is the numerics' job.
 
 use std::fmt;
 
+use crate::algebra::print::{Node, PrintOptions, print};
+
 use num_rational::BigRational;
-use num_traits::{Signed, ToPrimitive, Zero};
+use num_traits::{Signed, ToPrimitive};
 
 /// A built-in function of one argument.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -203,134 +205,25 @@ impl Expr {
     /// LaTeX form with the given names for `x` and `t`, e.g.
     /// `\frac{x}{\sqrt{t^{2} - x^{2}}}`.
     pub fn to_latex_vars(&self, x: &str, t: &str) -> String {
-        let sub = |e: &Expr, min: u8| {
-            let s = e.to_latex_vars(x, t);
-            if e.prec() < min {
-                format!("\\left({s}\\right)")
-            } else {
-                s
-            }
-        };
+        print(&self.to_node_vars(x, t), PrintOptions::LATEX)
+    }
+
+    /// The print tree, node for node (so the language form parses back to
+    /// the same tree), with the given names for `x` and `t`.
+    pub fn to_node_vars(&self, x: &str, t: &str) -> Node {
+        let b = |e: &Expr| Box::new(e.to_node_vars(x, t));
         match self {
-            Expr::Const(q) => {
-                let a = q.abs();
-                let body = if a.is_integer() {
-                    a.numer().to_string()
-                } else {
-                    format!("\\frac{{{}}}{{{}}}", a.numer(), a.denom())
-                };
-                if q.is_negative() {
-                    format!("-{body}")
-                } else {
-                    body
-                }
-            }
-            Expr::X => x.to_string(),
-            Expr::T => t.to_string(),
-            Expr::Pi => "\\pi".to_string(),
-            Expr::Neg(a) => format!("-{}", sub(a, 2)),
-            Expr::Add(a, b) => format!("{} + {}", sub(a, 1), sub(b, 2)),
-            Expr::Sub(a, b) => format!("{} - {}", sub(a, 1), sub(b, 2)),
-            Expr::Mul(a, b) => {
-                let sep = if matches!(**b, Expr::Const(_)) {
-                    " \\cdot "
-                } else {
-                    " "
-                };
-                format!("{}{sep}{}", sub(a, 2), sub(b, 3))
-            }
-            Expr::Div(a, b) => format!(
-                "\\frac{{{}}}{{{}}}",
-                a.to_latex_vars(x, t),
-                b.to_latex_vars(x, t)
-            ),
-            Expr::Pow(a, b) => {
-                let base = match **a {
-                    Expr::Call(Func::Sqrt, _) | Expr::Call(Func::Abs, _) => a.to_latex_vars(x, t),
-                    _ => sub(a, 5),
-                };
-                format!("{base}^{{{}}}", b.to_latex_vars(x, t))
-            }
-            Expr::Call(f, a) => {
-                let inner = a.to_latex_vars(x, t);
-                match f {
-                    Func::Sqrt => format!("\\sqrt{{{inner}}}"),
-                    Func::Ln => format!("\\ln\\left({inner}\\right)"),
-                    Func::Abs => format!("\\left|{inner}\\right|"),
-                    Func::Exp => format!("e^{{{inner}}}"),
-                }
-            }
-        }
-    }
-}
-
-/// Writes `e`, parenthesised if it binds looser than `min`.
-fn child(f: &mut fmt::Formatter<'_>, e: &Expr, min: u8, x: &str, t: &str) -> fmt::Result {
-    if e.prec() < min {
-        write!(f, "(")?;
-        write_expr(f, e, x, t)?;
-        write!(f, ")")
-    } else {
-        write_expr(f, e, x, t)
-    }
-}
-
-fn write_expr(f: &mut fmt::Formatter<'_>, e: &Expr, x: &str, t: &str) -> fmt::Result {
-    match e {
-        Expr::Const(q) => {
-            if q.is_zero() {
-                write!(f, "0")
-            } else if q.is_negative() {
-                // A negative constant prints as `-(…)`, which parses
-                // back as a negation and folds into the same constant.
-                let a = -q;
-                if a.is_integer() {
-                    write!(f, "-{}", a.numer())
-                } else {
-                    write!(f, "-{}/{}", a.numer(), a.denom())
-                }
-            } else if q.is_integer() {
-                write!(f, "{}", q.numer())
-            } else {
-                write!(f, "{}/{}", q.numer(), q.denom())
-            }
-        }
-        Expr::X => write!(f, "{x}"),
-        Expr::T => write!(f, "{t}"),
-        Expr::Pi => write!(f, "pi"),
-        Expr::Neg(a) => {
-            write!(f, "-")?;
-            child(f, a, 4, x, t)
-        }
-        Expr::Add(a, b) => {
-            child(f, a, 1, x, t)?;
-            write!(f, " + ")?;
-            child(f, b, 2, x, t)
-        }
-        Expr::Sub(a, b) => {
-            child(f, a, 1, x, t)?;
-            write!(f, " - ")?;
-            child(f, b, 2, x, t)
-        }
-        Expr::Mul(a, b) => {
-            child(f, a, 2, x, t)?;
-            write!(f, "*")?;
-            child(f, b, 4, x, t)
-        }
-        Expr::Div(a, b) => {
-            child(f, a, 2, x, t)?;
-            write!(f, "/")?;
-            child(f, b, 5, x, t)
-        }
-        Expr::Pow(a, b) => {
-            child(f, a, 5, x, t)?;
-            write!(f, "^")?;
-            child(f, b, 5, x, t)
-        }
-        Expr::Call(func, a) => {
-            write!(f, "{}(", func.name())?;
-            write_expr(f, a, x, t)?;
-            write!(f, ")")
+            Expr::Const(q) => Node::Num(q.clone()),
+            Expr::X => Node::sym(x),
+            Expr::T => Node::sym(t),
+            Expr::Pi => Node::sym("pi"),
+            Expr::Neg(a) => Node::Neg(b(a)),
+            Expr::Add(a0, a1) => Node::Add(b(a0), b(a1)),
+            Expr::Sub(a0, a1) => Node::Sub(b(a0), b(a1)),
+            Expr::Mul(a0, a1) => Node::Mul(vec![*b(a0), *b(a1)]),
+            Expr::Div(a0, a1) => Node::Div(b(a0), b(a1)),
+            Expr::Pow(a0, a1) => Node::Pow(b(a0), b(a1)),
+            Expr::Call(func, a) => Node::Call(func.name().to_string(), b(a)),
         }
     }
 }
@@ -339,13 +232,16 @@ fn write_expr(f: &mut fmt::Formatter<'_>, e: &Expr, x: &str, t: &str) -> fmt::Re
 /// `t/sqrt(t^2 - x^2)`, `-1/2*x`, `(1 - x)^(-1/2)`.
 impl fmt::Display for Expr {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write_expr(f, self, "x", "t")
+        f.write_str(&print(&self.to_node_vars("x", "t"), PrintOptions::LMX))
     }
 }
 
 impl fmt::Display for Renamed<'_> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write_expr(f, self.e, self.x, self.t)
+        f.write_str(&print(
+            &self.e.to_node_vars(self.x, self.t),
+            PrintOptions::LMX,
+        ))
     }
 }
 

@@ -1,6 +1,8 @@
 //! Chooses the honest Smith mode for a λ-matrix over Q[s1..sn], runs it,
 //! certifies it and turns the result into a [`SmithReport`] of printable
-//! strings (text and, on request, LaTeX). Also checks user-supplied
+//! strings: every formula in the language's syntax (which is also the text
+//! form, and parses back with [`crate::lang::formula`]) and, on request,
+//! LaTeX. Also checks user-supplied
 //! decompositions ([`check_decomposition`]). Owns the conversions between
 //! Q[all], Q[λ] and Q(others)[λ]; it must not print or know about files.
 
@@ -110,6 +112,11 @@ pub struct SmithReport {
     pub verified: bool,
     /// The certificate.
     pub certificate: Vec<Check>,
+    /// Principal mode only: each invariant factor as its coefficients in the
+    /// principal symbol, constant term first, each a rational function of
+    /// the other symbols in the language's syntax.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub invariant_factor_coefficients: Option<Vec<Vec<String>>>,
     /// The denominator-free form (principal mode only).
     pub denominator_free: Option<DenominatorFree>,
     /// LaTeX forms, when asked for.
@@ -186,11 +193,7 @@ pub fn smith_report(
 }
 
 fn rows_of<R: Ring>(m: &Matrix<R>, latex: bool) -> Rows {
-    if latex {
-        m.latex_rows()
-    } else {
-        m.format_rows()
-    }
+    if latex { m.latex_rows() } else { m.lmx_rows() }
 }
 
 fn fail_if_unverified(c: &Certificate) -> Result<(), SmithError> {
@@ -271,13 +274,14 @@ fn generic_report<R: crate::algebra::ring::EuclideanDomain>(
         mode_note: note,
         algorithm: algorithm.to_string(),
         a: rows_of(a_poly, false),
-        invariant_factors: inv.iter().map(|e| r.format(e)).collect(),
+        invariant_factors: inv.iter().map(|e| r.lmx(e)).collect(),
         rank: inv.len(),
         d: rows_of(&dec.d, false),
         u: Some(rows_of(&dec.u, false)),
         v: Some(rows_of(&dec.v, false)),
         verified: true,
         certificate: cert.checks,
+        invariant_factor_coefficients: None,
         denominator_free: None,
         latex,
     };
@@ -383,6 +387,12 @@ fn principal(
         opts,
         &check,
     )?;
+    report.invariant_factor_coefficients = Some(
+        dec.invariant_factors()
+            .iter()
+            .map(|f| f.coeffs().iter().map(|c| ap.ring.k.lmx(c)).collect())
+            .collect(),
+    );
     opts.progress.phase("denominator-free form over Q[all]");
     report.denominator_free = Some(denominator_free(a, &dec, p)?);
     Ok(report)
@@ -540,7 +550,7 @@ fn denominator_free(
     for (nm, mat) in [("U′", &u2), ("V′", &v2)] {
         let d = mat.det().expect("square");
         let ok = !d.is_zero() && !d.contains_var(p);
-        dets.push(pr.format(&d));
+        dets.push(pr.lmx(&d));
         checks.push(Check {
             property: format!("det {nm} ∈ Q[others] \\ {{0}}"),
             ok,
@@ -577,10 +587,10 @@ fn denominator_free(
     let kname = format!("Q[{}]", pr.names.join(", "));
     Ok(DenominatorFree {
         ring: kname,
-        d: dprim.format_rows(),
-        u: u2.format_rows(),
-        v: v2.format_rows(),
-        c: c.iter().map(|x| pr.format(x)).collect(),
+        d: dprim.lmx_rows(),
+        u: u2.lmx_rows(),
+        v: v2.lmx_rows(),
+        c: c.iter().map(|x| pr.lmx(x)).collect(),
         det_u: dets[0].clone(),
         det_v: dets[1].clone(),
         verified: true,
@@ -739,14 +749,15 @@ fn divisors_mode(
             "invariant factors over {} from determinantal divisors (d_k = gcd of the k×k minors, f_k = d_k/d_(k-1)); this ring is not a principal ideal domain, so a unimodular U, V with U·A·V = D need not exist and none is claimed; name a principal symbol (`principal s` or --principal s) for transforms",
             r.name()
         ),
-        a: a.format_rows(),
-        invariant_factors: dv.invariant.iter().map(|e| r.format(e)).collect(),
+        a: a.lmx_rows(),
+        invariant_factors: dv.invariant.iter().map(|e| r.lmx(e)).collect(),
         rank: dv.invariant.len(),
-        d: d.format_rows(),
+        d: d.lmx_rows(),
         u: None,
         v: None,
         verified: true,
         certificate: cert.checks,
+        invariant_factor_coefficients: None,
         denominator_free: None,
         latex,
     })
