@@ -34,6 +34,7 @@ const CASES: &[(&str, &str, &[&str])] = &[
     ("non_linear", "non_linear", &["solve", "{}"]),
     ("not_square", "not_square", &["solve", "{}"]),
     ("unsupported_kernel", "unsupported_kernel", &["solve", "{}"]),
+    ("missing_pv", "missing_pv", &["solve", "{}"]),
     (
         "right_side_not_finite",
         "right_side_not_finite",
