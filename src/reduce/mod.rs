@@ -17,10 +17,12 @@ use crate::algebra::eliminate::EliminateError;
 use crate::algebra::matrix::Matrix;
 use crate::algebra::mpoly::MPoly;
 use crate::algebra::polyring::PolyRing;
+use crate::algebra::print::{Node, PrintOptions, print};
 use crate::algebra::rational::fmt_q;
 use crate::algebra::smith::certify::Check;
 use crate::system::{Expr, Program};
 use expand::{Argument, ExpandError, ExpandedTerm, expand_word};
+use num_traits::One;
 
 /// Why a reduction could not be made.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
@@ -57,6 +59,9 @@ pub struct RhsTerm {
     pub value: String,
     /// LaTeX of the operator.
     pub operator_latex: String,
+    /// The operator's print tree: signs and grouping of the eliminant's
+    /// display are read off it, never off the printed strings.
+    pub operator_node: Node,
 }
 
 /// A symbol pair the eliminant commuted, with names.
@@ -125,6 +130,8 @@ pub struct Reduction {
     pub lhs: String,
     /// LaTeX of the left side operator.
     pub lhs_latex: String,
+    /// The print tree of the operator on the unknown (zero when refused).
+    pub lhs_node: Node,
     /// The left side operator in the derivation's order (`k4 k1 - k2 k3`).
     pub lhs_ordered: String,
     /// The same in the language's syntax (`k4*k1 - k2*k3`).
@@ -233,6 +240,7 @@ pub fn reduce_with(p: &Program, d: &Derivation) -> Result<Reduction, ReduceError
             equation: j + 1,
             value: p.equations[j].rhs.to_string(),
             operator_latex: c.to_latex_with(names),
+            operator_node: c.to_node(names),
         })
         .collect();
     let (invariant_factors, invariant_factors_latex, smith_checks) = match &e.smith {
@@ -265,6 +273,7 @@ pub fn reduce_with(p: &Program, d: &Derivation) -> Result<Reduction, ReduceError
         removed_factor: (!e.removed_factor.is_nonzero_constant()).then(|| fmt(&e.removed_factor)),
         lhs: fmt(&e.lhs),
         lhs_latex: e.lhs.to_latex_with(names),
+        lhs_node: e.lhs.to_node(names),
         lhs_ordered: e.lhs_ordered.to_string_with(names),
         lhs_ordered_lmx: e.lhs_ordered.to_lmx_with(names),
         rhs,
@@ -369,6 +378,7 @@ fn refused(
         removed_factor: None,
         lhs: String::new(),
         lhs_latex: String::new(),
+        lhs_node: Node::Terms(Vec::new()),
         lhs_ordered: String::new(),
         lhs_ordered_lmx: String::new(),
         rhs: Vec::new(),
@@ -451,23 +461,7 @@ fn expand_all(
 impl Reduction {
     /// `(k1*k4 - k2*k3) p = k4[1] - k2[0]`.
     pub fn eliminant_text(&self) -> String {
-        let lhs = apply(&self.lhs, &self.unknown, false, " ");
-        let mut rhs = String::new();
-        for t in &self.rhs {
-            let (neg, body) = strip_sign(&t.operator);
-            let term = if body == "1" {
-                format!("[{}]", t.value)
-            } else if is_single_term(body) {
-                format!("{body}[{}]", t.value)
-            } else {
-                format!("({body})[{}]", t.value)
-            };
-            push_signed(&mut rhs, neg && is_single_term(body), &term);
-        }
-        if rhs.is_empty() {
-            rhs.push('0');
-        }
-        format!("{lhs} = {rhs}")
+        self.eliminant_with(PrintOptions::TEXT)
     }
 
     /// How the eliminant was derived from the equations E1, E2, …:
@@ -475,34 +469,33 @@ impl Reduction {
     pub fn derivation_text(&self) -> String {
         let mut out = String::new();
         for t in &self.rhs {
-            let (neg, body) = strip_sign(&t.operator);
-            let term = if body == "1" {
-                format!("E{}", t.equation)
-            } else if is_single_term(body) {
-                format!("{body}·E{}", t.equation)
-            } else {
-                format!("({body})·E{}", t.equation)
+            let (neg, body) = coefficient(&t.operator_node, PrintOptions::TEXT);
+            let term = match body {
+                None => format!("E{}", t.equation),
+                Some(b) => format!("{b}·E{}", t.equation),
             };
-            push_signed(&mut out, neg && is_single_term(body), &term);
+            push_signed(&mut out, neg, &term);
         }
         out
     }
 
     /// LaTeX of [`Reduction::eliminant_text`].
     pub fn eliminant_latex(&self) -> String {
-        let lhs = apply(&self.lhs_latex, &self.unknown, true, " ");
+        self.eliminant_with(PrintOptions::LATEX)
+    }
+
+    /// `lhs u = ±op[g] ± …` in text or LaTeX.
+    fn eliminant_with(&self, opts: PrintOptions) -> String {
+        let unknown = print(&Node::sym(self.unknown.as_str()), opts);
+        let lhs = match coefficient(&self.lhs_node, opts) {
+            (neg, None) => format!("{}{unknown}", if neg { "-" } else { "" }),
+            (neg, Some(b)) => format!("{}{b} {unknown}", if neg { "-" } else { "" }),
+        };
         let mut rhs = String::new();
         for t in &self.rhs {
-            let (neg, body) = strip_sign(&t.operator_latex);
-            let value = t.value.clone();
-            let term = if body == "1" {
-                format!("[{value}]")
-            } else if is_single_term(body) {
-                format!("{body}[{value}]")
-            } else {
-                format!("\\left({body}\\right)[{value}]")
-            };
-            push_signed(&mut rhs, neg && is_single_term(body), &term);
+            let (neg, body) = coefficient(&t.operator_node, opts);
+            let term = format!("{}[{}]", body.unwrap_or_default(), t.value);
+            push_signed(&mut rhs, neg, &term);
         }
         if rhs.is_empty() {
             rhs.push('0');
@@ -511,16 +504,25 @@ impl Reduction {
     }
 }
 
-fn strip_sign(s: &str) -> (bool, &str) {
-    match s.strip_prefix('-') {
-        Some(r) if is_single_term(r) => (true, r),
-        _ => (false, s),
+/// A coefficient laid out before what it acts on, decided on its print
+/// tree: the sign is taken out of a single term (`-k2` → `-`, `k2`), a sum
+/// keeps its signs and is grouped (`(k1*k4 - k2*k3)`), and the body is
+/// `None` when it is 1.
+fn coefficient(node: &Node, opts: PrintOptions) -> (bool, Option<String>) {
+    if let Node::Terms(ts) = node
+        && ts.len() > 1
+    {
+        return (
+            false,
+            Some(print(&Node::Group(Box::new(node.clone())), opts)),
+        );
     }
-}
-
-/// Whether a printed polynomial is a single term (no top-level `+`/`-`).
-fn is_single_term(s: &str) -> bool {
-    !s.contains(" + ") && !s.contains(" - ")
+    let (neg, body) = match node {
+        Node::Terms(ts) if ts.len() == 1 => (ts[0].0, ts[0].1.clone()),
+        other => other.clone().split_sign(),
+    };
+    let one = matches!(&body, Node::Num(q) if q.is_one());
+    (neg, (!one).then(|| print(&body, opts)))
 }
 
 fn push_signed(out: &mut String, neg: bool, term: &str) {
@@ -531,17 +533,4 @@ fn push_signed(out: &mut String, neg: bool, term: &str) {
         (false, false) => " + ",
     });
     out.push_str(term);
-}
-
-/// `op u`, parenthesising a sum: `(k1*k4 - k2*k3) p`, `k1 p`, `p`.
-fn apply(op: &str, unknown: &str, latex: bool, sep: &str) -> String {
-    if op == "1" {
-        unknown.to_string()
-    } else if is_single_term(op) {
-        format!("{op}{sep}{unknown}")
-    } else if latex {
-        format!("\\left({op}\\right){sep}{unknown}")
-    } else {
-        format!("({op}){sep}{unknown}")
-    }
 }
