@@ -331,31 +331,4 @@ impl Validator {
         }
         self.real_expr(rhs, false);
     }
-
-    fn unknown_ref(&mut self, id: &Ident) {
-        match self.scope.get(&id.name) {
-            Some(Entry {
-                sort: Sort::Unknown(_),
-                ..
-            }) => {}
-            Some(en) => self.err(
-                LangError::new(
-                    ErrorKind::WrongSort,
-                    format!("`{}` is {}, not an unknown", id.name, en.sort.word()),
-                    id.span,
-                    "not an unknown",
-                )
-                .with_related(en.span, "declared here"),
-            ),
-            None => self.err(
-                LangError::new(
-                    ErrorKind::Undeclared,
-                    format!("undeclared unknown `{}`", id.name),
-                    id.span,
-                    "not declared",
-                )
-                .with_help(format!("declare it with `unknown {}`", id.name)),
-            ),
-        }
-    }
 }

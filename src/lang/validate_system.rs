@@ -619,6 +619,12 @@ impl Validator {
 
     /// `solve for p`: `p` must be an unknown.
     pub(super) fn solve_target(&mut self, id: &Ident) {
+        self.unknown_ref(id);
+    }
+
+    /// A name that must refer to an unknown (`solve for p`, relations,
+    /// singular declarations).
+    pub(super) fn unknown_ref(&mut self, id: &Ident) {
         match self.scope.get(&id.name) {
             Some(Entry {
                 sort: Sort::Unknown(_),
