@@ -145,11 +145,7 @@ pub fn hertz_command(a: &HertzArgs, w: &mut dyn Write) -> Result<(), CliError> {
         write_file(path, super::plot::hertz_svg(&s)?.as_bytes(), &[], "")?;
     }
     if a.json {
-        writeln!(
-            w,
-            "{}",
-            serde_json::to_string_pretty(&s).map_err(|e| CliError::Invalid(e.to_string()))?
-        )?;
+        super::output::write_json(w, &s)?;
     } else {
         write!(w, "{}", text(&s, a.c.is_some()))?;
     }

@@ -3,7 +3,8 @@
 //! and says `wrote FILE` on standard error. Every file a command writes goes
 //! through [`write_file`], so the message, the refusal and the exit code of
 //! an unwritable path (2) are the same everywhere. It knows nothing about
-//! what the bytes mean.
+//! what the bytes mean. [`write_json`] is the one way `--json` documents
+//! reach standard output.
 
 use std::path::Path;
 
@@ -56,6 +57,14 @@ pub fn write_file(path: &Path, bytes: &[u8], inputs: &[&Path], note: &str) -> Re
     } else {
         eprintln!("wrote {} {note}", path.display());
     }
+    Ok(())
+}
+
+/// Writes `v` as one pretty-printed JSON document and a newline: the
+/// `--json` output of every command.
+pub fn write_json(w: &mut dyn std::io::Write, v: &impl serde::Serialize) -> Result<(), CliError> {
+    let text = serde_json::to_string_pretty(v).map_err(|e| CliError::Invalid(e.to_string()))?;
+    writeln!(w, "{text}")?;
     Ok(())
 }
 

@@ -35,12 +35,7 @@ fn reduce_split(
     let u = choose_unknown(p, a.unknown.as_deref())?;
     let list = split_reductions(p, u)?;
     if a.out.json {
-        writeln!(
-            w,
-            "{}",
-            serde_json::to_string_pretty(&split_json(&list))
-                .map_err(|e| CliError::Invalid(e.to_string()))?
-        )?;
+        super::output::write_json(w, &split_json(&list))?;
     } else {
         write!(w, "{}", split_text(&list, a.out.latex))?;
     }
@@ -125,11 +120,7 @@ pub fn split_text(list: &[(crate::reduce::split::Piece, Reduction)], as_latex: b
 pub fn print_reduction(r: &Reduction, out: &OutputArgs, w: &mut dyn Write) -> Result<(), CliError> {
     if out.json {
         let v = to_json(r);
-        writeln!(
-            w,
-            "{}",
-            serde_json::to_string_pretty(&v).map_err(|e| CliError::Invalid(e.to_string()))?
-        )?;
+        super::output::write_json(w, &v)?;
     } else if out.latex {
         write!(w, "{}", latex(r))?;
     } else {

@@ -123,11 +123,7 @@ pub fn run(file: &PathBuf, out: &OutputArgs, w: &mut dyn Write) -> Result<(), Cl
     }
     if out.json {
         let v = json!({"file": file.display().to_string(), "results": results});
-        writeln!(
-            w,
-            "{}",
-            serde_json::to_string_pretty(&v).map_err(|e| CliError::Invalid(e.to_string()))?
-        )?;
+        super::output::write_json(w, &v)?;
     } else if first {
         writeln!(
             w,

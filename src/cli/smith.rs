@@ -193,11 +193,7 @@ pub fn smith_command(a: &SmithArgs, w: &mut dyn Write) -> Result<(), CliError> {
             serde_json::to_value(&reports)
         }
         .map_err(|e| CliError::Invalid(e.to_string()))?;
-        writeln!(
-            w,
-            "{}",
-            serde_json::to_string_pretty(&v).map_err(|e| CliError::Invalid(e.to_string()))?
-        )?;
+        super::output::write_json(w, &v)?;
         return Ok(());
     }
     for (k, r) in reports.iter().enumerate() {

@@ -84,12 +84,7 @@ pub fn solve_and_report(
         write_file(path, svg(&r, path)?.as_bytes(), inputs, "")?;
     }
     if flags.json {
-        writeln!(
-            w,
-            "{}",
-            serde_json::to_string_pretty(&to_json(&r))
-                .map_err(|e| CliError::Invalid(e.to_string()))?
-        )?;
+        super::output::write_json(w, &to_json(&r))?;
     } else {
         write_text(&r, w)?;
     }

@@ -30,12 +30,7 @@ pub fn solve_split_and_report(
     };
     let r = solve_split(prog, &opts)?;
     if flags.json {
-        writeln!(
-            w,
-            "{}",
-            serde_json::to_string_pretty(&to_json(&r))
-                .map_err(|e| CliError::Invalid(e.to_string()))?
-        )?;
+        super::output::write_json(w, &to_json(&r))?;
     } else {
         write_text(&r, w)?;
     }

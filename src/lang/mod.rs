@@ -104,29 +104,7 @@ pub use error::{ErrorKind, LangError};
 /// does), so that the recursive passes over deeply nested input stay far
 /// from the end of the caller's stack, whatever thread the caller is on.
 pub fn parse_program(src: &str, filename: &str) -> Result<Program, LangErrors> {
-    let src = strip_bom(src);
-    std::thread::scope(|s| {
-        let worker = std::thread::Builder::new()
-            .name("lambdamat-front-end".into())
-            .stack_size(STACK_SIZE)
-            .spawn_scoped(s, || parse_program_here(src, filename));
-        match worker {
-            Ok(handle) => handle.join().unwrap_or_else(|_| {
-                Err(LangErrors::new(
-                    filename,
-                    src,
-                    vec![LangError::new(
-                        ErrorKind::Syntax,
-                        "internal error in the front end",
-                        ast::Span::default(),
-                        "while reading this file",
-                    )],
-                ))
-            }),
-            // No thread available: do the work here.
-            Err(_) => parse_program_here(src, filename),
-        }
-    })
+    parse_program_with(src, filename, &[])
 }
 
 /// `src` without a leading UTF-8 byte-order mark (editors on some systems
@@ -158,11 +136,12 @@ pub fn parse_program_with(
     filename: &str,
     sets: &[(String, num_rational::BigRational)],
 ) -> Result<Program, LangErrors> {
+    let src = strip_bom(src);
     std::thread::scope(|s| {
         let worker = std::thread::Builder::new()
             .name("lambdamat-front-end".into())
             .stack_size(STACK_SIZE)
-            .spawn_scoped(s, || parse_program_set(src, filename, sets));
+            .spawn_scoped(s, || parse_program_here(src, filename, sets));
         match worker {
             Ok(handle) => handle.join().unwrap_or_else(|_| {
                 Err(LangErrors::new(
@@ -176,7 +155,8 @@ pub fn parse_program_with(
                     )],
                 ))
             }),
-            Err(_) => parse_program_set(src, filename, sets),
+            // No thread available: do the work here.
+            Err(_) => parse_program_here(src, filename, sets),
         }
     })
 }
@@ -192,7 +172,8 @@ pub fn param_names(file: &ast::File) -> Vec<String> {
         .collect()
 }
 
-fn parse_program_set(
+/// [`parse_program_with`] on the current thread.
+fn parse_program_here(
     src: &str,
     filename: &str,
     sets: &[(String, num_rational::BigRational)],
@@ -209,13 +190,6 @@ fn parse_program_set(
             };
         }
     }
-    let checked = validate::validate(&file).map_err(|errs| LangErrors::new(filename, src, errs))?;
-    lower::lower(&file, &checked).map_err(|e| LangErrors::new(filename, src, vec![e]))
-}
-
-/// [`parse_program`] on the current thread.
-fn parse_program_here(src: &str, filename: &str) -> Result<Program, LangErrors> {
-    let file = parser::parse_file(src).map_err(|e| LangErrors::new(filename, src, vec![e]))?;
     let checked = validate::validate(&file).map_err(|errs| LangErrors::new(filename, src, errs))?;
     lower::lower(&file, &checked).map_err(|e| LangErrors::new(filename, src, vec![e]))
 }
