@@ -146,6 +146,7 @@ pub fn system() -> Result<CompiledSystem, PlanError> {
         outputs: vec![output_1, output_2],
         target: 0,
         principal: None,
+        derived_pivots: Some(vec![(1, 1)]),
         domain: (0.0, 1.0),
         interior: Vec::new(),
     };

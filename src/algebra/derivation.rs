@@ -21,7 +21,7 @@
 use super::eliminate::{CommutedPair, Eliminant, EliminateError, eliminate_ordered};
 use super::matrix::Matrix;
 use super::ncpoly::NcPoly;
-use super::ordered::{OrderedElimination, OrderedError, ordered_elimination_of};
+use super::ordered::{EliminationSteps, OrderedElimination, OrderedError, eliminate_in_steps};
 use super::polyring::PolyRing;
 
 /// The largest bound on the number of terms of `det(A)` for which the
@@ -90,8 +90,15 @@ pub struct Derivation {
     /// The commutative eliminant; `None` when [`Derivation::bound`] is past
     /// [`MAX_ELIMINANT_TERMS`] (it was not expanded).
     pub eliminant: Option<Eliminant>,
-    /// The ordered elimination, or why there is none.
+    /// The ordered elimination written out (Schur form), or why it is not
+    /// ([`OrderedError::TooLarge`] when its entries fill in).
     pub ordered: Result<OrderedElimination, OrderedError>,
+    /// The same elimination as steps with named intermediates (never
+    /// expanded, so it exists at any size), or why there is none. Its
+    /// pivots are those of [`Derivation::ordered`] when that exists; they
+    /// are what `solve --method ordered` executes
+    /// ([`Derivation::pivot_order`]).
+    pub steps: Result<EliminationSteps, OrderedError>,
 }
 
 impl Derivation {
@@ -121,13 +128,17 @@ impl Derivation {
         } else {
             None
         };
-        let ordered = ordered_elimination_of(image, words, target, principal);
+        let (steps, ordered) = match eliminate_in_steps(image, words, target, principal) {
+            Ok((steps, ordered)) => (Ok(steps), ordered),
+            Err(e) => (Err(e.clone()), Err(e)),
+        };
         Ok(Derivation {
             target,
             principal,
             bound,
             eliminant,
             ordered,
+            steps,
         })
     }
 
@@ -153,10 +164,12 @@ impl Derivation {
     }
 
     /// The pivots of the ordered elimination as (equation, unknown), in the
-    /// order they are used (empty if there is no ordered elimination).
+    /// order they are used: those of [`Derivation::steps`], which are also
+    /// those of the Schur form when it is written out (empty if there is no
+    /// ordered elimination).
     pub fn pivot_order(&self) -> Vec<(usize, usize)> {
-        match &self.ordered {
-            Ok(o) => o.pivots.iter().map(|p| (p.equation, p.unknown)).collect(),
+        match &self.steps {
+            Ok(s) => s.pivot_order(),
             Err(_) => Vec::new(),
         }
     }
@@ -238,8 +251,13 @@ mod tests {
         assert!(!d.bound.allows_expansion());
         assert!(d.bound.terms >= 3f64.powi(20) - 1.0, "{:?}", d.bound);
         assert!(d.eliminant.is_none() && d.commuted_pairs().is_empty());
-        // Its Schur complements fill in geometrically: refused, not expanded.
+        // Its Schur complements fill in geometrically: not written out, but
+        // the steps (named intermediates, nothing expanded) exist and
+        // eliminate all 19 other unknowns.
         assert_eq!(d.ordered, Err(OrderedError::TooLarge));
-        assert!(d.pivot_order().is_empty());
+        let steps = d.steps.as_ref().expect("steps at any size");
+        assert_eq!(d.pivot_order().len(), n - 1);
+        assert_eq!(steps.equation, 0);
+        assert!(!d.pivot_order().iter().any(|&(_, u)| u == 0));
     }
 }

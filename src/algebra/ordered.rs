@@ -443,13 +443,51 @@ pub fn ordered_elimination(
 
 /// [`ordered_elimination`] of the system whose ordered operators are
 /// `words` (row `i`, column `j`, products in the order written) and whose
-/// commutative image is `a`.
+/// commutative image is `a`: the Schur form of [`eliminate_in_steps`], or
+/// why it cannot be written out.
 pub fn ordered_elimination_of(
     a: &Matrix<PolyRing>,
     words: &[Vec<NcPoly>],
     unknown: usize,
     principal: Option<usize>,
 ) -> Result<OrderedElimination, OrderedError> {
+    eliminate_in_steps(a, words, unknown, principal)?.1
+}
+
+/// One entry of the system being eliminated: symbolically (an entry as
+/// written, a named intermediate, or zero) and, while it stays small,
+/// expanded over the operator symbols.
+#[derive(Clone)]
+struct Entry {
+    sym: NcExpr,
+    full: Option<NcExpr>,
+}
+
+impl Entry {
+    fn is_zero(&self) -> bool {
+        match &self.full {
+            Some(e) => e.is_zero(),
+            None => self.sym.is_zero(),
+        }
+    }
+}
+
+/// The ordered elimination of unknown `unknown`, carried out once: the
+/// pivots are chosen as documented at [`ordered_elimination`] (an entry
+/// that was not expanded because it grew past [`MAX_ENTRY_TERMS`] ranks
+/// last), every update of a remaining equation is recorded as a named
+/// intermediate ([`EliminationSteps`], never expanded), and the Schur form
+/// ([`OrderedElimination`]) is returned beside it when every entry stayed
+/// within [`MAX_ENTRY_TERMS`] terms (else [`OrderedError::TooLarge`]). Both
+/// have the same pivot sequence. The outer error is for a system with no
+/// ordered elimination at all.
+#[allow(clippy::type_complexity)]
+pub fn eliminate_in_steps(
+    a: &Matrix<PolyRing>,
+    words: &[Vec<NcPoly>],
+    unknown: usize,
+    principal: Option<usize>,
+) -> Result<(EliminationSteps, Result<OrderedElimination, OrderedError>), OrderedError> {
     let n = a.rows();
     if a.cols() != n {
         return Err(OrderedError::NotSquare {
@@ -460,33 +498,57 @@ pub fn ordered_elimination_of(
     if unknown >= n {
         return Err(OrderedError::NoSuchUnknown(unknown));
     }
-    // Current system: m[r][c] over live rows/cols, rhs[r][j] coefficient of g_j.
-    let mut m: Vec<Vec<NcExpr>> = (0..n)
+    let nsym = a.ring.nvars();
+    // Symbols of the steps form: the operators, then g1..gn (the right
+    // sides), then the intermediates in the order they are named.
+    let g_sym = |r: usize| nsym + r;
+    let inter_sym = |k: usize| nsym + n + k;
+    // m[r][c]: column c < n is unknown c, column n is the right side.
+    let mut m: Vec<Vec<Entry>> = (0..n)
         .map(|i| {
-            (0..n)
-                .map(|j| match words.get(i).and_then(|r| r.get(j)) {
-                    Some(w) => NcExpr::from_ncpoly(w),
-                    None => NcExpr::from_mpoly(a.get(i, j)),
-                })
-                .collect()
-        })
-        .collect();
-    let mut rhs: Vec<Vec<NcExpr>> = (0..n)
-        .map(|i| {
-            (0..n)
+            let mut row: Vec<Entry> = (0..n)
                 .map(|j| {
-                    if i == j {
-                        NcExpr::constant(Q::one())
-                    } else {
-                        NcExpr::zero()
+                    let e = match words.get(i).and_then(|r| r.get(j)) {
+                        Some(w) => NcExpr::from_ncpoly(w),
+                        None => NcExpr::from_mpoly(a.get(i, j)),
+                    };
+                    Entry {
+                        sym: e.clone(),
+                        full: Some(e),
                     }
                 })
-                .collect()
+                .collect();
+            row.push(Entry {
+                sym: NcExpr::sym(g_sym(i)),
+                full: None,
+            });
+            row
         })
         .collect();
+    // The expanded right sides: rhs[r][j] is the coefficient of g_j.
+    let mut rhs: Vec<Option<Vec<NcExpr>>> = (0..n)
+        .map(|i| {
+            Some(
+                (0..n)
+                    .map(|j| {
+                        if i == j {
+                            NcExpr::constant(Q::one())
+                        } else {
+                            NcExpr::zero()
+                        }
+                    })
+                    .collect(),
+            )
+        })
+        .collect();
+    let mut expanding = true;
     let mut rows: Vec<usize> = (0..n).collect();
     let mut cols: Vec<usize> = (0..n).filter(|&j| j != unknown).collect();
     let mut pivots = Vec::new();
+    let mut steps = Vec::new();
+    let mut inters: Vec<Intermediate> = Vec::new();
+    let too_large =
+        |a: &NcExpr, b: &NcExpr, c: &NcExpr| a.len() * b.len() + c.len() > MAX_ENTRY_TERMS;
     while !cols.is_empty() {
         let mut best: Option<(PivotKey, usize, usize)> = None;
         for &j in &cols {
@@ -495,7 +557,8 @@ pub fn ordered_elimination_of(
                 if e.is_zero() {
                     continue;
                 }
-                let key = (pivot_class(e, principal), r != j, j, r);
+                let class = e.full.as_ref().map_or(6, |f| pivot_class(f, principal));
+                let key = (class, r != j, j, r);
                 if best.as_ref().is_none_or(|(k, _, _)| key < *k) {
                     best = Some((key, r, j));
                 }
@@ -505,58 +568,262 @@ pub fn ordered_elimination_of(
             return Err(OrderedError::NoPivot { unknown: cols[0] });
         };
         let piv = m[r][j].clone();
-        let Some(inv) = piv.inv() else {
+        let Some(inv) = piv.sym.inv() else {
             return Err(OrderedError::NoPivot { unknown: j });
         };
+        let full_inv = piv.full.as_ref().and_then(NcExpr::inv);
         rows.retain(|&x| x != r);
         cols.retain(|&x| x != j);
+        let mut updates = Vec::new();
         for &s in &rows {
             if m[s][j].is_zero() {
                 continue;
             }
-            let too_large =
-                |a: &NcExpr, b: &NcExpr, c: &NcExpr| a.len() * b.len() + c.len() > MAX_ENTRY_TERMS;
-            if too_large(&m[s][j], &inv, &NcExpr::zero()) {
-                return Err(OrderedError::TooLarge);
-            }
-            let f = m[s][j].mul(&inv);
-            for &c in cols.iter().chain(std::iter::once(&unknown)) {
-                if !m[r][c].is_zero() {
-                    if too_large(&f, &m[r][c], &m[s][c]) {
-                        return Err(OrderedError::TooLarge);
+            let f_sym = m[s][j].sym.mul(&inv);
+            let mut f_full = None;
+            if expanding {
+                match (&m[s][j].full, &full_inv) {
+                    (Some(x), Some(y)) if !too_large(x, y, &NcExpr::zero()) => {
+                        f_full = Some(x.mul(y));
                     }
-                    m[s][c] = m[s][c].sub(&f.mul(&m[r][c]));
+                    _ => expanding = false,
                 }
             }
-            let pivot_rhs = rhs[r].clone();
-            for (x, y) in rhs[s].iter_mut().zip(&pivot_rhs) {
-                if !y.is_zero() {
-                    if too_large(&f, y, x) {
-                        return Err(OrderedError::TooLarge);
-                    }
-                    *x = x.sub(&f.mul(y));
+            for &c in cols.iter().chain([&unknown, &n]) {
+                if c < n && m[r][c].is_zero() {
+                    continue;
                 }
+                let mut full = None;
+                if expanding && c < n {
+                    match (&f_full, &m[r][c].full, &m[s][c].full) {
+                        (Some(f), Some(x), Some(old)) if !too_large(f, x, old) => {
+                            full = Some(old.sub(&f.mul(x)));
+                        }
+                        _ => expanding = false,
+                    }
+                }
+                if c == n && expanding {
+                    match (&f_full, &rhs[r], &rhs[s]) {
+                        (Some(f), Some(pr), Some(sr)) => {
+                            let mut out = Vec::with_capacity(n);
+                            for (x, y) in sr.iter().zip(pr) {
+                                if y.is_zero() {
+                                    out.push(x.clone());
+                                } else if too_large(f, y, x) {
+                                    expanding = false;
+                                    break;
+                                } else {
+                                    out.push(x.sub(&f.mul(y)));
+                                }
+                            }
+                            rhs[s] = expanding.then_some(out);
+                        }
+                        _ => expanding = false,
+                    }
+                }
+                if !expanding {
+                    rhs[s] = None;
+                }
+                let value = m[s][c].sym.sub(&f_sym.mul(&m[r][c].sym));
+                let vanishes = full.as_ref().is_some_and(NcExpr::is_zero);
+                let k = inters.len();
+                inters.push(Intermediate {
+                    equation: s,
+                    column: (c < n).then_some(c),
+                    value,
+                    vanishes,
+                });
+                updates.push(k);
+                m[s][c] = if vanishes {
+                    Entry {
+                        sym: NcExpr::zero(),
+                        full,
+                    }
+                } else {
+                    Entry {
+                        sym: NcExpr::sym(inter_sym(k)),
+                        full,
+                    }
+                };
             }
-            m[s][j] = NcExpr::zero();
+            m[s][j] = Entry {
+                sym: NcExpr::zero(),
+                full: Some(NcExpr::zero()),
+            };
         }
+        steps.push(Step {
+            equation: r,
+            unknown: j,
+            pivot: piv.sym.clone(),
+            inverse: inv,
+            updates,
+        });
         pivots.push(Pivot {
             equation: r,
             unknown: j,
-            entry: piv,
+            entry: piv.full.unwrap_or_else(|| piv.sym.clone()),
         });
     }
     let last = rows[0];
-    let lhs = m[last][unknown].clone();
-    if lhs.is_zero() {
+    if m[last][unknown].is_zero() {
         return Err(OrderedError::ZeroLhs);
     }
-    Ok(OrderedElimination {
+    let steps = EliminationSteps {
         unknown,
         equation: last,
-        lhs,
-        rhs: rhs[last].clone(),
-        pivots,
-    })
+        symbols: nsym,
+        equations: n,
+        steps,
+        intermediates: inters,
+        lhs: m[last][unknown].sym.clone(),
+        rhs: m[last][n].sym.clone(),
+    };
+    let full = match (expanding, &m[last][unknown].full, &rhs[last]) {
+        (true, Some(lhs), Some(r)) => Ok(OrderedElimination {
+            unknown,
+            equation: last,
+            lhs: lhs.clone(),
+            rhs: r.clone(),
+            pivots,
+        }),
+        _ => Err(OrderedError::TooLarge),
+    };
+    Ok((steps, full))
+}
+
+/// One named intermediate of [`EliminationSteps`]: the new coefficient of
+/// one unknown (or the new right side) of one remaining equation after a
+/// pivot, `old - (entry of the pivot's column) · pivot^-1 · (entry of the
+/// pivot equation)`, in the steps form's symbols.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Intermediate {
+    /// The equation updated (0-based, original numbering).
+    pub equation: usize,
+    /// The unknown whose coefficient this is (0-based), `None` for the
+    /// right side.
+    pub column: Option<usize>,
+    /// Its definition, over the steps form's symbols.
+    pub value: NcExpr,
+    /// The definition expands to zero (so the entry is zero afterwards).
+    pub vanishes: bool,
+}
+
+/// One pivot of [`EliminationSteps`] and the updates it makes.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Step {
+    /// The pivot equation (0-based, original numbering).
+    pub equation: usize,
+    /// The unknown it is solved for (0-based).
+    pub unknown: usize,
+    /// The pivot, over the steps form's symbols.
+    pub pivot: NcExpr,
+    /// The inverse it needs (a constant for a constant pivot).
+    pub inverse: NcExpr,
+    /// The intermediates it defines (indices into
+    /// [`EliminationSteps::intermediates`]).
+    pub updates: Vec<usize>,
+}
+
+/// The ordered elimination as a sequence of steps, with every updated
+/// entry named instead of expanded, so it can be written out at any size:
+/// its symbols are the operators (`0..symbols`), then `g1..gn` (the right
+/// sides), then the intermediates (`Sk` for coefficients, `Rk` for right
+/// sides, numbered separately from 1; see [`EliminationSteps::names`]).
+/// The result is `lhs · x_unknown = rhs` in equation `equation`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct EliminationSteps {
+    /// The unknown solved for (0-based).
+    pub unknown: usize,
+    /// The equation left over (0-based, original numbering).
+    pub equation: usize,
+    /// Number of operator symbols.
+    pub symbols: usize,
+    /// Number of equations (and of right sides `g_j`).
+    pub equations: usize,
+    /// The pivots in the order they are used.
+    pub steps: Vec<Step>,
+    /// The named intermediates, in the order they are defined.
+    pub intermediates: Vec<Intermediate>,
+    /// The operator left on the unknown.
+    pub lhs: NcExpr,
+    /// The right side left over.
+    pub rhs: NcExpr,
+}
+
+impl EliminationSteps {
+    /// The pivots as (equation, unknown), in order.
+    pub fn pivot_order(&self) -> Vec<(usize, usize)> {
+        self.steps.iter().map(|s| (s.equation, s.unknown)).collect()
+    }
+
+    /// The names of the steps form's symbols: the operator names `ops`,
+    /// `g1..gn`, then the intermediates, `S1, S2, …` for coefficients and
+    /// `R1, R2, …` for right sides (another letter when an operator is
+    /// already called so, e.g. `T1` if an operator is named `S1`).
+    pub fn names<S: AsRef<str>>(&self, ops: &[S]) -> Vec<String> {
+        let taken = |p: &str| {
+            ops.iter().any(|o| {
+                o.as_ref()
+                    .strip_prefix(p)
+                    .is_some_and(|d| !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit()))
+            })
+        };
+        let pick = |cands: &[&'static str]| {
+            cands
+                .iter()
+                .copied()
+                .find(|p| !taken(p))
+                .unwrap_or(cands[cands.len() - 1])
+        };
+        let (s, r) = (pick(&["S", "T", "W", "S_"]), pick(&["R", "H", "V", "R_"]));
+        let mut out: Vec<String> = ops.iter().map(|o| o.as_ref().to_string()).collect();
+        out.extend((1..=self.equations).map(|j| format!("g{j}")));
+        let (mut ns, mut nr) = (0, 0);
+        for i in &self.intermediates {
+            if i.column.is_some() {
+                ns += 1;
+                out.push(format!("{s}{ns}"));
+            } else {
+                nr += 1;
+                out.push(format!("{r}{nr}"));
+            }
+        }
+        out
+    }
+
+    /// The print tree of the result `lhs u = rhs`.
+    pub fn result_node<S: AsRef<str>>(&self, names: &[S], unknown: &str) -> Node {
+        let u = Node::sym(unknown);
+        let lhs = match self.lhs.as_constant() {
+            Some(c) if c.is_one() => u,
+            _ => Node::Apply(Box::new(self.lhs.to_node(names)), Box::new(u)),
+        };
+        Node::Equation(Box::new(lhs), Box::new(self.rhs.to_node(names)))
+    }
+
+    /// The print tree of intermediate `k`'s definition `Sk = …`.
+    pub fn definition_node<S: AsRef<str>>(&self, names: &[S], k: usize) -> Node {
+        let name = names
+            .get(self.symbols + self.equations + k)
+            .map_or_else(|| format!("#{k}"), |s| s.as_ref().to_string());
+        Node::Equation(
+            Box::new(Node::Sym(name)),
+            Box::new(self.intermediates[k].value.to_node(names)),
+        )
+    }
+
+    /// Every distinct inverse the steps need, in order of use.
+    pub fn inverses(&self) -> Vec<NcExpr> {
+        let mut out: Vec<NcExpr> = Vec::new();
+        for s in &self.steps {
+            for x in s.inverse.inverses() {
+                if !out.contains(&x) {
+                    out.push(x);
+                }
+            }
+        }
+        out
+    }
 }
 
 impl OrderedElimination {
@@ -770,6 +1037,92 @@ mod tests {
             ordered_elimination(&a, 0, None),
             Err(OrderedError::NoPivot { unknown: 1 })
         );
+    }
+
+    /// The value of a steps-form expression over the operator symbols and
+    /// `g_j` (kept as symbols `nsym + j`): every intermediate substituted.
+    fn substitute(e: &NcExpr, st: &EliminationSteps, vals: &[NcExpr]) -> NcExpr {
+        let base = st.symbols + st.equations;
+        let mut out = NcExpr::zero();
+        for (c, fs) in &e.terms {
+            let mut t = NcExpr::constant(c.clone());
+            for f in fs {
+                let v = match f {
+                    Factor::Sym(i) if *i >= base => vals[*i - base].clone(),
+                    Factor::Sym(i) => NcExpr::sym(*i),
+                    Factor::Inv(x) => substitute(x, st, vals).inv().expect("nonzero"),
+                };
+                t = t.mul(&v);
+            }
+            out = out.add(&t);
+        }
+        out
+    }
+
+    #[test]
+    fn steps_expand_to_the_schur_form_with_the_same_pivots() {
+        for n in [2, 3] {
+            let (names, a) = generic(n);
+            let words: Vec<Vec<NcPoly>> = (0..n)
+                .map(|i| (0..n).map(|j| NcPoly::from_mpoly(a.get(i, j))).collect())
+                .collect();
+            for u in 0..n {
+                let (st, full) = eliminate_in_steps(&a, &words, u, None).unwrap();
+                let o = full.unwrap();
+                assert_eq!(
+                    st.pivot_order(),
+                    o.pivots
+                        .iter()
+                        .map(|p| (p.equation, p.unknown))
+                        .collect::<Vec<_>>()
+                );
+                assert_eq!(st.equation, o.equation);
+                let mut vals: Vec<NcExpr> = Vec::new();
+                for i in &st.intermediates {
+                    let v = substitute(&i.value, &st, &vals);
+                    vals.push(v);
+                }
+                let lhs = substitute(&st.lhs, &st, &vals);
+                assert!(lhs.sub(&o.lhs).is_zero(), "n = {n}, unknown {u}");
+                // The right side: Σ_j rhs_j g_j with g_j the symbol nsym + j.
+                let mut want = NcExpr::zero();
+                for (j, r) in o.rhs.iter().enumerate() {
+                    want = want.add(&r.mul(&NcExpr::sym(st.symbols + j)));
+                }
+                let got = substitute(&st.rhs, &st, &vals);
+                assert!(got.sub(&want).is_zero(), "n = {n}, unknown {u}");
+                let all = st.names(&names);
+                assert_eq!(
+                    all.len(),
+                    st.symbols + st.equations + st.intermediates.len()
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn intermediate_names_avoid_operator_names() {
+        let names: Vec<String> = ["S1", "k2", "k3", "k4"].map(String::from).to_vec();
+        let a = Matrix::new(
+            PolyRing::new(names.clone()),
+            2,
+            2,
+            (0..4).map(|i| MPoly::var(i, 4)).collect(),
+        );
+        let words: Vec<Vec<NcPoly>> = (0..2)
+            .map(|i| (0..2).map(|j| NcPoly::from_mpoly(a.get(i, j))).collect())
+            .collect();
+        let (st, _) = eliminate_in_steps(&a, &words, 0, Some(3)).unwrap();
+        let all = st.names(&names);
+        assert_eq!(&all[4..6], ["g1", "g2"]);
+        assert!(
+            all[6..]
+                .iter()
+                .all(|x| x.starts_with('T') || x.starts_with('R')),
+            "{all:?}"
+        );
+        let def = print(&st.definition_node(&all, 0), PrintOptions::TEXT);
+        assert_eq!(def, "T1 = S1 - k2 k4^-1 k3");
     }
 
     #[test]

@@ -7,8 +7,9 @@ use super::error::CliError;
 use super::render::{checks, matrix};
 use super::smith::load;
 use super::{OutputArgs, ReduceArgs};
+use crate::algebra::print::latex_name;
 use crate::reduce::expand::{sum_latex, sum_text};
-use crate::reduce::{Reduction, choose_unknown, reduce};
+use crate::reduce::{Reduction, StepsForm, choose_unknown, reduce};
 use serde_json::{Value, json};
 use std::fmt::Write as _;
 use std::io::Write;
@@ -148,6 +149,10 @@ pub fn to_json(r: &Reduction) -> Value {
         ),
         Err(e) => (Value::Null, json!([]), json!([e])),
     };
+    let ordered_steps = match &r.ordered_steps {
+        Ok(st) => steps_json(st),
+        Err(e) => json!({"not_available": e}),
+    };
     let expanded = match &r.expanded {
         Ok(x) => json!({"lhs": sum_text(&x.lhs), "rhs": sum_text(&x.rhs)}),
         Err(e) => json!({"not_expanded": e}),
@@ -172,9 +177,106 @@ pub fn to_json(r: &Reduction) -> Value {
         "ordered": ordered,
         "ordered_inverses": ordered_inverses,
         "ordered_pivots": ordered_pivots,
+        "ordered_steps": ordered_steps,
         "commuted_pairs": r.commuted_pairs.iter().map(|c| c.pair.clone()).collect::<Vec<_>>(),
         "notes": r.notes,
     })
+}
+
+/// The steps form as JSON: every formula in the language's syntax over
+/// `symbols` (operators, `g1..gn`, intermediates), so it parses back with
+/// [`crate::lang::formula::parse_ncexpr`].
+fn steps_json(st: &StepsForm) -> Value {
+    let steps: Vec<Value> = st
+        .steps
+        .iter()
+        .map(|s| {
+            let updates: Vec<Value> = s
+                .updates
+                .iter()
+                .map(|u| {
+                    json!({
+                        "name": u.name,
+                        "equation": u.equation,
+                        "unknown": u.unknown,
+                        "value": u.value.lmx,
+                        "vanishes": u.vanishes,
+                    })
+                })
+                .collect();
+            json!({
+                "equation": s.equation,
+                "unknown": s.unknown,
+                "pivot": s.pivot.lmx,
+                "inverse": s.inverse.lmx,
+                "updates": updates,
+            })
+        })
+        .collect();
+    json!({
+        "symbols": st.symbols,
+        "steps": steps,
+        "result": {"equation": st.equation, "lhs": st.lhs.lmx, "rhs": st.rhs.lmx},
+        "inverses": st.inverses.iter().map(|i| i.lmx.clone()).collect::<Vec<_>>(),
+    })
+}
+
+/// The steps form as text lines (indented by two spaces).
+fn steps_text(st: &StepsForm, out: &mut String) {
+    let _ = writeln!(
+        out,
+        "  as steps (nothing expanded; gj is the right side of equation j; each update is named, Sk for a coefficient, Rk for a right side):"
+    );
+    for (i, s) in st.steps.iter().enumerate() {
+        let inv = if s.constant {
+            format!("{} (a number)", s.inverse.text)
+        } else {
+            s.inverse.text.clone()
+        };
+        let _ = writeln!(
+            out,
+            "  step {}: {} from equation {}, pivot {}, inverse {}",
+            i + 1,
+            s.unknown,
+            s.equation,
+            s.pivot.text,
+            inv
+        );
+        for u in &s.updates {
+            let on = match &u.unknown {
+                Some(x) => format!("coefficient of {x}"),
+                None => "right side".to_string(),
+            };
+            let zero = if u.vanishes { " = 0" } else { "" };
+            let _ = writeln!(
+                out,
+                "    {} = {}{zero}    [equation {}, {on}]",
+                u.name, u.value.text, u.equation
+            );
+        }
+    }
+    let _ = writeln!(
+        out,
+        "  result, equation {}: {}    where {}",
+        st.equation,
+        st.result.text,
+        right_sides(st)
+    );
+    if st.inverses.is_empty() {
+        let _ = writeln!(out, "  requires no inverse");
+    } else {
+        let inv: Vec<&str> = st.inverses.iter().map(|i| i.text.as_str()).collect();
+        let _ = writeln!(out, "  inverses required: {}", inv.join(", "));
+    }
+}
+
+/// `g1 = 1, g2 = 0` for the right sides of the equations.
+fn right_sides(st: &StepsForm) -> String {
+    st.right_sides
+        .iter()
+        .map(|(g, v)| format!("{g} = {v}"))
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 fn pair_list(r: &Reduction) -> String {
@@ -319,7 +421,10 @@ fn ordered_text(r: &Reduction, out: &mut String) {
             );
         }
         Err(e) => {
-            let _ = writeln!(out, "  not available: {e}");
+            let _ = writeln!(out, "  Schur form not available: {e}");
+            if let Ok(st) = &r.ordered_steps {
+                steps_text(st, out);
+            }
         }
     }
 
@@ -407,7 +512,33 @@ pub fn latex(r: &Reduction) -> String {
             let _ = writeln!(out, "\\[ {} \\]", o.latex);
         }
         Err(e) => {
-            let _ = writeln!(out, "% ordered elimination not available: {e}");
+            let _ = writeln!(out, "% ordered elimination, Schur form not available: {e}");
+            if let Ok(st) = &r.ordered_steps {
+                let _ = writeln!(
+                    out,
+                    "% ordered elimination as steps (g_j: right side of equation j; S_k, R_k: named updates)"
+                );
+                let mut lines = Vec::new();
+                for (i, s) in st.steps.iter().enumerate() {
+                    lines.push(format!(
+                        "&\\text{{step {}: {} from equation {}, pivot }} {} && \\text{{inverse }} {}",
+                        i + 1,
+                        s.unknown,
+                        s.equation,
+                        s.pivot.latex,
+                        s.inverse.latex
+                    ));
+                    for u in &s.updates {
+                        lines.push(format!("{} &= {}", latex_name(&u.name), u.value.latex));
+                    }
+                }
+                lines.push(format!("&\\text{{result: }} {}", st.result.latex));
+                let _ = writeln!(
+                    out,
+                    "\\begin{{align*}}\n{}\n\\end{{align*}}",
+                    lines.join(" \\\\\n")
+                );
+            }
         }
     }
     let _ = writeln!(

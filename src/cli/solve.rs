@@ -167,6 +167,7 @@ pub fn to_json(r: &SolveReport) -> Value {
         "cond": r.cond,
         "commutator_defects": r.commutator_defects,
         "warnings": r.warnings,
+        "pivots": r.pivots.iter().map(|(e, u)| json!({"equation": e, "unknown": u})).collect::<Vec<_>>(),
     })
 }
 

@@ -256,9 +256,25 @@ fn header(out: &mut String, prog: &Program, sys: &CompiledSystem, from: &Provena
                     o.pivots.join("; ")
                 );
             }
-            Err(e) => {
-                let _ = writeln!(out, "//! - ordered elimination: {e}");
-            }
+            Err(e) => match &r.ordered_steps {
+                Ok(st) => {
+                    let pivots: Vec<String> = st
+                        .steps
+                        .iter()
+                        .map(|s| format!("{} from equation {}", s.unknown, s.equation))
+                        .collect();
+                    let _ = writeln!(
+                        out,
+                        "//! - ordered elimination (`--method ordered`, the default), in steps\n//!   with named intermediates ({e}; `lambdamat reduce` prints the\n//!   steps):\n//!   pivots: {}\n//!   result, equation {}: `{}`",
+                        pivots.join("; "),
+                        st.equation,
+                        st.result.text
+                    );
+                }
+                Err(_) => {
+                    let _ = writeln!(out, "//! - ordered elimination: {e}");
+                }
+            },
         }
         match &r.eliminant_refused {
             None => {
@@ -447,6 +463,18 @@ fn system_fn(
     list_field(out, "outputs", &out_vars);
     let _ = writeln!(out, "        target: {},", sys.target);
     let _ = writeln!(out, "        principal: {:?},", sys.principal);
+    // The derivation's pivot sequence, embedded: the solver refuses to run
+    // another (see `CompiledSystem::derived_pivots`).
+    match sys.derivation().ok().map(|d| d.pivot_order()) {
+        Some(p) => {
+            let items: Vec<String> = p.iter().map(|(e, u)| format!("({e}, {u})")).collect();
+            let v = vec_expr(&items, 8);
+            let _ = writeln!(out, "        derived_pivots: Some({v}),");
+        }
+        None => {
+            let _ = writeln!(out, "        derived_pivots: None,");
+        }
+    }
     let _ = writeln!(
         out,
         "        domain: ({}, {}),",

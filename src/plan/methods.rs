@@ -76,6 +76,9 @@ pub struct LevelSolution {
     /// Where the method departed from the derivation (a pivot replaced by
     /// a better-conditioned one), named.
     pub warnings: Vec<String>,
+    /// The pivots the ordered elimination executed, as (equation,
+    /// unknown), 0-based, in order (empty for the other methods).
+    pub pivots: Vec<(usize, usize)>,
 }
 
 /// Solves the system on `d` by `method`, executing the derivation `der`
@@ -131,6 +134,7 @@ pub fn solve_level(
                 coefs: u.into_iter().map(Some).collect(),
                 cond,
                 warnings: Vec::new(),
+                pivots: Vec::new(),
             })
         }
         _ => {
@@ -241,6 +245,7 @@ fn ordered(
         coefs: u,
         cond,
         warnings,
+        pivots: pivots.iter().map(|(col, r, _)| (*r, *col)).collect(),
     })
 }
 
@@ -286,6 +291,7 @@ fn commutative(
         coefs,
         cond: lu.cond(),
         warnings: Vec::new(),
+        pivots: Vec::new(),
     })
 }
 

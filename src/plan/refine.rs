@@ -120,6 +120,10 @@ pub struct SolveReport {
     pub commutator_defects: Vec<Defect>,
     /// Warnings (large defects, no convergence, model).
     pub warnings: Vec<String>,
+    /// The pivots `ordered` executed on the final level, as (equation
+    /// numbered from 1, unknown): the derivation's unless a warning says
+    /// otherwise (empty for the other methods).
+    pub pivots: Vec<(usize, String)>,
     /// The interval of the unknowns.
     pub domain: (f64, f64),
 }
@@ -391,7 +395,13 @@ pub fn solve_program(prog: &Program, opts: &SolveOptions) -> Result<SolveReport,
 /// agree. This is the entry point of solvers written by `lambdamat
 /// codegen`.
 pub fn solve_system(sys: &CompiledSystem, opts: &SolveOptions) -> Result<SolveReport, PlanError> {
-    solve_derived(sys, sys.derivation().ok(), opts)
+    let derivation = match sys.derivation() {
+        Ok(d) => Some(d),
+        // A generated solver whose embedded derivation differs.
+        Err(e @ PlanError::Invalid(_)) => return Err(e),
+        Err(_) => None,
+    };
+    solve_derived(sys, derivation, opts)
 }
 
 /// [`solve_system`] executing a derivation already built for `sys` (by
@@ -596,6 +606,12 @@ fn report(
         cond: last.sol.cond,
         commutator_defects: defects,
         warnings,
+        pivots: last
+            .sol
+            .pivots
+            .iter()
+            .map(|&(e, u)| (e + 1, sys.unknowns[u].clone()))
+            .collect(),
         domain: s.domain,
     })
 }

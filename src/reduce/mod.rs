@@ -103,6 +103,132 @@ pub struct OrderedForm {
     pub agrees_with_cramer: bool,
 }
 
+/// One formula in the three notations of [`crate::algebra::print`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct Printed {
+    /// Plain text (`k3 k7^-1 k5`).
+    pub text: String,
+    /// LaTeX.
+    pub latex: String,
+    /// The language's syntax (`k3*k7^(-1)*k5`), which parses back.
+    pub lmx: String,
+}
+
+impl Printed {
+    fn of(node: &Node) -> Printed {
+        Printed {
+            text: print(node, PrintOptions::TEXT),
+            latex: print(node, PrintOptions::LATEX),
+            lmx: print(node, PrintOptions::LMX),
+        }
+    }
+}
+
+/// One named intermediate of the steps form: `S1 = k20 - k3 k7^-1 k5`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct StepUpdate {
+    /// Its name (`S1`, `R1`).
+    pub name: String,
+    /// The equation it updates (numbered from 1).
+    pub equation: usize,
+    /// The unknown whose coefficient it is; `None` for the right side.
+    pub unknown: Option<String>,
+    /// Its definition (the right-hand side of `S1 = …`).
+    pub value: Printed,
+    /// The definition expands to zero (the entry is zero afterwards).
+    pub vanishes: bool,
+}
+
+/// One pivot of the steps form and the updates it makes.
+#[derive(Clone, Debug, PartialEq)]
+pub struct StepForm {
+    /// The pivot equation (numbered from 1).
+    pub equation: usize,
+    /// The unknown solved from it.
+    pub unknown: String,
+    /// The pivot.
+    pub pivot: Printed,
+    /// The inverse it needs (a number for a constant pivot).
+    pub inverse: Printed,
+    /// The pivot is a constant (its inverse is a number, no operator).
+    pub constant: bool,
+    /// The intermediates it defines.
+    pub updates: Vec<StepUpdate>,
+}
+
+/// The ordered elimination as steps ([`crate::algebra::ordered::EliminationSteps`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct StepsForm {
+    /// The symbols its formulas are written in: the operators, `g1..gn`,
+    /// then the intermediates.
+    pub symbols: Vec<String>,
+    /// The steps in order.
+    pub steps: Vec<StepForm>,
+    /// The equation left over (numbered from 1).
+    pub equation: usize,
+    /// The operator left on the unknown.
+    pub lhs: Printed,
+    /// The right side left over.
+    pub rhs: Printed,
+    /// The result `lhs u = rhs`.
+    pub result: Printed,
+    /// Every distinct inverse the steps need.
+    pub inverses: Vec<Printed>,
+    /// `(g1, its value)` for every equation.
+    pub right_sides: Vec<(String, String)>,
+}
+
+/// The steps form of `d`, printable.
+fn steps_form(p: &Program, d: &Derivation, uname: &str) -> Result<StepsForm, String> {
+    let st = d.steps.as_ref().map_err(|e| e.to_string())?;
+    let names = st.names(&p.symbols);
+    let base = st.symbols + st.equations;
+    let steps = st
+        .steps
+        .iter()
+        .map(|s| StepForm {
+            equation: s.equation + 1,
+            unknown: p.unknowns[s.unknown].clone(),
+            pivot: Printed::of(&s.pivot.to_node(&names)),
+            inverse: Printed::of(&s.inverse.to_node(&names)),
+            constant: s.pivot.as_constant().is_some(),
+            updates: s
+                .updates
+                .iter()
+                .map(|&k| {
+                    let i = &st.intermediates[k];
+                    StepUpdate {
+                        name: names[base + k].clone(),
+                        equation: i.equation + 1,
+                        unknown: i.column.map(|c| p.unknowns[c].clone()),
+                        value: Printed::of(&i.value.to_node(&names)),
+                        vanishes: i.vanishes,
+                    }
+                })
+                .collect(),
+        })
+        .collect();
+    Ok(StepsForm {
+        steps,
+        equation: st.equation + 1,
+        lhs: Printed::of(&st.lhs.to_node(&names)),
+        rhs: Printed::of(&st.rhs.to_node(&names)),
+        result: Printed::of(&st.result_node(&names, uname)),
+        inverses: st
+            .inverses()
+            .iter()
+            .map(|e| Printed::of(&Node::pow_i(e.to_node(&names), -1)))
+            .collect(),
+        symbols: names,
+        right_sides: p
+            .equations
+            .iter()
+            .enumerate()
+            .map(|(j, eq)| (format!("g{}", j + 1), eq.rhs.to_string()))
+            .collect(),
+    })
+}
+
 /// Everything `lambdamat reduce` shows.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Reduction {
@@ -146,6 +272,10 @@ pub struct Reduction {
     pub expanded: Result<Expanded, String>,
     /// The ordered elimination, or why there is none.
     pub ordered: Result<OrderedForm, String>,
+    /// The same ordered elimination as steps with named intermediates
+    /// (never expanded; shown when the Schur form is too large to write
+    /// out), or why there is none. Same pivots as [`Reduction::ordered`].
+    pub ordered_steps: Result<StepsForm, String>,
     /// Why the commutative eliminant was not expanded (its size bound);
     /// `None` if it was. When set, the eliminant fields above are empty.
     pub eliminant_refused: Option<String>,
@@ -229,6 +359,7 @@ pub fn reduce_with(p: &Program, d: &Derivation) -> Result<Reduction, ReduceError
     let Some(e) = &d.eliminant else {
         return Ok(refused(p, d, &a, uname, ordered));
     };
+    let ordered_steps = steps_form(p, d, &uname);
     let fmt = |m: &MPoly| m.to_string_with(names);
     let rhs: Vec<RhsTerm> = e
         .multipliers
@@ -289,6 +420,7 @@ pub fn reduce_with(p: &Program, d: &Derivation) -> Result<Reduction, ReduceError
             .collect(),
         expanded,
         ordered,
+        ordered_steps,
         eliminant_refused: None,
         commuted_pairs: e
             .commuted_pairs
@@ -361,6 +493,7 @@ fn refused(
     uname: String,
     ordered: Result<OrderedForm, String>,
 ) -> Reduction {
+    let ordered_steps = steps_form(p, d, &uname);
     let why = format!(
         "not expanded: det(A) may have up to {:.3e} terms of degree up to {} (limit {:.0} terms)",
         d.bound.terms, d.bound.degree, MAX_ELIMINANT_TERMS
@@ -386,6 +519,7 @@ fn refused(
         dropped_lmx: Vec::new(),
         expanded: Err(why.clone()),
         ordered,
+        ordered_steps,
         eliminant_refused: Some(why),
         commuted_pairs: Vec::new(),
         params: p

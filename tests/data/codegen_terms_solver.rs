@@ -144,6 +144,7 @@ pub fn system() -> Result<CompiledSystem, PlanError> {
         outputs: vec![output_1, output_2],
         target: 1,
         principal: None,
+        derived_pivots: Some(vec![(1, 0)]),
         domain: (0.0, 1.0),
         interior: vec![0.5],
     };
