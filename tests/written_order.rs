@@ -147,3 +147,194 @@ fn a_twenty_unknown_system_is_reduced_and_generated_without_the_eliminant() {
     let v = json(&["solve", f]);
     assert_eq!(v["converged"], true);
 }
+
+/// The (equation, unknown) pivots of `reduce --json`'s steps, then the
+/// equation left over with the target: the sequence `ordered` must run.
+fn reduce_pivots(reduce: &Value) -> Vec<(u64, String)> {
+    let st = &reduce["ordered_steps"];
+    let mut out: Vec<(u64, String)> = st["steps"]
+        .as_array()
+        .expect("steps")
+        .iter()
+        .map(|s| {
+            (
+                s["equation"].as_u64().expect("equation"),
+                s["unknown"].as_str().expect("unknown").to_string(),
+            )
+        })
+        .collect();
+    out.push((
+        st["result"]["equation"].as_u64().expect("result equation"),
+        reduce["unknown"].as_str().expect("unknown").to_string(),
+    ));
+    out
+}
+
+fn solve_pivots(solve: &Value) -> Vec<(u64, String)> {
+    solve["pivots"]
+        .as_array()
+        .expect("pivots")
+        .iter()
+        .map(|p| {
+            (
+                p["equation"].as_u64().expect("equation"),
+                p["unknown"].as_str().expect("unknown").to_string(),
+            )
+        })
+        .collect()
+}
+
+#[test]
+fn ordered_solve_executes_the_pivots_that_reduce_prints() {
+    let files = [
+        "tests/data/twenty_unknowns.lmx",
+        "tests/data/codegen_terms.lmx",
+        "examples/written_order.lmx",
+        "examples/both_orders.lmx",
+        "examples/mms.lmx",
+        "examples/hertz_manufactured.lmx",
+    ];
+    for f in files {
+        let reduce = json(&["reduce", f]);
+        let solve = json(&["solve", f, "--method", "ordered"]);
+        let warnings = solve["warnings"].as_array().expect("warnings");
+        assert!(
+            !warnings.iter().any(|w| w
+                .as_str()
+                .is_some_and(|w| w.contains("ordered elimination"))),
+            "{f}: {warnings:?}"
+        );
+        let (r, s) = (reduce_pivots(&reduce), solve_pivots(&solve));
+        assert!(s.len() >= 2, "{f}: {s:?}");
+        assert_eq!(r, s, "{f}: reduce's pivots vs the ones solve ran");
+        // The Schur form, where it is written out, has the same pivots.
+        if let Some(list) = reduce["ordered_pivots"].as_array()
+            && reduce["ordered"].is_string()
+        {
+            let want: Vec<String> = r[..r.len() - 1]
+                .iter()
+                .map(|(e, u)| format!("{u} from equation {e} "))
+                .collect();
+            assert_eq!(list.len(), want.len(), "{f}");
+            for (l, w) in list.iter().zip(&want) {
+                assert!(
+                    l.as_str().expect("pivot").starts_with(w.as_str()),
+                    "{f}: {l} vs {w}"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn reduce_prints_the_twenty_unknown_elimination_as_steps() {
+    use lambdamat::lang::formula::parse_ncexpr;
+    let f = "tests/data/twenty_unknowns.lmx";
+    let v = json(&["reduce", f]);
+    assert!(v["ordered"].is_null(), "the Schur form is too large");
+    let st = &v["ordered_steps"];
+    let symbols: Vec<String> = st["symbols"]
+        .as_array()
+        .expect("symbols")
+        .iter()
+        .map(|s| s.as_str().expect("name").to_string())
+        .collect();
+    // Operators, then g1..g20, then the intermediates.
+    assert_eq!(symbols[19], "k20");
+    assert_eq!(symbols[20], "g1");
+    assert_eq!(symbols[39], "g20");
+    let steps = st["steps"].as_array().expect("steps");
+    assert_eq!(steps.len(), 19, "every unknown but u1 is eliminated");
+    // Every formula parses back over the names defined so far: each
+    // intermediate is defined before it is used, nothing is left implicit.
+    let mut known: Vec<String> = symbols[..40].to_vec();
+    let mut defined = 0;
+    let read = |s: &Value, known: &[String]| {
+        let s = s.as_str().expect("formula");
+        parse_ncexpr(s, known).unwrap_or_else(|e| panic!("`{s}`: {}", e.render()))
+    };
+    for step in steps {
+        read(&step["pivot"], &known);
+        read(&step["inverse"], &known);
+        for u in step["updates"].as_array().expect("updates") {
+            read(&u["value"], &known);
+            let name = u["name"].as_str().expect("name").to_string();
+            assert_eq!(name, symbols[40 + defined], "names in order of definition");
+            known.push(name);
+            defined += 1;
+        }
+    }
+    assert_eq!(known.len(), symbols.len());
+    read(&st["result"]["lhs"], &known);
+    read(&st["result"]["rhs"], &known);
+    assert!(defined > 19, "only {defined} intermediates");
+    // The first step solves equation 2 for u2 with the pivot 1 (no
+    // operator inverse); equation 1's coefficient of u3 becomes -k1 k2.
+    assert_eq!(steps[0]["unknown"], "u2");
+    assert_eq!(steps[0]["pivot"], "1");
+    assert_eq!(steps[0]["updates"][0]["value"], "-k1*k2");
+    assert_eq!(steps[0]["updates"][0]["unknown"], "u3");
+
+    // The text and LaTeX forms print the same steps.
+    let text = common::cli::stdout(&["reduce", f]);
+    assert!(text.contains("Schur form not available"), "{text}");
+    assert!(
+        text.contains("step 1: u2 from equation 2, pivot 1"),
+        "{text}"
+    );
+    assert!(
+        text.contains("S1 = -k1 k2    [equation 1, coefficient of u3]"),
+        "{text}"
+    );
+    assert!(text.contains("step 19: "), "{text}");
+    let result = format!(
+        "result, equation {}: ",
+        st["result"]["equation"].as_u64().expect("equation")
+    );
+    assert!(text.contains(&result), "{text}");
+    let latex = common::cli::stdout(&["reduce", f, "--latex"]);
+    assert!(latex.contains("\\begin{align*}"), "{latex}");
+    assert!(latex.contains("S_{1} &= -k_{1} k_{2}"), "{latex}");
+}
+
+#[test]
+fn ordered_falls_back_to_a_better_pivot_only_with_a_warning_naming_it() {
+    let f = "tests/data/pivot_fallback.lmx";
+    // The derivation solves equation 2 for q (pivot 1 - k3)…
+    let reduce = json(&["reduce", f]);
+    assert_eq!(reduce_pivots(&reduce), [(2, "q".into()), (1, "p".into())]);
+    // …but that block is numerically singular, so `ordered` uses
+    // equation 1 and says so.
+    let v = json(&["solve", f, "--method", "ordered"]);
+    let warnings: Vec<&str> = v["warnings"]
+        .as_array()
+        .expect("warnings")
+        .iter()
+        .filter_map(Value::as_str)
+        .collect();
+    assert!(
+        warnings.iter().any(|w| w.starts_with(
+            "ordered elimination: the derivation solves equation 2 for q, but that block cannot be used ("
+        ) && w.ends_with("); used equation 1 instead")),
+        "{warnings:?}"
+    );
+    assert_eq!(solve_pivots(&v), [(1, "q".into()), (2, "p".into())]);
+    // The answer is still the system's.
+    assert_eq!(v["converged"], true);
+    let ep = max_error(&v, "p", |x| 1.0 + x);
+    let eq = max_error(&v, "q", |x| x);
+    assert!(ep <= 1e-10 && eq <= 1e-10, "errors {ep:e}, {eq:e}");
+    let p = v["outputs"]["P"].as_f64().expect("P");
+    assert!((p - 1.5).abs() <= 1e-10, "P = {p}");
+    // The text report shows the warning too (on standard error).
+    let out = common::cli::lambdamat()
+        .args(["solve", f])
+        .output()
+        .expect("runs");
+    assert_eq!(out.status.code(), Some(0));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("warning: ordered elimination: the derivation solves equation 2 for q"),
+        "{err}"
+    );
+}

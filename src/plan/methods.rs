@@ -202,7 +202,7 @@ fn ordered(
         };
         if derived && r != want && left.contains(&want) {
             warnings.push(format!(
-                "ordered elimination: the derivation solves equation {} for {}, but that block is {}; used equation {} instead",
+                "ordered elimination: the derivation solves equation {} for {}, but that block cannot be used ({}); used equation {} instead",
                 want + 1,
                 names[col],
                 last.as_ref().map_or("unusable".into(), |e| e.to_string()),
