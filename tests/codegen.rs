@@ -141,6 +141,73 @@ fn generated_solver_with_every_term_kind_matches() {
     compare("tests/data/codegen_terms.lmx", &sys);
 }
 
+/// The pivots (equation, unknown), 0-based, of `reduce --json`'s steps.
+fn reduce_pivots(source: &str, unknowns: &[String]) -> Vec<(usize, usize)> {
+    let v = common::cli::json(&["reduce", source]);
+    v["ordered_steps"]["steps"]
+        .as_array()
+        .expect("steps")
+        .iter()
+        .map(|s| {
+            let e = s["equation"].as_u64().expect("equation") as usize - 1;
+            let u = s["unknown"].as_str().expect("unknown");
+            (e, unknowns.iter().position(|x| x == u).expect("declared"))
+        })
+        .collect()
+}
+
+#[test]
+fn generated_solvers_embed_the_derivation_reduce_prints() {
+    for (source, sys) in [
+        (
+            "examples/mms.lmx",
+            mms_solver::system().expect("consistent"),
+        ),
+        (
+            "tests/data/codegen_terms.lmx",
+            terms_solver::system().expect("consistent"),
+        ),
+    ] {
+        let here = in_process(source);
+        assert_eq!(
+            here.derived_pivots, None,
+            "compiled in process: nothing embedded"
+        );
+        let embedded = sys.derived_pivots.clone().expect("embedded pivots");
+        let derived = here.derivation().expect("derivation").pivot_order();
+        assert_eq!(embedded, derived, "{source}");
+        assert_eq!(embedded, reduce_pivots(source, &sys.unknowns), "{source}");
+        // A solver whose embedded derivation is not the one this lambdamat
+        // derives refuses to run rather than run something else.
+        let mut stale = sys.clone();
+        stale.derived_pivots = Some(vec![(0, 1 - sys.target)]);
+        let opts = SolveOptions::default();
+        let err = solve_system(&stale, &opts).err().expect("refused");
+        assert!(err.to_string().contains("regenerate it"), "{err}");
+    }
+    // The 20-unknown system: the generated text embeds the steps' pivots.
+    let source = "tests/data/twenty_unknowns.lmx";
+    let code = common::cli::stdout(&["codegen", source]);
+    let list = code
+        .split("derived_pivots: Some(vec![")
+        .nth(1)
+        .and_then(|rest| rest.split("])").next())
+        .expect("derived_pivots in the generated code");
+    let embedded: Vec<(usize, usize)> = list
+        .split(['(', ')', ','])
+        .map(str::trim)
+        .filter(|t| !t.is_empty())
+        .map(|t| t.parse::<usize>().expect("index"))
+        .collect::<Vec<_>>()
+        .chunks(2)
+        .map(|c| (c[0], c[1]))
+        .collect();
+    let here = in_process(source);
+    assert_eq!(embedded.len(), 19);
+    assert_eq!(embedded, reduce_pivots(source, &here.unknowns));
+    assert!(code.contains("//!   pivots: u2 from equation 2; u3 from equation 3;"));
+}
+
 #[test]
 fn codegen_for_picks_the_target_and_errors_are_clear() {
     let src = "examples/mms.lmx";

@@ -228,6 +228,31 @@ fn json_formulas_of_every_example_parse_back() {
             parse_ncexpr(s, &names)
                 .unwrap_or_else(|err| panic!("{f}: `{s}` does not parse back: {}", err.render()));
         }
+        // The ordered elimination as steps, over its own symbols
+        // (operators, g1..gn, the named intermediates).
+        let st = &v["ordered_steps"];
+        let all: Vec<String> = st["symbols"]
+            .as_array()
+            .unwrap_or_else(|| panic!("{f}: no ordered_steps"))
+            .iter()
+            .map(|x| x.as_str().expect("name").to_string())
+            .collect();
+        let mut formulas = vec![&st["result"]["lhs"], &st["result"]["rhs"]];
+        for step in st["steps"].as_array().into_iter().flatten() {
+            formulas.extend([&step["pivot"], &step["inverse"]]);
+            formulas.extend(
+                step["updates"]
+                    .as_array()
+                    .into_iter()
+                    .flatten()
+                    .map(|u| &u["value"]),
+            );
+        }
+        for e in formulas {
+            let s = e.as_str().expect("a formula is a string");
+            parse_ncexpr(s, &all)
+                .unwrap_or_else(|err| panic!("{f}: `{s}` does not parse back: {}", err.render()));
+        }
         reduce_checked += 1;
     }
     assert!(
