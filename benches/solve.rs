@@ -98,7 +98,16 @@ fn twenty_unknowns(c: &mut Criterion) {
     g.sample_size(10)
         .warm_up_time(Duration::from_secs(1))
         .measurement_time(Duration::from_secs(3));
+    g.bench_function("derivation (bound + ordered steps)", |b| {
+        b.iter(|| lambdamat::reduce::derive(&prog, 0))
+    });
     g.bench_function("reduce", |b| b.iter(|| lambdamat::reduce::reduce(&prog, 0)));
+    g.bench_function("reduce + text with the steps", |b| {
+        b.iter(|| {
+            let r = lambdamat::reduce::reduce(&prog, 0).expect("reduces");
+            lambdamat::cli::reduce::text(&r)
+        })
+    });
     g.bench_function("codegen", |b| {
         b.iter(|| lambdamat::codegen::solver_source(&prog, None, &from))
     });
