@@ -182,7 +182,7 @@ fn generated_solvers_embed_the_derivation_reduce_prints() {
         let mut stale = sys.clone();
         stale.derived_pivots = Some(vec![(0, 1 - sys.target)]);
         let opts = SolveOptions::default();
-        let err = solve_system(&stale, &opts).err().expect("refused");
+        let err = solve_system(&stale, &opts).expect_err("refused");
         assert!(err.to_string().contains("regenerate it"), "{err}");
     }
     // The 20-unknown system: the generated text embeds the steps' pivots.
