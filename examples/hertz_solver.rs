@@ -12,6 +12,15 @@
 //! those of the regenerating command (`--set` there).
 //! Slots: c, alpha.
 //!
+//! Derived equations per subinterval (`lambdamat reduce`; a model where a
+//! relation is substituted: the solver keeps the subintervals coupled):
+//! - on [0, c):
+//!   ordered elimination: `(k1 - k2 k4^-1 k3) p = g1 - k2 k4^-1 g2`
+//!   commutative eliminant: `(k1*k4 - k2*k3) p = k4[1] - k2[0]`
+//! - on [c, 1] with q = 1801/10000*p substituted:
+//!   ordered elimination: `(k1 + 1801/10000 k2) p = g1`
+//!   commutative eliminant: `(k1 + 1801/10000*k2) p = [1]`
+//!
 //! The problem (parameters substituted):
 //!
 //! ```text

@@ -73,6 +73,7 @@ fn header(out: &mut String, prog: &Program, from: &Provenance) {
     if !slots.is_empty() {
         let _ = writeln!(out, "//! Slots: {}.", slots.join(", "));
     }
+    derivations(out, prog);
     out.push_str("//!\n//! The problem (parameters substituted):\n//!\n//! ```text\n");
     for line in crate::lang::pretty::pretty(prog).lines() {
         if line.is_empty() {
@@ -87,6 +88,51 @@ fn header(out: &mut String, prog: &Program, from: &Provenance) {
          // named constants without being them.\n\
          #![allow(clippy::approx_constant)]\n",
     );
+}
+
+/// The single equations `lambdamat reduce` derives on every subinterval,
+/// for the reader (the solver keeps the subintervals coupled).
+fn derivations(out: &mut String, prog: &Program) {
+    let target = prog
+        .directives
+        .iter()
+        .find_map(|d| match d {
+            crate::system::Directive::Solve { unknown } => Some(*unknown),
+            _ => None,
+        })
+        .unwrap_or(0);
+    let Ok(pieces) = crate::reduce::split::pieces(prog) else {
+        return;
+    };
+    let name = prog.unknowns.get(target).cloned().unwrap_or_default();
+    let _ = writeln!(
+        out,
+        "//!\n//! Derived equations per subinterval (`lambdamat reduce`; a model where a\n\
+         //! relation is substituted: the solver keeps the subintervals coupled):"
+    );
+    for piece in pieces {
+        let q = &piece.program;
+        let v = q.unknowns.iter().position(|n| *n == name).unwrap_or(0);
+        let subst = if piece.substituted.is_empty() {
+            String::new()
+        } else {
+            format!(" with {} substituted", piece.substituted.join(", "))
+        };
+        let _ = writeln!(out, "//! - on {}{subst}:", piece.label);
+        match crate::reduce::reduce(q, v) {
+            Ok(r) => {
+                if let Ok(o) = &r.ordered {
+                    let _ = writeln!(out, "//!   ordered elimination: `{}`", o.text);
+                }
+                if r.eliminant_refused.is_none() {
+                    let _ = writeln!(out, "//!   commutative eliminant: `{}`", r.eliminant_text());
+                }
+            }
+            Err(e) => {
+                let _ = writeln!(out, "//!   {e}");
+            }
+        }
+    }
 }
 
 /// The functions of the slot values written so far (one per distinct
