@@ -563,4 +563,43 @@ mod tests {
             "RFunc::Acot.apply(x + v[2])"
         );
     }
+
+    #[test]
+    fn long_expressions_are_bound_operand_by_operand() {
+        // sqrt(x + 1/3 + … ) with many terms: too long for one line.
+        let mut e = RExpr::X;
+        for k in 1..12 {
+            e = b(
+                RBin::Add,
+                e,
+                b(RBin::Mul, c(1, 3 + k), RExpr::Var(k as usize)),
+            );
+        }
+        let e = RExpr::Call(RFunc::Sqrt, Box::new(e));
+        assert!(expr(&e, Prec::Top).len() > 100);
+        let text = broken(&e);
+        let lines: Vec<&str> = text.lines().collect();
+        assert!(lines.len() > 1, "{text}");
+        for l in &lines {
+            assert!(l.len() <= 96, "{l}");
+        }
+        // Every binding is used once, after it is made, and the last line
+        // is the expression over them.
+        let last = lines.last().copied().unwrap_or_default();
+        assert!(
+            last.trim_start().starts_with("RFunc::Sqrt.apply(e"),
+            "{last}"
+        );
+        let n = lines.len() - 1;
+        for k in 0..n {
+            let name = format!("e{k}");
+            let uses = text
+                .match_indices(&name)
+                .filter(|(i, _)| {
+                    !text[i + name.len()..].starts_with(|ch: char| ch.is_ascii_digit())
+                })
+                .count();
+            assert_eq!(uses, 2, "{name} in\n{text}");
+        }
+    }
 }
