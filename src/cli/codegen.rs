@@ -9,7 +9,8 @@ use super::output::{check_not_input, write_file};
 use super::smith::load_with_source;
 use super::solve::located;
 use crate::codegen::{Provenance, solver_source};
-use crate::plan::{CompiledSystem, SolveOptions, solve_system};
+use crate::plan::split::SplitProblem;
+use crate::plan::{CompiledSystem, SolveOptions, SplitInput, solve_system};
 
 /// `lambdamat codegen FILE [--for u] [-o solver.rs]`.
 ///
@@ -28,12 +29,22 @@ pub fn codegen_command(a: &CodegenArgs, w: &mut dyn Write) -> Result<(), CliErro
     if let Some(u) = &a.unknown {
         command.push_str(&format!(" --for {u}"));
     }
+    for (name, value) in super::overrides() {
+        command.push_str(&format!(" --set {name}={value}"));
+    }
     command.push_str(" -o FILE.rs");
     let from = Provenance {
         source: a.file.display().to_string(),
         command,
     };
     let code = solver_source(&prog, a.unknown.as_deref(), &from).map_err(|e| located(e, &src))?;
+    if prog.contact.is_split() {
+        // The split solver's input checks (intervals, scalars against
+        // conditions, operators) run when its problem is made.
+        SplitProblem::from_input(SplitInput::from_program(&prog).map_err(|e| located(e, &src))?)
+            .map_err(|e| located(e, &src))?;
+        return write_code(a, &code, w);
+    }
     let sys =
         CompiledSystem::from_program(&prog, a.unknown.as_deref()).map_err(|e| located(e, &src))?;
     let quick = SolveOptions {
@@ -46,6 +57,10 @@ pub fn codegen_command(a: &CodegenArgs, w: &mut dyn Write) -> Result<(), CliErro
     {
         return Err(located(e, &src));
     }
+    write_code(a, &code, w)
+}
+
+fn write_code(a: &CodegenArgs, code: &str, w: &mut dyn Write) -> Result<(), CliError> {
     match &a.output {
         Some(path) => {
             let note = format!(

@@ -119,9 +119,9 @@ pub fn located(e: PlanError, src: &Source) -> CliError {
 #[derive(clap::Parser, Debug)]
 #[command(about = "A solver written by `lambdamat codegen`: solves its system and prints the report of `lambdamat solve`.", long_about = None)]
 #[command(after_help = super::AFTER_HELP)]
-struct SolverCli {
+pub(super) struct SolverCli {
     #[command(flatten)]
-    flags: SolveFlags,
+    pub(super) flags: SolveFlags,
 }
 
 /// The `main` of a solver written by `lambdamat codegen`: parses the

@@ -10,7 +10,7 @@ use serde_json::{Map, Value, json};
 use super::SolveFlags;
 use super::error::CliError;
 use crate::plan::split_solve::Estimate;
-use crate::plan::{SplitOptions, SplitReport, solve_split};
+use crate::plan::{PlanError, SplitInput, SplitOptions, SplitReport, solve_split_input};
 use crate::system::Program;
 
 /// Solves `prog` and prints the report as `flags` ask.
@@ -19,22 +19,49 @@ pub fn solve_split_and_report(
     flags: &SolveFlags,
     w: &mut dyn Write,
 ) -> Result<(), CliError> {
+    check_method(flags)?;
+    report(SplitInput::from_program(prog)?, flags, w)
+}
+
+fn check_method(flags: &SolveFlags) -> Result<(), CliError> {
     if flags.method == "commutative" {
         return Err(CliError::Invalid(
             "--method commutative: a split-domain file is solved as one collocation system on all its subintervals; the seed's single equations per subinterval are shown by `lambdamat reduce`".into(),
         ));
     }
+    Ok(())
+}
+
+/// Solves `input` and prints the report as `flags` ask.
+fn report(input: SplitInput, flags: &SolveFlags, w: &mut dyn Write) -> Result<(), CliError> {
     let opts = SplitOptions {
         tol: flags.tol,
         max_level: flags.max_level,
     };
-    let r = solve_split(prog, &opts)?;
+    let r = solve_split_input(input, &opts)?;
     if flags.json {
         super::output::write_json(w, &to_json(&r))?;
     } else {
         write_text(&r, w)?;
     }
     require_converged(&r)
+}
+
+/// The `main` of a solver `lambdamat codegen` wrote for a split-domain
+/// file: parses the `solve` flags, builds the input, solves and prints the
+/// report of `lambdamat solve`; returns the exit code.
+pub fn split_solver_main(input: fn() -> Result<SplitInput, PlanError>) -> i32 {
+    let cli = match super::parse_args::<super::solve::SolverCli>() {
+        Ok(c) => c,
+        Err(code) => return code,
+    };
+    let mut stdout = std::io::stdout().lock();
+    let result = super::solve::check_flags(&cli.flags)
+        .and_then(|()| check_method(&cli.flags))
+        .and_then(|()| input().map_err(CliError::from))
+        .and_then(|inp| report(inp, &cli.flags, &mut stdout));
+    let _ = stdout.flush();
+    super::exit_code(result)
 }
 
 /// An error unless `r` reached its tolerance (the report is printed first,

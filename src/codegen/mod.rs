@@ -12,6 +12,7 @@
 //! agree to rounding. This module owns the layout of the generated file;
 //! it must not parse (it takes a [`Program`]) or solve.
 pub mod rust;
+mod split;
 
 use std::collections::HashSet;
 use std::fmt::Write;
@@ -43,6 +44,31 @@ pub fn solver_source(
     target: Option<&str>,
     from: &Provenance,
 ) -> Result<String, PlanError> {
+    if prog.contact.is_split() {
+        return split::split_solver_source(prog, from);
+    }
+    let (sys, code) = system_code(prog, target)?;
+    let mut out = String::new();
+    header(&mut out, prog, &sys, from);
+    out.push_str(&imports(&code));
+    out.push_str(&code);
+    out.push_str(
+        "\n/// Solves the system and prints the report of `lambdamat solve`; takes\n\
+         /// `[--method coupled|ordered|commutative] [--tol T] [--max-level N] [--json]`\n\
+         /// `[--csv FILE] [--plot FILE.svg]` (see `--help`).\n\
+         pub fn main() {\n    \
+         std::process::exit(lambdamat::cli::solve::solver_main(system));\n}\n",
+    );
+    Ok(out)
+}
+
+/// The compiled system of `prog` and the Rust code that builds it: one
+/// function per kernel, multiplier, right side and output weight, and
+/// `system()`.
+fn system_code(
+    prog: &Program,
+    target: Option<&str>,
+) -> Result<(CompiledSystem, String), PlanError> {
     let sys = CompiledSystem::from_program(prog, target)?;
     let mut names = Names::default();
     let mut fns = String::new();
@@ -200,18 +226,7 @@ pub fn solver_source(
         &rhs_fns,
         &output_terms,
     );
-    let mut out = String::new();
-    header(&mut out, prog, &sys, from);
-    out.push_str(&imports(&code));
-    out.push_str(&code);
-    out.push_str(
-        "\n/// Solves the system and prints the report of `lambdamat solve`; takes\n\
-         /// `[--method coupled|ordered|commutative] [--tol T] [--max-level N] [--json]`\n\
-         /// `[--csv FILE] [--plot FILE.svg]` (see `--help`).\n\
-         pub fn main() {\n    \
-         std::process::exit(lambdamat::cli::solve::solver_main(system));\n}\n",
-    );
-    Ok(out)
+    Ok((sys, code))
 }
 
 fn header(out: &mut String, prog: &Program, sys: &CompiledSystem, from: &Provenance) {
@@ -332,7 +347,7 @@ fn imports(code: &str) -> String {
             })
         })
     };
-    let groups: [(&str, &[&str]); 5] = [
+    let groups: [(&str, &[&str]); 7] = [
         ("lambdamat::numeric::Limits", &["Fixed", "Lower", "Upper"]),
         ("lambdamat::numeric", &["Operator"]),
         ("lambdamat::numeric::Singularity", &["AbelSqrt", "Smooth"]),
@@ -346,6 +361,23 @@ fn imports(code: &str) -> String {
                 "OutputTerm",
                 "words",
             ],
+        ),
+        (
+            "lambdamat::plan::split_input",
+            &[
+                "RealFn",
+                "SplitCondition",
+                "SplitContact",
+                "SplitInput",
+                "SplitInterval",
+                "SplitKind",
+                "SplitRelation",
+                "SplitSingular",
+            ],
+        ),
+        (
+            "lambdamat::system::contact",
+            &["RFunc", "Scalar", "real_pow"],
         ),
     ];
     let mut out = String::from("\nuse std::sync::Arc;\n\n");
@@ -362,7 +394,19 @@ fn imports(code: &str) -> String {
                 if line.len() < 100 {
                     let _ = writeln!(out, "{line}");
                 } else {
-                    let _ = writeln!(out, "use {path}::{{\n    {list},\n}};");
+                    // rustfmt fills lines of at most 100 columns.
+                    let _ = writeln!(out, "use {path}::{{");
+                    let mut row = String::from("   ");
+                    for n in many {
+                        if row.len() + 1 + n.len() + 1 > 100 {
+                            let _ = writeln!(out, "{row}");
+                            row = String::from("   ");
+                        }
+                        row.push(' ');
+                        row.push_str(n);
+                        row.push(',');
+                    }
+                    let _ = writeln!(out, "{row}\n}};");
                 }
             }
         }

@@ -104,7 +104,7 @@ impl CompiledSystem {
     pub fn from_program(prog: &Program, target: Option<&str>) -> Result<CompiledSystem, PlanError> {
         if prog.contact.is_split() {
             return Err(PlanError::Invalid(
-                "this file has split-domain declarations (on-intervals, relations, scalars, singular terms, conditions): `lambdamat solve` solves it with the split-domain solver; `codegen` does not support such files yet".into(),
+                "this file has split-domain declarations (on-intervals, relations, scalars, singular terms, conditions): `lambdamat solve` and `codegen` handle it with the split-domain solver (`plan::SplitInput`)".into(),
             ));
         }
         square(prog.equations.len(), prog.unknowns.len())?;

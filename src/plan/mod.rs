@@ -15,6 +15,7 @@
 //! * [`methods`]: coupled, ordered and commutative solves, commutator defects;
 //! * [`refine`]: the refinement ladder, error estimates and outputs;
 //! * [`split`]: one discretisation of a split-domain (contact) problem;
+//! * [`split_input`]: its input (built from a program or by generated code);
 //! * [`split_solve`]: its scalar root solve and refinement ladder.
 
 pub mod compile;
@@ -25,6 +26,7 @@ pub mod methods;
 pub mod operators;
 pub mod refine;
 pub mod split;
+pub mod split_input;
 pub mod split_solve;
 
 pub use compiled::CompiledSystem;
@@ -33,4 +35,5 @@ pub use methods::Method;
 pub use refine::{
     Defect, SolveOptions, SolveReport, UnknownValues, solve_derived, solve_program, solve_system,
 };
-pub use split_solve::{SplitOptions, SplitReport, solve_split};
+pub use split_input::SplitInput;
+pub use split_solve::{SplitOptions, SplitReport, solve_split, solve_split_input};

@@ -21,13 +21,13 @@ use nalgebra::{DMatrix, DVector};
 
 use super::compiled::{CompiledSystem, Fn1, OutputTerm};
 use super::error::PlanError;
+use super::split_input::{SplitContact, SplitInput, SplitInterval, SplitKind};
 use crate::numeric::operator::Term as NTerm;
 use crate::numeric::solve::{CheckedLu, DEFAULT_MAX_COND};
 use crate::numeric::{
     Assembler, Factor, Grading, Limits, Mesh, Operator, PanelBasis, Side, Singularity,
 };
 use crate::system::Program;
-use crate::system::contact::{Contact, SingularKind};
 
 /// Mesh and degree parameters of one refinement level.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -65,7 +65,7 @@ pub struct SplitProblem {
     /// The compiled operator system (operators, right sides, outputs).
     pub sys: CompiledSystem,
     /// The split-domain declarations.
-    pub contact: Contact,
+    pub contact: SplitContact,
     /// The unknowns' interval.
     pub domain: (f64, f64),
     /// `ops[e][j]`: the operator of equation `e` on unknown `j`.
@@ -129,36 +129,38 @@ fn num(context: &str) -> impl FnOnce(crate::numeric::NumericError) -> PlanError 
 }
 
 impl SplitProblem {
-    /// Compiles `prog` (which must have split-domain declarations).
+    /// Compiles `prog` (which must have split-domain declarations):
+    /// [`SplitProblem::from_input`] of [`SplitInput::from_program`].
     pub fn new(prog: &Program) -> Result<SplitProblem, PlanError> {
-        let mut plain = prog.clone();
-        plain.contact = Contact::default();
-        let sys = CompiledSystem::from_program(&plain, None)?;
-        let contact = prog.contact.clone();
+        SplitProblem::from_input(SplitInput::from_program(prog)?)
+    }
+
+    /// The problem for `input`, however it was built (from a program, or
+    /// by a solver `lambdamat codegen` wrote).
+    pub fn from_input(input: SplitInput) -> Result<SplitProblem, PlanError> {
+        let SplitInput { sys, contact } = input;
         let nan = vec![f64::NAN; contact.scalars.len()];
         let vars = contact.values(&nan);
-        let domain = match contact.unknown_domains.first().cloned().flatten() {
+        let mut domains = contact.unknown_domains.iter();
+        let domain = match domains.next().cloned().flatten() {
             Some(d) => {
-                if contact
-                    .unknown_domains
-                    .iter()
-                    .any(|o| o.as_ref() != Some(&d))
-                {
+                let ends = d.eval(&vars);
+                let same = |o: &Option<SplitInterval>| {
+                    o.as_ref().is_some_and(|i| {
+                        let e = i.eval(&vars);
+                        e.0.to_bits() == ends.0.to_bits() && e.1.to_bits() == ends.1.to_bits()
+                    })
+                };
+                if !domains.all(same) {
                     return Err(invalid(
                         "all unknowns must live on the same interval (`unknown p, q on [0, 1]`)"
                             .into(),
                     ));
                 }
-                d.eval(&vars)
+                ends
             }
             None => sys.domain,
         };
-        if !(domain.0.is_finite() && domain.1.is_finite() && domain.0 < domain.1) {
-            return Err(invalid(format!(
-                "the unknowns' interval [{}, {}] must have constant finite ends",
-                domain.0, domain.1
-            )));
-        }
         let n = sys.unknowns.len();
         let mut ops = Vec::new();
         for eq in &sys.equations {
@@ -269,7 +271,7 @@ impl SplitProblem {
         let breaks = pts;
         let npieces = breaks.len() - 1;
         let mid = |k: usize| 0.5 * (breaks[k] + breaks[k + 1]);
-        let holds = |d: &crate::system::contact::Interval, m: f64| {
+        let holds = |d: &SplitInterval, m: f64| {
             let (lo, hi) = d.eval(&vars);
             lo < m && m < hi
         };
@@ -334,7 +336,7 @@ impl SplitProblem {
             let (m, cnt) = sub_mesh(lo, hi)?;
             let mut weight = Vec::new();
             for s in c.singulars.iter().filter(|s| s.unknown == u) {
-                if let SingularKind::Weight { exponent } = &s.kind {
+                if let SplitKind::Weight { exponent } = &s.kind {
                     let at = s.at.eval(&vars, 0.0);
                     let e = exponent.eval(&vars, 0.0);
                     if !(e.is_finite() && e > -1.0) {
@@ -354,7 +356,7 @@ impl SplitProblem {
         // Exact singular terms.
         let mut terms = Vec::new();
         for s in &c.singulars {
-            let SingularKind::Term { coefficient, func } = &s.kind else {
+            let SplitKind::Term { coefficient, func } = &s.kind else {
                 continue;
             };
             let u = s.unknown;

@@ -12,6 +12,7 @@ use serde::Serialize;
 
 use super::error::PlanError;
 use super::split::{Discrete, SplitLevel, SplitProblem};
+use super::split_input::SplitInput;
 use crate::numeric::NumericError;
 use crate::numeric::roots::{brent, secant};
 use crate::system::Program;
@@ -86,13 +87,25 @@ fn root_tolerance(tol: f64) -> f64 {
 
 /// Solves `prog` (a file with split-domain declarations).
 pub fn solve_split(prog: &Program, opts: &SplitOptions) -> Result<SplitReport, PlanError> {
+    check_tolerance(opts)?;
+    solve_split_input(SplitInput::from_program(prog)?, opts)
+}
+
+fn check_tolerance(opts: &SplitOptions) -> Result<(), PlanError> {
     if !(opts.tol > 0.0 && opts.tol.is_finite()) {
         return Err(PlanError::Invalid(format!(
             "tolerance {} must be positive",
             opts.tol
         )));
     }
-    let problem = SplitProblem::new(prog)?;
+    Ok(())
+}
+
+/// Solves the problem `input` describes, however it was built (from a
+/// program by [`solve_split`], or by a solver `lambdamat codegen` wrote).
+pub fn solve_split_input(input: SplitInput, opts: &SplitOptions) -> Result<SplitReport, PlanError> {
+    check_tolerance(opts)?;
+    let problem = SplitProblem::from_input(input)?;
     let ns = problem.contact.scalars.len();
     if ns > 1 {
         return Err(PlanError::Invalid(format!(

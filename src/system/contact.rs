@@ -73,7 +73,9 @@ impl RFunc {
         })
     }
 
-    fn apply(self, v: f64) -> f64 {
+    /// The function's value at `v` (what [`RExpr::eval`] computes; code
+    /// that `lambdamat codegen` writes calls it too).
+    pub fn apply(self, v: f64) -> f64 {
         match self {
             RFunc::Sqrt => v.sqrt(),
             RFunc::Ln => v.ln(),
@@ -90,6 +92,16 @@ impl RFunc {
                 }
             }
         }
+    }
+}
+
+/// `a^b` as [`RExpr::eval`] computes it: `powi` for small integer `b`,
+/// else `powf` (code that `lambdamat codegen` writes calls it too).
+pub fn real_pow(a: f64, b: f64) -> f64 {
+    if b.fract() == 0.0 && b.abs() <= 64.0 {
+        a.powi(b as i32)
+    } else {
+        a.powf(b)
     }
 }
 
@@ -115,13 +127,7 @@ impl RExpr {
                     RBin::Sub => a - b,
                     RBin::Mul => a * b,
                     RBin::Div => a / b,
-                    RBin::Pow => {
-                        if b.fract() == 0.0 && b.abs() <= 64.0 {
-                            a.powi(b as i32)
-                        } else {
-                            a.powf(b)
-                        }
-                    }
+                    RBin::Pow => real_pow(a, b),
                 }
             }
             RExpr::Call(f, a) => f.apply(a.eval(vars, x)),

@@ -1,0 +1,274 @@
+//! The input of the split-domain solver: the compiled operator system
+//! (operators, right sides, outputs) with the split-domain declarations
+//! as numbers and functions — every interval end, relation factor,
+//! singular point, weight exponent, singular term, condition value and
+//! real parameter a function of the slot values (scalars, then real
+//! parameters) and `x`. It is built two ways, exactly as
+//! [`CompiledSystem`] is: from a lowered [`Program`]
+//! ([`SplitInput::from_program`], expressions evaluated by
+//! [`RExpr::eval`]) or by code `lambdamat codegen` wrote (the same
+//! expressions as Rust functions performing the same floating-point
+//! operations). [`super::split::SplitProblem`] is made from it in both
+//! cases. This file owns that data and its construction from a program;
+//! it must not discretise or solve.
+use std::sync::Arc;
+
+use super::compiled::CompiledSystem;
+use super::error::PlanError;
+use crate::system::Program;
+use crate::system::contact::{Contact, Interval, RExpr, Scalar, SingularKind};
+
+/// A real function of the slot values and `x`.
+pub type SlotFn = Arc<dyn Fn(&[f64], f64) -> f64 + Send + Sync>;
+
+/// A real quantity of a split-domain problem: a function of the slot
+/// values `v` (scalars, then real parameters) and of `x` (constants
+/// ignore both).
+#[derive(Clone)]
+pub struct RealFn(pub SlotFn);
+
+impl RealFn {
+    /// Wraps a function.
+    pub fn new(f: impl Fn(&[f64], f64) -> f64 + Send + Sync + 'static) -> RealFn {
+        RealFn(Arc::new(f))
+    }
+
+    /// Evaluates an expression of the language (the in-process path).
+    pub fn from_expr(e: &RExpr) -> RealFn {
+        let e = e.clone();
+        RealFn::new(move |v, x| e.eval(v, x))
+    }
+
+    /// The value for slot values `vars` at `x`.
+    pub fn eval(&self, vars: &[f64], x: f64) -> f64 {
+        (self.0)(vars, x)
+    }
+}
+
+/// An interval whose ends are functions of the slot values.
+#[derive(Clone)]
+pub struct SplitInterval {
+    /// Left end.
+    pub lo: RealFn,
+    /// Right end.
+    pub hi: RealFn,
+}
+
+impl SplitInterval {
+    /// The ends for slot values `vars`.
+    pub fn eval(&self, vars: &[f64]) -> (f64, f64) {
+        (self.lo.eval(vars, 0.0), self.hi.eval(vars, 0.0))
+    }
+
+    fn from_interval(i: &Interval) -> SplitInterval {
+        SplitInterval {
+            lo: RealFn::from_expr(&i.lo),
+            hi: RealFn::from_expr(&i.hi),
+        }
+    }
+}
+
+/// `unknown = coeff · other` on `domain`.
+#[derive(Clone)]
+pub struct SplitRelation {
+    /// Index of the unknown that is substituted.
+    pub unknown: usize,
+    /// The factor.
+    pub coeff: RealFn,
+    /// Index of the unknown it is expressed by.
+    pub other: usize,
+    /// Where it holds.
+    pub domain: SplitInterval,
+}
+
+/// What is declared singular about an unknown at a point.
+#[derive(Clone)]
+pub enum SplitKind {
+    /// The weight `|x - P|^e` is factored out.
+    Weight {
+        /// The exponent `e`.
+        exponent: RealFn,
+    },
+    /// An exact singular term `B·g(x)` with a free coefficient `B`.
+    Term {
+        /// Index of the coefficient.
+        coefficient: usize,
+        /// `g(x)`.
+        func: RealFn,
+    },
+}
+
+/// `singular u at P± ~ …`.
+#[derive(Clone)]
+pub struct SplitSingular {
+    /// Index of the unknown.
+    pub unknown: usize,
+    /// The point.
+    pub at: RealFn,
+    /// `-1` below the point, `1` above, `0` not said.
+    pub side: i8,
+    /// The behaviour.
+    pub kind: SplitKind,
+}
+
+/// `condition coefficient = value`.
+#[derive(Clone)]
+pub struct SplitCondition {
+    /// Index of the coefficient.
+    pub coefficient: usize,
+    /// Its required value.
+    pub value: RealFn,
+}
+
+/// The split-domain declarations as numbers and functions (the numeric
+/// counterpart of [`Contact`], field for field).
+#[derive(Clone, Default)]
+pub struct SplitContact {
+    /// Unknown scalars (slots `0..scalars.len()`).
+    pub scalars: Vec<Scalar>,
+    /// Real parameters in definition order, each a function of the slots
+    /// before it (slot `scalars.len() + i`).
+    pub reals: Vec<RealFn>,
+    /// Per unknown, the interval it lives on, if declared.
+    pub unknown_domains: Vec<Option<SplitInterval>>,
+    /// Per equation, where it holds (everywhere when `None`).
+    pub equation_domains: Vec<Option<SplitInterval>>,
+    /// Relations.
+    pub relations: Vec<SplitRelation>,
+    /// Declared singular behaviour.
+    pub singulars: Vec<SplitSingular>,
+    /// Names of the coefficients of exact singular terms.
+    pub coefficients: Vec<String>,
+    /// Conditions fixing the scalars.
+    pub conditions: Vec<SplitCondition>,
+}
+
+impl SplitContact {
+    /// The numeric form of `c` (expressions evaluated by [`RExpr::eval`]).
+    pub fn from_contact(c: &Contact) -> SplitContact {
+        let interval = |i: &Option<Interval>| i.as_ref().map(SplitInterval::from_interval);
+        SplitContact {
+            scalars: c.scalars.clone(),
+            reals: c
+                .reals
+                .iter()
+                .map(|r| RealFn::from_expr(&r.value))
+                .collect(),
+            unknown_domains: c.unknown_domains.iter().map(interval).collect(),
+            equation_domains: c.equation_domains.iter().map(interval).collect(),
+            relations: c
+                .relations
+                .iter()
+                .map(|r| SplitRelation {
+                    unknown: r.unknown,
+                    coeff: RealFn::from_expr(&r.coeff),
+                    other: r.other,
+                    domain: SplitInterval::from_interval(&r.domain),
+                })
+                .collect(),
+            singulars: c
+                .singulars
+                .iter()
+                .map(|s| SplitSingular {
+                    unknown: s.unknown,
+                    at: RealFn::from_expr(&s.at),
+                    side: s.side,
+                    kind: match &s.kind {
+                        SingularKind::Weight { exponent } => SplitKind::Weight {
+                            exponent: RealFn::from_expr(exponent),
+                        },
+                        SingularKind::Term { coefficient, func } => SplitKind::Term {
+                            coefficient: *coefficient,
+                            func: RealFn::from_expr(func),
+                        },
+                    },
+                })
+                .collect(),
+            coefficients: c.coefficients.clone(),
+            conditions: c
+                .conditions
+                .iter()
+                .map(|k| SplitCondition {
+                    coefficient: k.coefficient,
+                    value: RealFn::from_expr(&k.value),
+                })
+                .collect(),
+        }
+    }
+
+    /// The slot values for the scalar values `scalars`: the scalars, then
+    /// every real parameter evaluated in order (as [`Contact::values`]).
+    pub fn values(&self, scalars: &[f64]) -> Vec<f64> {
+        let mut v: Vec<f64> = scalars.to_vec();
+        v.resize(self.scalars.len(), f64::NAN);
+        for r in &self.reals {
+            let x = r.eval(&v, 0.0);
+            v.push(x);
+        }
+        v
+    }
+}
+
+/// Everything the split-domain solver needs.
+#[derive(Clone)]
+pub struct SplitInput {
+    /// The operator system without its split-domain declarations.
+    pub sys: CompiledSystem,
+    /// The split-domain declarations.
+    pub contact: SplitContact,
+}
+
+impl SplitInput {
+    /// Compiles `prog` (a file with split-domain declarations): its
+    /// operator system as if it had none, and its declarations.
+    pub fn from_program(prog: &Program) -> Result<SplitInput, PlanError> {
+        Ok(SplitInput {
+            sys: CompiledSystem::from_program(&plain(prog), None)?,
+            contact: SplitContact::from_contact(&prog.contact),
+        })
+    }
+}
+
+/// `prog` without its split-domain declarations: the operator system the
+/// split solver discretises on every subinterval (what `codegen` writes
+/// as `system()`).
+pub fn plain(prog: &Program) -> Program {
+    let mut p = prog.clone();
+    p.contact = Contact::default();
+    p
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::system::contact::{RBin, RealParam};
+    use num_rational::BigRational;
+
+    #[test]
+    fn slot_values_match_the_expressions() {
+        let c = Contact {
+            scalars: vec![Scalar {
+                name: "c".into(),
+                range: (0.0, 1.0),
+            }],
+            reals: vec![RealParam {
+                name: "a".into(),
+                value: RExpr::Bin(
+                    RBin::Pow,
+                    Box::new(RExpr::Var(0)),
+                    Box::new(RExpr::Const(BigRational::new(1.into(), 3.into()))),
+                ),
+            }],
+            ..Contact::default()
+        };
+        let n = SplitContact::from_contact(&c);
+        for s in [0.1, 0.5, 0.9] {
+            let a = c.values(&[s]);
+            let b = n.values(&[s]);
+            assert_eq!(a.len(), b.len());
+            for (x, y) in a.iter().zip(&b) {
+                assert_eq!(x.to_bits(), y.to_bits());
+            }
+        }
+    }
+}
