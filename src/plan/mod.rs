@@ -15,7 +15,9 @@
 //! * [`methods`]: coupled, ordered and commutative solves, commutator defects;
 //! * [`refine`]: the refinement ladder, error estimates and outputs;
 //! * [`split`]: one discretisation of a split-domain (contact) problem;
-//! * [`split_solve`]: its scalar root solve and refinement ladder.
+//! * [`split_solve`]: its scalar root solve and refinement ladder;
+//! * [`split_fields`]: the unknowns and equation residuals of a solved
+//!   split-domain problem at any point.
 
 pub mod compile;
 pub mod compiled;
@@ -25,6 +27,7 @@ pub mod methods;
 pub mod operators;
 pub mod refine;
 pub mod split;
+pub mod split_fields;
 pub mod split_solve;
 
 pub use compiled::CompiledSystem;
@@ -33,4 +36,4 @@ pub use methods::Method;
 pub use refine::{
     Defect, SolveOptions, SolveReport, UnknownValues, solve_derived, solve_program, solve_system,
 };
-pub use split_solve::{SplitOptions, SplitReport, solve_split};
+pub use split_solve::{SplitOptions, SplitReport, SplitSolution, solve_split, solve_split_fields};

@@ -84,8 +84,25 @@ fn root_tolerance(tol: f64) -> f64 {
     (0.05 * tol).clamp(1e-15, 1e-9)
 }
 
+/// A solved split-domain problem with its last discretisation, for
+/// sampling the fields (`split_fields.rs`).
+pub struct SplitSolution {
+    /// The report.
+    pub report: SplitReport,
+    /// The compiled problem.
+    pub problem: SplitProblem,
+    /// The discrete solution on the last level, at the scalars reported.
+    pub discrete: Discrete,
+}
+
 /// Solves `prog` (a file with split-domain declarations).
 pub fn solve_split(prog: &Program, opts: &SplitOptions) -> Result<SplitReport, PlanError> {
+    solve_split_fields(prog, opts).map(|s| s.report)
+}
+
+/// [`solve_split`], keeping the compiled problem and the last
+/// discretisation.
+pub fn solve_split_fields(prog: &Program, opts: &SplitOptions) -> Result<SplitSolution, PlanError> {
     if !(opts.tol > 0.0 && opts.tol.is_finite()) {
         return Err(PlanError::Invalid(format!(
             "tolerance {} must be positive",
@@ -129,7 +146,7 @@ pub fn solve_split(prog: &Program, opts: &SplitOptions) -> Result<SplitReport, P
         let converged = est.is_some_and(|e| e <= opts.tol);
         if converged || k == opts.max_level {
             let est = est.unwrap_or(f64::INFINITY);
-            return Ok(report(
+            let report = report(
                 &problem,
                 &d,
                 levels.last(),
@@ -139,7 +156,12 @@ pub fn solve_split(prog: &Program, opts: &SplitOptions) -> Result<SplitReport, P
                 opts.tol,
                 k + 1,
                 rt,
-            ));
+            );
+            return Ok(SplitSolution {
+                report,
+                problem,
+                discrete: d,
+            });
         }
         levels.push(this);
     }
