@@ -90,7 +90,11 @@ fn bad_parameters_are_errors_not_results() {
     assert!(input(solve(0.5, Given::C(0.5), &o)));
     assert!(input(solve(0.0, Given::Mu(-1.0), &o)));
     assert!(input(solve(0.0, Given::Mu(f64::NAN), &o)));
-    assert!(input(solve(0.0, Given::Mu(0.3), &SplitOptions { tol: 0.0, ..o })));
+    assert!(input(solve(
+        0.0,
+        Given::Mu(0.3),
+        &SplitOptions { tol: 0.0, ..o }
+    )));
     // Stick zones below the reliable range are refused (a failed
     // computation, not bad input), not returned.
     let tiny = solve(0.0, Given::Mu(0.03), &o);

@@ -111,7 +111,10 @@ fn cli_hertz_is_cli_solve_with_set_bit_for_bit() {
     let p = ours["outputs"]["P"].as_f64().expect("P");
     let ps = ours["outputs"]["P_shear"].as_f64().expect("P_shear");
     assert_eq!(c.to_bits(), front["c"].as_f64().expect("c").to_bits());
-    assert_eq!(p.to_bits(), front["compliance"].as_f64().expect("P").to_bits());
+    assert_eq!(
+        p.to_bits(),
+        front["compliance"].as_f64().expect("P").to_bits()
+    );
     assert_eq!(
         ps.to_bits(),
         front["compliance_via_shear"]
@@ -141,7 +144,10 @@ fn cli_hertz_is_cli_solve_with_set_bit_for_bit() {
     let mu = inv["scalars"]["mu"].as_f64().expect("mu");
     let p = inv["outputs"]["P"].as_f64().expect("P");
     assert_eq!(mu.to_bits(), front["mu"].as_f64().expect("mu").to_bits());
-    assert_eq!(p.to_bits(), front["compliance"].as_f64().expect("P").to_bits());
+    assert_eq!(
+        p.to_bits(),
+        front["compliance"].as_f64().expect("P").to_bits()
+    );
 }
 
 #[test]

@@ -9,8 +9,8 @@
 use super::AFTER_HELP;
 use super::error::CliError;
 use super::output::write_file;
-use crate::hertz::seed::seed_literal;
 use crate::hertz::front::{DEFAULT_MAX_LEVEL, Given, HertzResult, solve};
+use crate::hertz::seed::seed_literal;
 use crate::plan::{PlanError, SplitOptions};
 use clap::{Args, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
@@ -145,8 +145,7 @@ pub fn hertz_command(a: &HertzArgs, w: &mut dyn Write) -> Result<(), CliError> {
                 "give exactly one of --c C or --mu M".into(),
             ));
         }
-    }
-    ?;
+    }?;
     if let Some(path) = &a.csv {
         write_file(path, profile_csv(&s)?.as_bytes(), &[], "")?;
     }

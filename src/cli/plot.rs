@@ -7,12 +7,7 @@ use crate::hertz::front::{HertzResult, Sample};
 use plotters::prelude::*;
 
 /// A curve: legend, colour, stroke width and the field it draws.
-type Series = (
-    &'static str,
-    RGBColor,
-    u32,
-    fn(&Sample) -> f64,
-);
+type Series = (&'static str, RGBColor, u32, fn(&Sample) -> f64);
 
 fn plot_err(e: impl std::fmt::Display) -> CliError {
     CliError::Numeric(format!("cannot draw the plot: {e}"))

@@ -262,8 +262,14 @@ pub fn solve(nu: f64, given: Given, opts: &SplitOptions) -> Result<HertzResult, 
         .chain(&r.coefficients)
         .map(|e| (e.name.clone(), e.error))
         .collect();
-    let (error_estimate, converged, tol, unknowns, levels, condition) =
-        (r.error_estimate, r.converged, r.tol, r.dim, r.levels, r.cond);
+    let (error_estimate, converged, tol, unknowns, levels, condition) = (
+        r.error_estimate,
+        r.converged,
+        r.tol,
+        r.dim,
+        r.levels,
+        r.cond,
+    );
     let (slip, pq, residual_c, shear_jump_at_c) = {
         let f = Fields::new(&solution.problem, &solution.discrete)?;
         let (Some(p), Some(q)) = (f.unknown_index("p"), f.unknown_index("q")) else {

@@ -147,7 +147,10 @@ impl SplitProblem {
     /// The operator of equation `e` on unknown `j` (`None` where the
     /// unknown does not appear).
     pub fn operator(&self, e: usize, j: usize) -> Option<&Operator> {
-        self.ops.get(e).and_then(|r| r.get(j)).and_then(Option::as_ref)
+        self.ops
+            .get(e)
+            .and_then(|r| r.get(j))
+            .and_then(Option::as_ref)
     }
 }
 
