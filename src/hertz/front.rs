@@ -158,9 +158,12 @@ pub fn program(src: Source, sets: &[(&str, f64)]) -> Result<Program, PlanError> 
     parse_program_with(src.1, src.0, &sets).map_err(|e| invalid(e.to_string()))
 }
 
+/// Parameter settings `(name, value)` for [`program`].
+type Sets = Vec<(&'static str, f64)>;
+
 /// Which file runs for `(ν, given)` and with which parameters, after the
 /// physical ranges are checked (bad input is [`PlanError::Invalid`]).
-fn plan(nu: f64, given: Given) -> Result<(Source, Vec<(&'static str, f64)>), PlanError> {
+fn plan(nu: f64, given: Given) -> Result<(Source, Sets), PlanError> {
     if !(0.0..=0.5).contains(&nu) {
         return Err(invalid(format!(
             "invalid parameter: Poisson's ratio ν = {nu} not in [0, 1/2]"
