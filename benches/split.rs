@@ -1,10 +1,13 @@
 //! The Hertz problem through the language (`examples/hertz.lmx`,
 //! `examples/hertz_given_c.lmx`, the split-domain solver) beside the
-//! hand-written solver, in the same run, at tol 1e-10. Short runs:
+//! hand-written solver, in the same run, at tol 1e-10, and the `hertz`
+//! front (the same files plus field sampling and the stick/slip checks,
+//! what `lambdamat hertz` runs). Short runs:
 //! `cargo bench --bench split -- --warm-up-time 1 --measurement-time 3`.
 use std::time::Duration;
 
 use criterion::{Criterion, criterion_group, criterion_main};
+use lambdamat::hertz::front::{Given, solve};
 use lambdamat::hertz::{HertzOptions, solve_given_c, solve_given_mu};
 use lambdamat::lang::parse_program_with;
 use lambdamat::lang::parser::parse_exact;
@@ -31,11 +34,17 @@ fn split(c: &mut Criterion) {
     g.bench_function("language (nu,mu)=(0.25,0.1801)", |b| {
         b.iter(|| solve_split(&given_mu, &opts))
     });
+    g.bench_function("front (nu,mu)=(0.25,0.1801)", |b| {
+        b.iter(|| solve(0.25, Given::Mu(0.1801), &opts))
+    });
     g.bench_function("built-in (nu,mu)=(0.25,0.1801)", |b| {
         b.iter(|| solve_given_mu(0.25, 0.1801, &hopts))
     });
     g.bench_function("language (nu,c)=(0,0.5)", |b| {
         b.iter(|| solve_split(&given_c, &opts))
+    });
+    g.bench_function("front (nu,c)=(0,0.5)", |b| {
+        b.iter(|| solve(0.0, Given::C(0.5), &opts))
     });
     g.bench_function("built-in (nu,c)=(0,0.5)", |b| {
         b.iter(|| solve_given_c(0.0, 0.5, &hopts))

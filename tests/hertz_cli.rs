@@ -1,4 +1,5 @@
-//! End-to-end tests of `lambdamat hertz`: JSON keys and values of a solve,
+//! End-to-end tests of `lambdamat hertz` (the front over the language
+//! files `examples/hertz*.lmx`): JSON keys and values of a solve,
 //! the frictionless limit, Spence's published pair, CSV/SVG files, the
 //! seed-table reproduction, a small sweep, and bad input.
 
@@ -49,7 +50,11 @@ fn solve_given_c_reports_all_keys_and_agrees_with_spence() {
 #[test]
 fn frictionless_limit_gives_unit_compliance() {
     let v = solve(&["--nu", "0.3", "--mu", "0"]);
-    assert!((num(&v, "compliance") - 1.0).abs() < 1e-12, "{v}");
+    // Within the claimed estimate (itself within the default tol 1e-10).
+    let est = num(&v, "error_estimate");
+    assert!(est <= 1e-10);
+    assert!((num(&v, "compliance") - 1.0).abs() <= est, "{v}");
+    assert_eq!(v["file"], "examples/hertz_frictionless.lmx");
     assert!((num(&v, "alpha") - 0.5).abs() < 1e-15);
 }
 

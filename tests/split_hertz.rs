@@ -1,97 +1,103 @@
 //! The Hertz problem through the language (`examples/hertz.lmx`,
-//! `examples/hertz_given_c.lmx`, solved by `plan::split`) against the
-//! hand-written solver in `lambdamat::hertz` (kept as an independent
-//! oracle), on every row of Spence's table in the seed (both directions),
-//! and through the CLI with `--set`.
+//! `examples/hertz_given_c.lmx`, solved by `plan::split`), which is what
+//! `lambdamat hertz` runs (`hertz::front`), against the hand-written solver
+//! in `lambdamat::hertz` (kept only as this independent oracle), on every
+//! row of Spence's table in the seed (both directions, 1e-10), fields
+//! included; and `lambdamat hertz` against `lambdamat solve --set`, bit for
+//! bit.
 mod common;
 
 use common::cli::{json, lambdamat};
-use lambdamat::hertz::{HertzOptions, solve_given_c, solve_given_mu};
-use lambdamat::lang::parse_program_with;
-use lambdamat::lang::parser::parse_exact;
-use lambdamat::plan::{SplitOptions, SplitReport, solve_split};
+use lambdamat::hertz::front::{Given, HertzResult, profile_points, solve};
+use lambdamat::hertz::{HertzOptions, HertzSolution, solve_given_c, solve_given_mu};
+use lambdamat::plan::SplitOptions;
 
 /// Spence's (ν, μ, c) rows (seed Table 1, column c1).
-const SPENCE: [(&str, &str, &str); 7] = [
-    ("0", "0.2063", "0.24"),
-    ("0", "0.2986", "0.50"),
-    ("0", "0.4013", "0.70"),
-    ("0", "0.4862", "0.80"),
-    ("0.25", "0.1387", "0.30"),
-    ("0.25", "0.1801", "0.50"),
-    ("0.25", "0.2843", "0.80"),
+const SPENCE: [(f64, f64, f64); 7] = [
+    (0.0, 0.2063, 0.24),
+    (0.0, 0.2986, 0.50),
+    (0.0, 0.4013, 0.70),
+    (0.0, 0.4862, 0.80),
+    (0.25, 0.1387, 0.30),
+    (0.25, 0.1801, 0.50),
+    (0.25, 0.2843, 0.80),
 ];
 
-fn solve_file(path: &str, sets: &[(&str, &str)]) -> SplitReport {
-    let src = std::fs::read_to_string(path).expect("example exists");
-    let sets: Vec<_> = sets
-        .iter()
-        .map(|(n, v)| (n.to_string(), parse_exact(v).expect("exact")))
-        .collect();
-    let prog = parse_program_with(&src, path, &sets).expect("valid");
-    solve_split(&prog, &SplitOptions::default()).expect("solves")
+fn front(nu: f64, given: Given) -> HertzResult {
+    solve(nu, given, &SplitOptions::default()).expect("the front solves")
 }
 
-fn get(list: &[lambdamat::plan::split_solve::Estimate], name: &str) -> (f64, f64) {
-    let e = list.iter().find(|e| e.name == name).expect("present");
-    (e.value, e.error)
+/// Scalars, both compliances, the free-boundary coefficient, the checks and
+/// the fields p, q, μp, u on the profile grid (away from the edge
+/// singularity at 1) agree with the oracle.
+fn agree(f: &HertzResult, s: &HertzSolution) {
+    let (c, p, ps) = (f.c, f.compliance, f.compliance_via_shear);
+    eprintln!(
+        "ν={} μ={:.15} c={c:.15}: Δμ {:.1e}, Δc {:.1e}, ΔP {:.1e}, ΔP_shear {:.1e}",
+        f.nu,
+        f.mu,
+        f.mu - s.mu,
+        c - s.c,
+        p - s.compliance,
+        ps - s.compliance_via_shear
+    );
+    assert!(f.converged && f.error_estimate <= 1e-10);
+    assert!((f.mu - s.mu).abs() <= 1e-10, "μ: {} vs {}", f.mu, s.mu);
+    assert!((c - s.c).abs() <= 1e-10, "c: {c} vs {}", s.c);
+    assert!((p - s.compliance).abs() <= 1e-10);
+    assert!((ps - s.compliance_via_shear).abs() <= 1e-10);
+    assert!((p - ps).abs() <= 1e-10, "the two compliance formulas");
+    assert!((f.alpha - s.alpha).abs() <= 1e-10);
+    assert_eq!((f.stick_ok, f.slip_ok), (s.stick_ok, s.slip_ok));
+    // The free-boundary coefficient is zero at the solution.
+    assert!(f.error_estimates.contains_key("B"));
+    let b = f.report().coefficients[0].value;
+    assert!(b.abs() <= 1e-10, "B = {b:e}");
+    // The fields, through split_fields, against the oracle's own evaluation.
+    let xs: Vec<f64> = profile_points(c.min(s.c), 200)
+        .into_iter()
+        .filter(|&x| x <= 0.99 && (x - c).abs() > 1e-3)
+        .collect();
+    let ours = f.sample(&xs).expect("front samples");
+    let theirs = s.sample(&xs).expect("oracle samples");
+    let scale = theirs.iter().map(|t| t.p.abs()).fold(0.0, f64::max);
+    let worst = ours
+        .iter()
+        .zip(&theirs)
+        .map(|(a, b)| {
+            [a.p - b.p, a.q - b.q, a.mu_p - b.mu_p, a.u - b.u]
+                .iter()
+                .fold(0.0f64, |m, d| m.max(d.abs()))
+        })
+        .fold(0.0, f64::max);
+    eprintln!("    fields: largest difference {worst:.1e} (max p {scale:.2})");
+    // Measured at most 5.1e-13 on these rows (max p ≈ 4): one discretisation.
+    assert!(worst <= 1e-11 * scale, "fields differ by {worst:e}");
 }
 
 #[test]
 fn given_mu_agrees_with_the_builtin_on_spence_rows() {
     for (nu, mu, _) in SPENCE {
-        let r = solve_file("examples/hertz.lmx", &[("nu", nu), ("mu", mu)]);
-        let s = solve_given_mu(
-            nu.parse().unwrap(),
-            mu.parse().unwrap(),
-            &HertzOptions::default(),
-        )
-        .expect("built-in solves");
-        let (c, ce) = get(&r.scalars, "c");
-        let (p, pe) = get(&r.outputs, "P");
-        let (ps, _) = get(&r.outputs, "P_shear");
-        eprintln!(
-            "ν={nu} μ={mu}: c = {c:.15} ± {ce:.1e} (built-in {:.15}, Δ {:.1e}); P = {p:.15} ± {pe:.1e} (Δ {:.1e})",
-            s.c,
-            c - s.c,
-            p - s.compliance
-        );
-        assert!(r.converged && ce <= 1e-10 && pe <= 1e-10);
-        assert!((c - s.c).abs() <= 1e-10, "c: {c} vs {}", s.c);
-        assert!((p - s.compliance).abs() <= 1e-10);
-        assert!((ps - s.compliance_via_shear).abs() <= 1e-10);
-        assert!((p - ps).abs() <= 1e-10, "the two compliance formulas");
-        // The free-boundary coefficient is zero at the solution.
-        assert!(get(&r.coefficients, "B").0.abs() <= 1e-10);
+        let f = front(nu, Given::Mu(mu));
+        let s = solve_given_mu(nu, mu, &HertzOptions::default()).expect("built-in solves");
+        agree(&f, &s);
     }
 }
 
 #[test]
 fn given_c_agrees_with_the_builtin_on_spence_rows() {
     for (nu, _, c) in SPENCE {
-        let r = solve_file("examples/hertz_given_c.lmx", &[("nu", nu), ("c", c)]);
-        let s = solve_given_c(
-            nu.parse().unwrap(),
-            c.parse().unwrap(),
-            &HertzOptions::default(),
-        )
-        .expect("built-in solves");
-        let (mu, me) = get(&r.scalars, "mu");
-        let (p, _) = get(&r.outputs, "P");
-        eprintln!(
-            "ν={nu} c={c}: μ = {mu:.15} ± {me:.1e} (built-in {:.15}, Δ {:.1e}); P Δ {:.1e}",
-            s.mu,
-            mu - s.mu,
-            p - s.compliance
-        );
-        assert!(r.converged && me <= 1e-10);
-        assert!((mu - s.mu).abs() <= 1e-10);
-        assert!((p - s.compliance).abs() <= 1e-10);
+        let f = front(nu, Given::C(c));
+        let s = solve_given_c(nu, c, &HertzOptions::default()).expect("built-in solves");
+        agree(&f, &s);
     }
 }
 
+/// `lambdamat hertz` is `lambdamat solve` on the embedded file with the
+/// parameters set as `--set` sets them: the same c (or μ) and P, bit for
+/// bit.
 #[test]
-fn cli_solve_with_set_matches_cli_hertz() {
+fn cli_hertz_is_cli_solve_with_set_bit_for_bit() {
     let ours = json(&[
         "solve",
         "examples/hertz.lmx",
@@ -100,11 +106,30 @@ fn cli_solve_with_set_matches_cli_hertz() {
         "--set",
         "mu=0.1801",
     ]);
-    let theirs = json(&["hertz", "--nu", "0.25", "--mu", "0.1801"]);
+    let front = json(&["hertz", "--nu", "0.25", "--mu", "0.1801"]);
     let c = ours["scalars"]["c"].as_f64().expect("c");
     let p = ours["outputs"]["P"].as_f64().expect("P");
-    assert!((c - theirs["c"].as_f64().expect("c")).abs() <= 1e-10);
-    assert!((p - theirs["compliance"].as_f64().expect("P")).abs() <= 1e-10);
+    let ps = ours["outputs"]["P_shear"].as_f64().expect("P_shear");
+    assert_eq!(c.to_bits(), front["c"].as_f64().expect("c").to_bits());
+    assert_eq!(
+        p.to_bits(),
+        front["compliance"].as_f64().expect("P").to_bits()
+    );
+    assert_eq!(
+        ps.to_bits(),
+        front["compliance_via_shear"]
+            .as_f64()
+            .expect("P_shear")
+            .to_bits()
+    );
+    assert_eq!(
+        ours["error_estimate"].as_f64(),
+        front["error_estimate"].as_f64()
+    );
+    assert_eq!(
+        front["command"],
+        "lambdamat solve examples/hertz.lmx --set nu=0.25 --set mu=0.1801"
+    );
     assert!(ours["error_estimates"]["c"].as_f64().expect("estimate") <= 1e-10);
     assert_eq!(ours["converged"], true);
     let inv = json(&[
@@ -115,9 +140,14 @@ fn cli_solve_with_set_matches_cli_hertz() {
         "--set",
         "c=1/2",
     ]);
-    let theirs = json(&["hertz", "--nu", "0", "--c", "0.5"]);
+    let front = json(&["hertz", "--nu", "0", "--c", "0.5"]);
     let mu = inv["scalars"]["mu"].as_f64().expect("mu");
-    assert!((mu - theirs["mu"].as_f64().expect("mu")).abs() <= 1e-10);
+    let p = inv["outputs"]["P"].as_f64().expect("P");
+    assert_eq!(mu.to_bits(), front["mu"].as_f64().expect("mu").to_bits());
+    assert_eq!(
+        p.to_bits(),
+        front["compliance"].as_f64().expect("P").to_bits()
+    );
 }
 
 #[test]

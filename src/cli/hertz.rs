@@ -2,13 +2,16 @@
 //! friction. One solve from (ν, c) or (ν, μ) with text/JSON/CSV/SVG output,
 //! `hertz table` (the seed paper's Tables 1 and 2 beside our values and the
 //! seed's literal algorithm) and `hertz sweep` (a ν × μ grid in parallel).
-//! All numerics come from [`crate::hertz`]; this file only formats.
+//! Every solve goes through [`crate::hertz::front`] (the language files
+//! `examples/hertz*.lmx` and the general split-domain solver); this file
+//! only formats. The hand-written solver is not called here.
 
 use super::AFTER_HELP;
 use super::error::CliError;
 use super::output::write_file;
+use crate::hertz::front::{DEFAULT_MAX_LEVEL, Given, HertzResult, solve};
 use crate::hertz::seed::seed_literal;
-use crate::hertz::{HertzOptions, HertzSolution, solve_given_c, solve_given_mu};
+use crate::plan::{PlanError, SplitOptions};
 use clap::{Args, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
@@ -81,11 +84,20 @@ enum HertzSub {
     },
 }
 
-fn hertz_err(e: crate::hertz::HertzError) -> CliError {
-    match e {
-        crate::hertz::HertzError::InvalidParameter(m) => CliError::Invalid(m),
-        other => CliError::Numeric(other.to_string()),
+/// The front's options at tolerance `tol` (the ladder of `lambdamat solve`).
+fn options(tol: f64) -> SplitOptions {
+    SplitOptions {
+        tol,
+        max_level: DEFAULT_MAX_LEVEL,
     }
+}
+
+fn solve_given_c(nu: f64, c: f64, opts: &SplitOptions) -> Result<HertzResult, PlanError> {
+    solve(nu, Given::C(c), opts)
+}
+
+fn solve_given_mu(nu: f64, mu: f64, opts: &SplitOptions) -> Result<HertzResult, PlanError> {
+    solve(nu, Given::Mu(mu), opts)
 }
 
 /// Refuses a tolerance that is not a finite number > 0.
@@ -124,10 +136,7 @@ pub fn hertz_command(a: &HertzArgs, w: &mut dyn Write) -> Result<(), CliError> {
     check_tol(a.tol)?;
     // -0 is 0 (and is shown so).
     let (nu, c, mu) = (nu + 0.0, a.c.map(|c| c + 0.0), a.mu.map(|m| m + 0.0));
-    let opts = HertzOptions {
-        tol: a.tol,
-        ..HertzOptions::default()
-    };
+    let opts = options(a.tol);
     let s = match (c, mu) {
         (Some(c), None) => solve_given_c(nu, c, &opts),
         (None, Some(mu)) => solve_given_mu(nu, mu, &opts),
@@ -136,8 +145,7 @@ pub fn hertz_command(a: &HertzArgs, w: &mut dyn Write) -> Result<(), CliError> {
                 "give exactly one of --c C or --mu M".into(),
             ));
         }
-    }
-    .map_err(hertz_err)?;
+    }?;
     if let Some(path) = &a.csv {
         write_file(path, profile_csv(&s)?.as_bytes(), &[], "")?;
     }
@@ -162,7 +170,7 @@ fn ok(b: bool) -> &'static str {
     if b { "ok" } else { "VIOLATED" }
 }
 
-fn text(s: &HertzSolution, given_c: bool) -> String {
+fn text(s: &HertzResult, given_c: bool) -> String {
     let mut o = String::new();
     let _ = writeln!(
         o,
@@ -211,15 +219,16 @@ fn text(s: &HertzSolution, given_c: bool) -> String {
     );
     let _ = writeln!(
         o,
-        "          shear jump q(c⁻) - μp(c) = {:.1e}, E2 residual at c = {:.1e}",
+        "          shear jump q(c⁻) - μp(c) = {:.1e}, E2 residual at c (÷c) = {:.1e}",
         s.shear_jump_at_c, s.residual_c
     );
+    let _ = writeln!(o, "  solved through the language: {}", s.command);
     o
 }
 
 /// `x, p, q, mu_p, u` on a fine grid, as CSV.
-fn profile_csv(s: &HertzSolution) -> Result<String, CliError> {
-    let samples = s.profile(400).map_err(hertz_err)?;
+fn profile_csv(s: &HertzResult) -> Result<String, CliError> {
+    let samples = s.profile(400)?;
     let mut out = String::from("x,p,q,mu_p,u\n");
     for p in samples {
         let _ = writeln!(
@@ -287,7 +296,7 @@ struct Tally {
 }
 
 impl Tally {
-    fn add<T>(&mut self, r: &Result<HertzSolution, T>) {
+    fn add<T>(&mut self, r: &Result<HertzResult, T>) {
         self.total += 1;
         match r {
             Ok(s) if !s.converged => self.not_converged += 1,
@@ -317,16 +326,13 @@ impl Tally {
 
 fn table(csv: bool, which: Option<u8>, tol: f64, w: &mut dyn Write) -> Result<(), CliError> {
     check_tol(tol)?;
-    let opts = HertzOptions {
-        tol,
-        ..HertzOptions::default()
-    };
+    let opts = options(tol);
     // CSV is one table per output; Markdown shows both unless one is asked for.
     let which = if csv { Some(which.unwrap_or(1)) } else { which };
     let show1 = which != Some(2);
     let show2 = which != Some(1);
     let tally = std::sync::Mutex::new(Tally::default());
-    let count = |r: &Result<HertzSolution, crate::hertz::HertzError>| {
+    let count = |r: &Result<HertzResult, PlanError>| {
         if let Ok(mut t) = tally.lock() {
             t.add(r);
         }
@@ -582,10 +588,7 @@ fn sweep(
         ProgressStyle::with_template("{bar:40} {pos}/{len} solves, {elapsed} elapsed, eta {eta}")
             .unwrap_or_else(|_| ProgressStyle::default_bar()),
     );
-    let opts = HertzOptions {
-        tol,
-        ..HertzOptions::default()
-    };
+    let opts = options(tol);
     let tally = std::sync::Mutex::new(Tally::default());
     let rows: Vec<SweepRow> = grid
         .par_iter()

@@ -1,34 +1,27 @@
 //! SVG plots (plotters): the Hertz fields p, q, μp and u against x with the
 //! stick radius c marked. Only drawing; the values come from
-//! [`crate::hertz::HertzSolution::profile`].
+//! [`crate::hertz::front::HertzResult::profile`].
 
 use super::error::CliError;
-use crate::hertz::HertzSolution;
+use crate::hertz::front::{HertzResult, Sample};
 use plotters::prelude::*;
 
 /// A curve: legend, colour, stroke width and the field it draws.
-type Series = (
-    &'static str,
-    RGBColor,
-    u32,
-    fn(&crate::hertz::Sample) -> f64,
-);
+type Series = (&'static str, RGBColor, u32, fn(&Sample) -> f64);
 
 fn plot_err(e: impl std::fmt::Display) -> CliError {
     CliError::Numeric(format!("cannot draw the plot: {e}"))
 }
 
 /// The fields of `s` drawn as an SVG document (the caller writes it).
-pub fn hertz_svg(s: &HertzSolution) -> Result<String, CliError> {
+pub fn hertz_svg(s: &HertzResult) -> Result<String, CliError> {
     let mut out = String::new();
     draw(s, &mut out)?;
     Ok(out)
 }
 
-fn draw(s: &HertzSolution, out: &mut String) -> Result<(), CliError> {
-    let samples = s
-        .profile(400)
-        .map_err(|e| CliError::Numeric(e.to_string()))?;
+fn draw(s: &HertzResult, out: &mut String) -> Result<(), CliError> {
+    let samples = s.profile(400)?;
     // p ~ (1-x)^(-α) at the edge: scale the axis to the field away from it.
     let shown: Vec<_> = samples.iter().filter(|p| p.x <= 0.97).collect();
     let (mut lo, mut hi) = (0.0f64, 0.0f64);

@@ -2,29 +2,15 @@
 //! `μp` and the slip `u` at any point, the stick and slip checks, and the
 //! serialisable summary. Owns evaluation of a finished discretisation; it
 //! must not iterate on `μ` or `c`.
-use std::f64::consts::{FRAC_2_PI, PI};
+use std::f64::consts::FRAC_2_PI;
 
 use nalgebra::DVector;
 use serde::Serialize;
 
 use super::error::HertzError;
+pub use super::front::{Sample, frictionless_pressure, profile_points};
 use super::operators::{kappa1, kappa2, kappa3, kappa4};
 use crate::numeric::{Assembler, Mesh, Operator, PanelBasis};
-
-/// `p`, `q`, `μp` and `u` at one point.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct Sample {
-    /// Radius.
-    pub x: f64,
-    /// Normal stress.
-    pub p: f64,
-    /// Shear stress.
-    pub q: f64,
-    /// `μ p`.
-    pub mu_p: f64,
-    /// Slip (zero in the stick zone).
-    pub u: f64,
-}
 
 /// The discrete fields of a solution (not serialised).
 #[derive(Debug, Clone)]
@@ -264,27 +250,4 @@ impl HertzSolution {
     pub fn profile(&self, n: usize) -> Result<Vec<Sample>, HertzError> {
         self.sample(&profile_points(self.c, n))
     }
-}
-
-/// `n` equal steps of `[0,1)` plus points geometrically clustered toward
-/// `c` (both sides, when `0 < c < 1`) and toward 1, sorted.
-pub fn profile_points(c: f64, n: usize) -> Vec<f64> {
-    let mut xs: Vec<f64> = (0..n.max(2)).map(|i| i as f64 / n.max(2) as f64).collect();
-    for k in 1..=8i32 {
-        let d = 10f64.powi(-k / 2 - 1) * if k % 2 == 0 { 1.0 } else { 0.3 };
-        xs.push(1.0 - d);
-        if c > 0.0 && c < 1.0 {
-            xs.push(c - d * c);
-            xs.push(c + d * (1.0 - c));
-        }
-    }
-    xs.retain(|x| (0.0..1.0).contains(x));
-    xs.sort_by(|a, b| a.total_cmp(b));
-    xs.dedup();
-    xs
-}
-
-/// The exact frictionless pressure `(2/π)/√(1-x²)`.
-pub fn frictionless_pressure(x: f64) -> f64 {
-    2.0 / PI / (1.0 - x * x).sqrt()
 }

@@ -16,7 +16,9 @@
 //! * [`refine`]: the refinement ladder, error estimates and outputs;
 //! * [`split`]: one discretisation of a split-domain (contact) problem;
 //! * [`split_input`]: its input (built from a program or by generated code);
-//! * [`split_solve`]: its scalar root solve and refinement ladder.
+//! * [`split_solve`]: its scalar root solve and refinement ladder;
+//! * [`split_fields`]: the unknowns and equation residuals of a solved
+//!   split-domain problem at any point.
 
 pub mod compile;
 pub mod compiled;
@@ -26,6 +28,7 @@ pub mod methods;
 pub mod operators;
 pub mod refine;
 pub mod split;
+pub mod split_fields;
 pub mod split_input;
 pub mod split_solve;
 
@@ -36,4 +39,7 @@ pub use refine::{
     Defect, SolveOptions, SolveReport, UnknownValues, solve_derived, solve_program, solve_system,
 };
 pub use split_input::SplitInput;
-pub use split_solve::{SplitOptions, SplitReport, solve_split, solve_split_input};
+pub use split_solve::{
+    SplitOptions, SplitReport, SplitSolution, solve_split, solve_split_fields, solve_split_input,
+    solve_split_input_fields,
+};

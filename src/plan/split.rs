@@ -120,6 +120,40 @@ pub struct Discrete {
     pub cond: f64,
 }
 
+/// Read-only access for `split_fields.rs` (field sampling), kept apart
+/// from the discretisation above.
+impl Discrete {
+    /// Whether unknown `u` is substituted on subinterval `k`
+    /// (`(factor, other)` for `u = factor·other`), `None` where it is free.
+    pub fn relation(&self, u: usize, k: usize) -> Option<(f64, usize)> {
+        match self.status.get(u).and_then(|s| s.get(k)) {
+            Some(Status::Related { coeff, other }) => Some((*coeff, *other)),
+            _ => None,
+        }
+    }
+
+    /// The coefficients of unknown `u` on its basis `bases[u]`.
+    pub fn coefficients_of(&self, u: usize) -> &[f64] {
+        &self.solution.as_slice()[self.offsets[u]..self.offsets[u + 1]]
+    }
+
+    /// The coefficient `B` of singular term `terms[i]`.
+    pub fn term_coefficient(&self, i: usize) -> f64 {
+        self.solution[self.offsets[self.offsets.len() - 1] + i]
+    }
+}
+
+impl SplitProblem {
+    /// The operator of equation `e` on unknown `j` (`None` where the
+    /// unknown does not appear).
+    pub fn operator(&self, e: usize, j: usize) -> Option<&Operator> {
+        self.ops
+            .get(e)
+            .and_then(|r| r.get(j))
+            .and_then(Option::as_ref)
+    }
+}
+
 fn invalid(s: String) -> PlanError {
     PlanError::Invalid(s)
 }

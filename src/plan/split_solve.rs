@@ -85,10 +85,27 @@ fn root_tolerance(tol: f64) -> f64 {
     (0.05 * tol).clamp(1e-15, 1e-9)
 }
 
+/// A solved split-domain problem with its last discretisation, for
+/// sampling the fields (`split_fields.rs`).
+pub struct SplitSolution {
+    /// The report.
+    pub report: SplitReport,
+    /// The compiled problem.
+    pub problem: SplitProblem,
+    /// The discrete solution on the last level, at the scalars reported.
+    pub discrete: Discrete,
+}
+
 /// Solves `prog` (a file with split-domain declarations).
 pub fn solve_split(prog: &Program, opts: &SplitOptions) -> Result<SplitReport, PlanError> {
+    solve_split_fields(prog, opts).map(|s| s.report)
+}
+
+/// [`solve_split`], keeping the compiled problem and the last
+/// discretisation.
+pub fn solve_split_fields(prog: &Program, opts: &SplitOptions) -> Result<SplitSolution, PlanError> {
     check_tolerance(opts)?;
-    solve_split_input(SplitInput::from_program(prog)?, opts)
+    solve_split_input_fields(SplitInput::from_program(prog)?, opts)
 }
 
 fn check_tolerance(opts: &SplitOptions) -> Result<(), PlanError> {
@@ -104,6 +121,15 @@ fn check_tolerance(opts: &SplitOptions) -> Result<(), PlanError> {
 /// Solves the problem `input` describes, however it was built (from a
 /// program by [`solve_split`], or by a solver `lambdamat codegen` wrote).
 pub fn solve_split_input(input: SplitInput, opts: &SplitOptions) -> Result<SplitReport, PlanError> {
+    solve_split_input_fields(input, opts).map(|s| s.report)
+}
+
+/// [`solve_split_input`], keeping the compiled problem and the last
+/// discretisation.
+pub fn solve_split_input_fields(
+    input: SplitInput,
+    opts: &SplitOptions,
+) -> Result<SplitSolution, PlanError> {
     check_tolerance(opts)?;
     let problem = SplitProblem::from_input(input)?;
     let ns = problem.contact.scalars.len();
@@ -142,7 +168,7 @@ pub fn solve_split_input(input: SplitInput, opts: &SplitOptions) -> Result<Split
         let converged = est.is_some_and(|e| e <= opts.tol);
         if converged || k == opts.max_level {
             let est = est.unwrap_or(f64::INFINITY);
-            return Ok(report(
+            let report = report(
                 &problem,
                 &d,
                 levels.last(),
@@ -152,7 +178,12 @@ pub fn solve_split_input(input: SplitInput, opts: &SplitOptions) -> Result<Split
                 opts.tol,
                 k + 1,
                 rt,
-            ));
+            );
+            return Ok(SplitSolution {
+                report,
+                problem,
+                discrete: d,
+            });
         }
         levels.push(this);
     }

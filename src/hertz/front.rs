@@ -1,0 +1,451 @@
+//! The Hertz problem as a front over the language: `lambdamat hertz` (one
+//! solve, `table`, `sweep`) runs the files `examples/hertz.lmx` (given ν,
+//! μ → c), `examples/hertz_given_c.lmx` (given ν, c → μ) and, in the two
+//! limits without shear (μ = 0, ν = 1/2), `examples/hertz_frictionless.lmx`,
+//! embedded with `include_str!` and with the parameters set exactly as
+//! `--set` sets them (the shortest decimal of the number, read as an exact
+//! rational), through the general split-domain solver
+//! ([`crate::plan::solve_split_fields`]). So `lambdamat hertz --nu 0.25 --mu
+//! 0.1801` and `lambdamat solve examples/hertz.lmx --set nu=0.25 --set
+//! mu=0.1801` are one computation. The fields, the slip (from E2's residual
+//! on the slip zone, docs/hertz.md) and the checks are read off the
+//! solution with [`crate::plan::split_fields`]. Owns the Hertz-specific
+//! reading of those files (which scalar is c or μ, which equation is E2,
+//! the checks); it must not discretise or solve anything itself, and it
+//! must not call the hand-written solver of this module's siblings (that
+//! is the tests' independent oracle).
+use std::collections::BTreeMap;
+use std::f64::consts::{FRAC_2_PI, PI};
+
+use serde::Serialize;
+
+use crate::lang::parse_program_with;
+use crate::lang::parser::parse_exact;
+use crate::numeric::{Assembler, NumericError, Operator};
+use crate::plan::split_fields::{Approach, Fields, ResidualField};
+use crate::plan::{PlanError, SplitOptions, SplitSolution, solve_split_fields};
+use crate::system::Program;
+
+/// A language file the front runs: its path (for messages) and its text.
+pub type Source = (&'static str, &'static str);
+
+/// Given (ν, μ), find the stick radius c.
+pub const GIVEN_MU: Source = (
+    "examples/hertz.lmx",
+    include_str!("../../examples/hertz.lmx"),
+);
+/// Given (ν, c), find the friction coefficient μ.
+pub const GIVEN_C: Source = (
+    "examples/hertz_given_c.lmx",
+    include_str!("../../examples/hertz_given_c.lmx"),
+);
+/// The limits without shear stress (μ = 0, or ν = 1/2).
+pub const NO_SHEAR: Source = (
+    "examples/hertz_frictionless.lmx",
+    include_str!("../../examples/hertz_frictionless.lmx"),
+);
+
+/// The highest refinement level tried by default: `lambdamat solve`'s
+/// default `--max-level`, so the two commands climb the same ladder.
+pub const DEFAULT_MAX_LEVEL: usize = 7;
+
+/// Which of c and μ is given.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Given {
+    /// The stick radius c ∈ (0, 1): find μ.
+    C(f64),
+    /// The friction coefficient μ ≥ 0: find c.
+    Mu(f64),
+}
+
+/// `p`, `q`, `μp` and `u` at one point.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Sample {
+    /// Radius.
+    pub x: f64,
+    /// Normal stress.
+    pub p: f64,
+    /// Shear stress.
+    pub q: f64,
+    /// `μ p`.
+    pub mu_p: f64,
+    /// Slip (zero in the stick zone).
+    pub u: f64,
+}
+
+/// A solved Hertz problem, read off the language file's solution.
+#[derive(Serialize)]
+pub struct HertzResult {
+    /// Poisson's ratio.
+    pub nu: f64,
+    /// `γ = (1-2ν)/(2-2ν)` (the file's parameter `gamma`).
+    pub gamma: f64,
+    /// Friction coefficient (given, or the scalar `mu` of the file).
+    pub mu: f64,
+    /// Stick radius (given, the scalar `c`; 0 without friction, 1 for ν = 1/2).
+    pub c: f64,
+    /// Edge exponent `α = arccot(γμ)/π` (the file's `alpha`).
+    pub alpha: f64,
+    /// `P* = (π/2) ∫ x p dx` (output `P`).
+    pub compliance: f64,
+    /// `P* = 1 + γ ∫ q (1 - √(1-t²)) dt` (output `P_shear`).
+    pub compliance_via_shear: f64,
+    /// `compliance - compliance_via_shear`.
+    pub compliance_difference: f64,
+    /// Largest change of the scalar and both outputs between the last two
+    /// levels, plus the root tolerance (the split solver's estimate).
+    pub error_estimate: f64,
+    /// Whether `error_estimate ≤ tol` was reached.
+    pub converged: bool,
+    /// The requested tolerance.
+    pub tol: f64,
+    /// `q < μp` on the sampled stick zone `[0, c)`.
+    pub stick_ok: bool,
+    /// `u < 0` on the sampled slip zone `(c, 1]` (`u = 0` when γ = 0, where
+    /// E2's residual vanishes identically).
+    pub slip_ok: bool,
+    /// `R(c)`: E2's residual at `x = c` divided by `c` (the bounded-shear
+    /// condition of docs/hertz.md; zero at the free boundary).
+    pub residual_c: f64,
+    /// `q(c⁻) - μ p(c)` (regular part of the stick shear): continuity of
+    /// the shear at the stick/slip point.
+    pub shear_jump_at_c: f64,
+    /// Number of unknowns of the final discretisation.
+    pub unknowns: usize,
+    /// Number of refinement levels used.
+    pub levels: usize,
+    /// Condition estimate of the final system.
+    pub condition: f64,
+    /// The language file that was solved.
+    pub file: &'static str,
+    /// The same computation from the command line.
+    pub command: String,
+    /// Each scalar's, output's and singular coefficient's own estimate.
+    pub error_estimates: BTreeMap<String, f64>,
+    #[serde(skip)]
+    solution: SplitSolution,
+    #[serde(skip)]
+    slip: Option<ResidualField>,
+    #[serde(skip)]
+    pq: (usize, usize),
+}
+
+fn invalid(s: String) -> PlanError {
+    PlanError::Invalid(s)
+}
+
+fn no_convergence(s: String) -> PlanError {
+    PlanError::Numeric {
+        context: "Hertz problem".into(),
+        source: NumericError::NoConvergence(s),
+    }
+}
+
+/// `x` as `--set` reads it: its shortest decimal, as an exact rational.
+fn exact(name: &str, x: f64) -> Result<(String, num_rational::BigRational), PlanError> {
+    let text = format!("{x}");
+    parse_exact(&text)
+        .map(|v| (name.to_string(), v))
+        .ok_or_else(|| invalid(format!("{name} = {x} is not a finite number")))
+}
+
+/// The embedded file `src` with the parameters `sets` (exact decimals).
+pub fn program(src: Source, sets: &[(&str, f64)]) -> Result<Program, PlanError> {
+    let sets = sets
+        .iter()
+        .map(|&(n, v)| exact(n, v))
+        .collect::<Result<Vec<_>, _>>()?;
+    parse_program_with(src.1, src.0, &sets).map_err(|e| invalid(e.to_string()))
+}
+
+/// Parameter settings `(name, value)` for [`program`].
+type Sets = Vec<(&'static str, f64)>;
+
+/// Which file runs for `(ν, given)` and with which parameters, after the
+/// physical ranges are checked (bad input is [`PlanError::Invalid`]).
+fn plan(nu: f64, given: Given) -> Result<(Source, Sets), PlanError> {
+    if !(0.0..=0.5).contains(&nu) {
+        return Err(invalid(format!(
+            "invalid parameter: Poisson's ratio ν = {nu} not in [0, 1/2]"
+        )));
+    }
+    let nu = nu + 0.0;
+    match given {
+        Given::C(c) => {
+            if !(c > 0.0 && c < 1.0) {
+                return Err(invalid(format!(
+                    "invalid parameter: stick radius c = {c} not in (0,1)"
+                )));
+            }
+            if nu == 0.5 {
+                return Err(invalid(
+                    "invalid parameter: ν = 1/2 decouples normal and shear stress: the stick zone is the whole contact (c = 1) for every μ".into(),
+                ));
+            }
+            Ok((GIVEN_C, vec![("nu", nu), ("c", c)]))
+        }
+        Given::Mu(mu) => {
+            if !(mu >= 0.0 && mu.is_finite()) {
+                return Err(invalid(format!(
+                    "invalid parameter: friction μ = {mu} must be finite and ≥ 0"
+                )));
+            }
+            if mu == 0.0 || nu == 0.5 {
+                Ok((NO_SHEAR, vec![("nu", nu)]))
+            } else {
+                Ok((GIVEN_MU, vec![("nu", nu), ("mu", mu + 0.0)]))
+            }
+        }
+    }
+}
+
+/// A parameter of `prog` (an exact one, or a real one evaluated at the
+/// solution's slots).
+fn param(prog: &Program, s: &SplitSolution, name: &str) -> Result<f64, PlanError> {
+    if let Some(p) = prog.params.iter().find(|p| p.name == name) {
+        return Ok(crate::plan::compile::rational(&p.value));
+    }
+    let slots = prog.contact.slots();
+    slots
+        .iter()
+        .position(|n| n == name)
+        .and_then(|i| s.discrete.vars.get(i).copied())
+        .ok_or_else(|| invalid(format!("the Hertz file has no parameter `{name}`")))
+}
+
+fn estimate(list: &[crate::plan::split_solve::Estimate], name: &str) -> Result<f64, PlanError> {
+    list.iter()
+        .find(|e| e.name == name)
+        .map(|e| e.value)
+        .ok_or_else(|| invalid(format!("the Hertz file has no `{name}`")))
+}
+
+/// Solves the Hertz problem for Poisson's ratio `nu` and the given c or
+/// μ through the language files, with the tolerance and ladder of `opts`.
+///
+/// ```no_run
+/// use lambdamat::hertz::front::{solve, Given};
+/// use lambdamat::plan::SplitOptions;
+/// let s = solve(0.25, Given::Mu(0.1801), &SplitOptions::default()).unwrap();
+/// println!("c = {} ± {}", s.c, s.error_estimate);
+/// ```
+pub fn solve(nu: f64, given: Given, opts: &SplitOptions) -> Result<HertzResult, PlanError> {
+    if !(opts.tol > 0.0 && opts.tol.is_finite()) {
+        return Err(invalid(format!(
+            "--tol {}: the tolerance must be a finite number > 0, e.g. 1e-10",
+            opts.tol
+        )));
+    }
+    let (src, sets) = plan(nu, given)?;
+    let prog = program(src, &sets)?;
+    let mut command = format!("lambdamat solve {}", src.0);
+    for (n, v) in &sets {
+        command.push_str(&format!(" --set {n}={v}"));
+    }
+    if opts.tol != 1e-10 {
+        command.push_str(&format!(" --tol {:e}", opts.tol));
+    }
+    let solution = solve_split_fields(&prog, opts)?;
+    let r = &solution.report;
+    let nu = nu + 0.0;
+    let gamma = param(&prog, &solution, "gamma")?;
+    let (mu, c) = match given {
+        Given::C(c) => (estimate(&r.scalars, "mu")?, c),
+        Given::Mu(mu) if src == GIVEN_MU => (mu + 0.0, estimate(&r.scalars, "c")?),
+        // No shear: the whole contact slips (μ = 0) or sticks (ν = 1/2).
+        Given::Mu(mu) => (mu + 0.0, if mu == 0.0 { 0.0 } else { 1.0 }),
+    };
+    let alpha = param(&prog, &solution, "alpha")?;
+    let compliance = estimate(&r.outputs, "P")?;
+    let compliance_via_shear = estimate(&r.outputs, "P_shear")?;
+    let error_estimates = r
+        .scalars
+        .iter()
+        .chain(&r.outputs)
+        .chain(&r.coefficients)
+        .map(|e| (e.name.clone(), e.error))
+        .collect();
+    let (error_estimate, converged, tol, unknowns, levels, condition) = (
+        r.error_estimate,
+        r.converged,
+        r.tol,
+        r.dim,
+        r.levels,
+        r.cond,
+    );
+    let (slip, pq, residual_c, shear_jump_at_c) = {
+        let f = Fields::new(&solution.problem, &solution.discrete)?;
+        let (Some(p), Some(q)) = (f.unknown_index("p"), f.unknown_index("q")) else {
+            return Err(invalid("the Hertz file must have unknowns p and q".into()));
+        };
+        // E2 (κ3 p + κ4 q = 0 on the stick zone) is the file's second equation.
+        let e2 = 1;
+        let slip = if c < 1.0 {
+            Some(f.residual_field(e2, (c, 1.0))?)
+        } else {
+            None
+        };
+        let (mut residual_c, mut jump) = (0.0, 0.0);
+        if c > 0.0 && c < 1.0 {
+            residual_c = f.residual(e2, c)? / c;
+            let mu_p = mu * f.value(p, c, Approach::Above)?;
+            jump = f.regular_value(q, c, Approach::Below)? - f.value(q, c, Approach::Above)?;
+            // A root of the bounded-shear condition whose shear still jumps
+            // at c is not the physical free boundary (measured at ν = 0:
+            // c ≲ 4e-4, μ ≲ 0.065, where the condition degenerates).
+            if jump.is_nan() || jump.abs() > 0.1 * mu_p.abs() {
+                return Err(no_convergence(format!(
+                    "spurious free boundary at c = {c:.4e}, μ = {mu:.4e}: q(c⁻) - μp(c) = {jump:.3e} (μp(c) = {:.3e}); \
+                     c this close to 0 or 1 is outside the solver's reliable range",
+                    mu_p.abs()
+                )));
+            }
+        }
+        (slip, (p, q), residual_c, jump)
+    };
+    let mut s = HertzResult {
+        nu,
+        gamma,
+        mu,
+        c,
+        alpha,
+        compliance,
+        compliance_via_shear,
+        compliance_difference: compliance - compliance_via_shear,
+        error_estimate,
+        converged,
+        tol,
+        stick_ok: false,
+        slip_ok: false,
+        residual_c,
+        shear_jump_at_c,
+        unknowns,
+        levels,
+        condition,
+        file: src.0,
+        command,
+        error_estimates,
+        solution,
+        slip,
+        pq,
+    };
+    let samples = s.sample(&profile_points(c, 200))?;
+    s.stick_ok = samples.iter().filter(|v| v.x < c).all(|v| v.q < v.mu_p);
+    // With γ = 0 (ν = 1/2) E2's residual κ3 p + κ4 q vanishes identically
+    // (κ3 = 0, q = 0): no slip at all, which is not a violation.
+    s.slip_ok = samples
+        .iter()
+        .filter(|v| v.x > c)
+        .all(|v| v.u < 0.0 || (gamma == 0.0 && v.u == 0.0));
+    Ok(s)
+}
+
+impl HertzResult {
+    /// The evaluator of the solution's fields.
+    pub fn fields(&self) -> Result<Fields<'_>, PlanError> {
+        Fields::new(&self.solution.problem, &self.solution.discrete)
+    }
+
+    /// The split solver's report (scalars, outputs, coefficients).
+    pub fn report(&self) -> &crate::plan::SplitReport {
+        &self.solution.report
+    }
+
+    /// Normal stress `p(x)`, `x ∈ [0, 1)`.
+    pub fn p(&self, x: f64) -> Result<f64, PlanError> {
+        self.fields()?.value(self.pq.0, x, Approach::Above)
+    }
+
+    /// Shear stress `q(x)` (with its singular part on the stick zone, zero
+    /// up to the root tolerance; at `c` itself the slip side, `μp(c)`).
+    pub fn q(&self, x: f64) -> Result<f64, PlanError> {
+        self.fields()?.value(self.pq.1, x, Approach::Above)
+    }
+
+    /// Slip `u(x) = -(2/(πx)) ∫_c^x s r(s)/√(x²-s²) ds` on `(c, 1]` with
+    /// `r` E2's residual on the slip zone; zero in the stick zone.
+    fn slip_at(&self, xs: &[f64]) -> Result<Vec<f64>, PlanError> {
+        let Some(r) = &self.slip else {
+            return Ok(vec![0.0; xs.len()]);
+        };
+        let op = Operator::abel_lower(self.c, |_x, s| s);
+        let asm = Assembler::new(&r.basis).map_err(PlanError::numeric("slip"))?;
+        xs.iter()
+            .map(|&x| {
+                if x <= self.c {
+                    return Ok(0.0);
+                }
+                let mut row = vec![0.0; r.basis.dim()];
+                asm.row_into(&op, x.min(1.0), r.basis.support(), &mut row)
+                    .map_err(PlanError::numeric("slip"))?;
+                let v: f64 = row.iter().zip(&r.values).map(|(a, b)| a * b).sum();
+                Ok(-FRAC_2_PI / x * v)
+            })
+            .collect()
+    }
+
+    /// `p, q, μp, u` at the points `xs` (each in `[0, 1)`).
+    pub fn sample(&self, xs: &[f64]) -> Result<Vec<Sample>, PlanError> {
+        if let Some(x) = xs.iter().find(|x| !(0.0..1.0).contains(*x)) {
+            return Err(invalid(format!("sample point {x} not in [0,1)")));
+        }
+        let f = self.fields()?;
+        let u = self.slip_at(xs)?;
+        xs.iter()
+            .zip(u)
+            .map(|(&x, u)| {
+                let p = f.value(self.pq.0, x, Approach::Above)?;
+                Ok(Sample {
+                    x,
+                    p,
+                    q: f.value(self.pq.1, x, Approach::Above)?,
+                    mu_p: self.mu * p,
+                    u,
+                })
+            })
+            .collect()
+    }
+
+    /// [`HertzResult::sample`] on `n` equal steps of `[0,1)` plus points
+    /// clustered toward `c` from both sides and toward 1, sorted.
+    pub fn profile(&self, n: usize) -> Result<Vec<Sample>, PlanError> {
+        self.sample(&profile_points(self.c, n))
+    }
+
+    /// The largest absolute residuals of E1 on `xs ∩ (0,1)` and of E2 on
+    /// `xs ∩ (0,c)`, at points that need not be collocation nodes.
+    pub fn residuals(&self, xs: &[f64]) -> Result<(f64, f64), PlanError> {
+        let f = self.fields()?;
+        let worst = |e: usize, pts: Vec<f64>| -> Result<f64, PlanError> {
+            Ok(f.residuals(e, &pts)?
+                .into_iter()
+                .fold(0.0f64, |m, r| m.max(r.abs())))
+        };
+        let inner: Vec<f64> = xs.iter().copied().filter(|&x| x > 0.0 && x < 1.0).collect();
+        let stick: Vec<f64> = inner.iter().copied().filter(|&x| x < self.c).collect();
+        Ok((worst(0, inner)?, worst(1, stick)?))
+    }
+}
+
+/// `n` equal steps of `[0,1)` plus points geometrically clustered toward
+/// `c` (both sides, when `0 < c < 1`) and toward 1, sorted.
+pub fn profile_points(c: f64, n: usize) -> Vec<f64> {
+    let mut xs: Vec<f64> = (0..n.max(2)).map(|i| i as f64 / n.max(2) as f64).collect();
+    for k in 1..=8i32 {
+        let d = 10f64.powi(-k / 2 - 1) * if k % 2 == 0 { 1.0 } else { 0.3 };
+        xs.push(1.0 - d);
+        if c > 0.0 && c < 1.0 {
+            xs.push(c - d * c);
+            xs.push(c + d * (1.0 - c));
+        }
+    }
+    xs.retain(|x| (0.0..1.0).contains(x));
+    xs.sort_by(|a, b| a.total_cmp(b));
+    xs.dedup();
+    xs
+}
+
+/// The exact frictionless pressure `(2/π)/√(1-x²)`.
+pub fn frictionless_pressure(x: f64) -> f64 {
+    2.0 / PI / (1.0 - x * x).sqrt()
+}
