@@ -164,6 +164,7 @@ pub fn system() -> Result<CompiledSystem, PlanError> {
         outputs: vec![output_1, output_2],
         target: 0,
         principal: Some(3),
+        derived_pivots: Some(vec![(1, 1)]),
         domain: (0.0, 1.0),
         interior: Vec::new(),
     };
@@ -218,20 +219,28 @@ pub fn input() -> Result<SplitInput, PlanError> {
             Some(SplitInterval {
                 lo: RealFn::new(const_0),
                 hi: RealFn::new(const_1),
+                lo_closed: true,
+                hi_closed: true,
             }),
             Some(SplitInterval {
                 lo: RealFn::new(const_0),
                 hi: RealFn::new(const_1),
+                lo_closed: true,
+                hi_closed: true,
             }),
         ],
         equation_domains: vec![
             Some(SplitInterval {
                 lo: RealFn::new(const_0),
                 hi: RealFn::new(const_1),
+                lo_closed: true,
+                hi_closed: true,
             }),
             Some(SplitInterval {
                 lo: RealFn::new(const_0),
                 hi: RealFn::new(slot_c),
+                lo_closed: true,
+                hi_closed: false,
             }),
         ],
         relations: vec![SplitRelation {
@@ -241,6 +250,8 @@ pub fn input() -> Result<SplitInput, PlanError> {
             domain: SplitInterval {
                 lo: RealFn::new(slot_c),
                 hi: RealFn::new(const_1),
+                lo_closed: true,
+                hi_closed: true,
             },
         }],
         singulars: vec![

@@ -201,7 +201,15 @@ impl Fns {
     fn interval(&mut self, role: &str, what: &str, i: &Interval) -> String {
         let lo = self.real(&format!("{role}_lo"), &format!("{what}, left end"), &i.lo);
         let hi = self.real(&format!("{role}_hi"), &format!("{what}, right end"), &i.hi);
-        lit("SplitInterval", &[("lo", lo), ("hi", hi)])
+        lit(
+            "SplitInterval",
+            &[
+                ("lo", lo),
+                ("hi", hi),
+                ("lo_closed", i.lo_closed.to_string()),
+                ("hi_closed", i.hi_closed.to_string()),
+            ],
+        )
     }
 }
 

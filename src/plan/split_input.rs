@@ -52,6 +52,10 @@ pub struct SplitInterval {
     pub lo: RealFn,
     /// Right end.
     pub hi: RealFn,
+    /// Whether the left end belongs to the interval (`[`).
+    pub lo_closed: bool,
+    /// Whether the right end belongs to the interval (`]`).
+    pub hi_closed: bool,
 }
 
 impl SplitInterval {
@@ -64,6 +68,8 @@ impl SplitInterval {
         SplitInterval {
             lo: RealFn::from_expr(&i.lo),
             hi: RealFn::from_expr(&i.hi),
+            lo_closed: i.lo_closed,
+            hi_closed: i.hi_closed,
         }
     }
 }
