@@ -165,30 +165,24 @@ type Sets = Vec<(&'static str, f64)>;
 /// physical ranges are checked (bad input is [`PlanError::Invalid`]).
 fn plan(nu: f64, given: Given) -> Result<(Source, Sets), PlanError> {
     if !(0.0..=0.5).contains(&nu) {
-        return Err(invalid(format!(
-            "invalid parameter: Poisson's ratio ν = {nu} not in [0, 1/2]"
-        )));
+        return Err(invalid(format!("Poisson's ratio ν = {nu} not in [0, 1/2]")));
     }
     let nu = nu + 0.0;
     match given {
         Given::C(c) => {
             if !(c > 0.0 && c < 1.0) {
-                return Err(invalid(format!(
-                    "invalid parameter: stick radius c = {c} not in (0,1)"
-                )));
+                return Err(invalid(format!("stick radius c = {c} not in (0,1)")));
             }
             if nu == 0.5 {
                 return Err(invalid(
-                    "invalid parameter: ν = 1/2 decouples normal and shear stress: the stick zone is the whole contact (c = 1) for every μ".into(),
+                    "ν = 1/2 decouples normal and shear stress: the stick zone is the whole contact (c = 1) for every μ".into(),
                 ));
             }
             Ok((GIVEN_C, vec![("nu", nu), ("c", c)]))
         }
         Given::Mu(mu) => {
             if !(mu >= 0.0 && mu.is_finite()) {
-                return Err(invalid(format!(
-                    "invalid parameter: friction μ = {mu} must be finite and ≥ 0"
-                )));
+                return Err(invalid(format!("friction μ = {mu} must be finite and ≥ 0")));
             }
             if mu == 0.0 || nu == 0.5 {
                 Ok((NO_SHEAR, vec![("nu", nu)]))
