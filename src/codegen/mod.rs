@@ -258,6 +258,13 @@ fn header(out: &mut String, prog: &Program, sys: &CompiledSystem, from: &Provena
             }
         }
     }
+    if !sys.conditions.is_empty() {
+        let _ = writeln!(
+            out,
+            "//! - with its {} side condition(s) the system is solved as one least-squares\n//!   system of equations and conditions (every method but the commutative\n//!   model, which refuses them); the eliminations above are not used.",
+            sys.conditions.len()
+        );
+    }
     out.push_str("//!\n//! The system (parameters substituted):\n//!\n//! ```text\n");
     for line in crate::lang::pretty::pretty(prog).lines() {
         if line.is_empty() {
