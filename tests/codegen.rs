@@ -121,7 +121,16 @@ fn compare(source: &str, generated: &CompiledSystem) {
     for method in [Method::Coupled, Method::Ordered, Method::Commutative] {
         if method == Method::Commutative && !here.conditions.is_empty() {
             // The single-equation model takes no side conditions.
-            assert!(solve_system(generated, &SolveOptions { method, ..SolveOptions::default() }).is_err());
+            assert!(
+                solve_system(
+                    generated,
+                    &SolveOptions {
+                        method,
+                        ..SolveOptions::default()
+                    }
+                )
+                .is_err()
+            );
             continue;
         }
         let opts = SolveOptions {

@@ -40,8 +40,16 @@ const CASES: &[(&str, &str, &[&str])] = &[
         "point_value_not_constant",
         &["solve", "{}"],
     ),
-    ("side_condition_value", "side_condition_value", &["solve", "{}"]),
-    ("side_condition_split", "side_condition_split", &["solve", "{}"]),
+    (
+        "side_condition_value",
+        "side_condition_value",
+        &["solve", "{}"],
+    ),
+    (
+        "side_condition_split",
+        "side_condition_split",
+        &["solve", "{}"],
+    ),
     (
         "condition_not_a_functional",
         "condition_not_a_functional",

@@ -116,7 +116,11 @@ fn airfoil_equation_with_side_condition_unbounded_class() {
                condition int(-1..1) f(t) dt = 2\noutput V = f(1/2)\noutput W = int(-1..1) f(x) dx + 3*f(0)\n";
     let r = solve(src);
     assert!(r.method.contains("side condition"), "{}", r.method);
-    assert!(r.unknowns[0].weight.contains("-0.5"), "{}", r.unknowns[0].weight);
+    assert!(
+        r.unknowns[0].weight.contains("-0.5"),
+        "{}",
+        r.unknowns[0].weight
+    );
     let c = 2.0 / PI;
     let err = weighted_error(&r, |x| x + c);
     let v = r.outputs[0].1.expect("V");
@@ -151,7 +155,12 @@ fn contradicting_side_condition_is_not_converged() {
     assert!(r.error_estimate > 1e-3, "estimate {:.2e}", r.error_estimate);
     // The consistent condition ∫ f = 1 converges to f = 1.
     let r = solve(&src.replace("dx = 2", "dx = 1"));
-    check("consistent side condition", &r, grid_error(&r, 0, |_| 1.0), 1e-10);
+    check(
+        "consistent side condition",
+        &r,
+        grid_error(&r, 0, |_| 1.0),
+        1e-10,
+    );
 }
 
 #[test]
@@ -172,7 +181,11 @@ fn point_values_in_outputs_carry_the_estimate() {
 fn log_kernel_with_a_constant_inside() {
     // ln|3(x - t)| = ln|x - t| + ln 3 and ∫ ln|x-t|/√(1-t²) dt = -π ln 2,
     // so f = 1/(π ln(3/2) √(1-t²)) solves ∫ ln|3(x-t)| f dt = 1.
-    for k in ["ln(abs(3*x - 3*t))", "ln(abs(x - t)*3)", "2*ln(abs(3*(t - x)))/2"] {
+    for k in [
+        "ln(abs(3*x - 3*t))",
+        "ln(abs(x - t)*3)",
+        "2*ln(abs(3*(t - x)))/2",
+    ] {
         let src = format!("operator k = int(-1..1) {k} dt\nunknown f\nequation k f = 1\n");
         let r = solve(&src);
         let c = 1.0 / (PI * 1.5f64.ln());

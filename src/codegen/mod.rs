@@ -172,8 +172,7 @@ pub fn solver_source(
         &setup,
         &op_vars,
         &rhs_fns,
-        &output_terms,
-        &condition_terms,
+        (&output_terms, &condition_terms),
     );
     let mut out = String::new();
     header(&mut out, prog, &sys, from);
@@ -414,8 +413,7 @@ fn system_fn(
     setup: &str,
     op_vars: &[Option<String>],
     rhs_fns: &[String],
-    output_terms: &[Vec<String>],
-    condition_terms: &[Vec<String>],
+    (output_terms, condition_terms): (&[Vec<String>], &[Vec<String>]),
 ) {
     out.push_str("\n/// The compiled system, ready for `lambdamat::plan::solve_system`.\n");
     out.push_str("pub fn system() -> Result<CompiledSystem, PlanError> {\n");

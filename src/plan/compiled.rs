@@ -279,7 +279,10 @@ impl CompiledSystem {
         }
         for c in &self.conditions {
             if !c.value.is_finite() {
-                return invalid(format!("side condition {}: its value is not finite", c.text));
+                return invalid(format!(
+                    "side condition {}: its value is not finite",
+                    c.text
+                ));
             }
         }
         Ok(())
@@ -314,7 +317,9 @@ fn compile_terms(terms: &[FunctionalTerm]) -> Vec<OutputTerm> {
     terms
         .iter()
         .map(|t| match t {
-            FunctionalTerm::Constant(e) => OutputTerm::Constant(constant_value(e).unwrap_or(f64::NAN)),
+            FunctionalTerm::Constant(e) => {
+                OutputTerm::Constant(constant_value(e).unwrap_or(f64::NAN))
+            }
             FunctionalTerm::Integral {
                 coeff,
                 lower,

@@ -18,9 +18,9 @@ use std::str::FromStr;
 use nalgebra::{DMatrix, DVector};
 
 use crate::algebra::derivation::{Derivation, MAX_ELIMINANT_TERMS};
+use crate::numeric::Assembler;
 use crate::numeric::NumericError;
 use crate::numeric::elimination::{apply_to_values, commutator_defect_on, solve_blocks};
-use crate::numeric::Assembler;
 use crate::numeric::solve::{CheckedLu, block_matrix, least_squares};
 use crate::system::NcPoly;
 
@@ -87,13 +87,17 @@ pub struct LevelSolution {
     pub residual: f64,
 }
 
+/// A functional on the discrete unknowns: a row per unknown (`None` where
+/// it does not occur) and a constant.
+pub type FunctionalRows = (Vec<Option<DVector<f64>>>, f64);
+
 /// The row vectors of a linear functional on the unknowns' bases (one per
 /// unknown, `None` where it does not occur) and its constant part.
 pub fn functional_rows(
     d: &Discretisation,
     terms: &[OutputTerm],
     what: &str,
-) -> Result<(Vec<Option<DVector<f64>>>, f64), PlanError> {
+) -> Result<FunctionalRows, PlanError> {
     let mut rows: Vec<Option<DVector<f64>>> = vec![None; d.bases.len()];
     let mut constant = 0.0;
     for t in terms {
@@ -127,7 +131,11 @@ pub fn functional_rows(
                 if row.iter().any(|v| !v.is_finite()) {
                     return Err(PlanError::Invalid(format!(
                         "{what}: the unknown is not finite at x = {at} (its weight {} is singular there); take the point value elsewhere",
-                        if basis.weight_at(*at).is_finite() { "" } else { "in the trial space" }
+                        if basis.weight_at(*at).is_finite() {
+                            ""
+                        } else {
+                            "in the trial space"
+                        }
                     )));
                 }
                 (*unknown, DVector::from_vec(row) * *coeff)

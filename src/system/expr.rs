@@ -428,7 +428,10 @@ mod tests {
             let f = Func::from_name(name).expect(name);
             assert_eq!(f.name(), name);
             let got = f.apply(at);
-            assert!((got - want).abs() <= 1e-15, "{name}({at}) = {got}, not {want}");
+            assert!(
+                (got - want).abs() <= 1e-15,
+                "{name}({at}) = {got}, not {want}"
+            );
             let e = Expr::Call(f, b(Expr::X));
             assert_eq!(e.to_string(), format!("{name}(x)"));
             assert_eq!(e.eval(at, 0.0), got);
