@@ -227,7 +227,11 @@ fn header(out: &mut String, prog: &Program, sys: &CompiledSystem, from: &Provena
                     out,
                     "//! - ordered elimination, exact (`--method ordered`, the default; gj is\n//!   the right side of equation j):\n//!   `{}`\n//!   pivots: {}",
                     o.text,
-                    o.pivots.join("; ")
+                    if o.pivots.is_empty() {
+                        "none (one equation)".to_string()
+                    } else {
+                        o.pivots.join("; ")
+                    }
                 );
             }
             Err(e) => {

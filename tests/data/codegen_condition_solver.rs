@@ -12,7 +12,7 @@
 //! - ordered elimination, exact (`--method ordered`, the default; gj is
 //!   the right side of equation j):
 //!   `h f = g1`
-//!   pivots:
+//!   pivots: none (one equation)
 //! - commutative eliminant, the seed's model (`--method commutative`):
 //!   `h f = [1]`
 //!   commuted pairs: none
