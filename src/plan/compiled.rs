@@ -408,7 +408,7 @@ fn interval(prog: &Program) -> Result<((f64, f64), Vec<f64>), PlanError> {
     let hi = limits.iter().copied().fold(f64::NEG_INFINITY, f64::max);
     if !(lo.is_finite() && hi.is_finite() && lo < hi) {
         return Err(PlanError::Invalid(
-            "cannot tell the unknowns' interval: no integral has a nonzero constant limit".into(),
+            "cannot tell the unknowns' interval: no integral has a nonzero constant limit; state it, e.g. `unknown p on [0, 1]`".into(),
         ));
     }
     let mut interior: Vec<f64> = limits.into_iter().filter(|&z| z > lo && z < hi).collect();
