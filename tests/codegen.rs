@@ -21,6 +21,14 @@ mod mms_solver;
 #[path = "data/codegen_terms_solver.rs"]
 mod terms_solver;
 
+#[allow(dead_code)]
+#[path = "data/codegen_functions_solver.rs"]
+mod functions_solver;
+
+#[allow(dead_code)]
+#[path = "data/codegen_condition_solver.rs"]
+mod condition_solver;
+
 /// `lambdamat codegen SOURCE -o tmp` must give exactly the checked-in file.
 fn assert_regenerates(source: &str, golden: &str) {
     let dir = tempfile::tempdir().expect("temp dir");
@@ -51,6 +59,14 @@ fn generated_solvers_are_up_to_date() {
     assert_regenerates(
         "tests/data/codegen_terms.lmx",
         "tests/data/codegen_terms_solver.rs",
+    );
+    assert_regenerates(
+        "tests/data/codegen_functions.lmx",
+        "tests/data/codegen_functions_solver.rs",
+    );
+    assert_regenerates(
+        "tests/data/codegen_condition.lmx",
+        "tests/data/codegen_condition_solver.rs",
     );
 }
 
@@ -101,7 +117,22 @@ fn compare(source: &str, generated: &CompiledSystem) {
     assert_eq!(generated.target, here.target);
     assert_eq!(generated.domain, here.domain);
     assert_eq!(generated.interior, here.interior);
+    assert_eq!(generated.conditions.len(), here.conditions.len());
     for method in [Method::Coupled, Method::Ordered, Method::Commutative] {
+        if method == Method::Commutative && !here.conditions.is_empty() {
+            // The single-equation model takes no side conditions.
+            assert!(
+                solve_system(
+                    generated,
+                    &SolveOptions {
+                        method,
+                        ..SolveOptions::default()
+                    }
+                )
+                .is_err()
+            );
+            continue;
+        }
         let opts = SolveOptions {
             method,
             ..SolveOptions::default()
@@ -206,6 +237,23 @@ fn generated_solvers_embed_the_derivation_reduce_prints() {
     assert_eq!(embedded.len(), 19);
     assert_eq!(embedded, reduce_pivots(source, &here.unknowns));
     assert!(code.contains("//!   pivots: u2 from equation 2; u3 from equation 3;"));
+}
+
+#[test]
+fn generated_solver_with_every_function_matches() {
+    let sys = functions_solver::system().expect("generated system is consistent");
+    compare("tests/data/codegen_functions.lmx", &sys);
+}
+
+#[test]
+fn generated_solver_with_a_side_condition_matches() {
+    let sys = condition_solver::system().expect("generated system is consistent");
+    compare("tests/data/codegen_condition.lmx", &sys);
+    // f(1/2) = (1/2 + 2/π)/√(3/4).
+    let r = solve_system(&sys, &SolveOptions::default()).expect("solves");
+    let v = r.outputs[0].1.expect("V");
+    let exact = (0.5 + 2.0 / std::f64::consts::PI) / 0.75f64.sqrt();
+    assert!(r.converged && (v - exact).abs() < 1e-10, "{v} vs {exact}");
 }
 
 #[test]

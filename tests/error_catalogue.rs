@@ -36,6 +36,26 @@ const CASES: &[(&str, &str, &[&str])] = &[
     ("unsupported_kernel", "unsupported_kernel", &["solve", "{}"]),
     ("missing_pv", "missing_pv", &["solve", "{}"]),
     (
+        "point_value_not_constant",
+        "point_value_not_constant",
+        &["solve", "{}"],
+    ),
+    (
+        "side_condition_value",
+        "side_condition_value",
+        &["solve", "{}"],
+    ),
+    (
+        "side_condition_split",
+        "side_condition_split",
+        &["solve", "{}"],
+    ),
+    (
+        "condition_not_a_functional",
+        "condition_not_a_functional",
+        &["solve", "{}"],
+    ),
+    (
         "right_side_not_finite",
         "right_side_not_finite",
         &["solve", "{}"],

@@ -28,8 +28,8 @@ fn grid_error(r: &SolveReport, j: usize, exact: impl Fn(f64) -> f64) -> f64 {
 /// Converged, accurate to `tol`, and the estimate bounds the error.
 fn check(name: &str, r: &SolveReport, err: f64, tol: f64) {
     eprintln!(
-        "{name}: error {err:.2e}, estimate {:.2e}, level {}, dim {}",
-        r.error_estimate, r.level, r.dim
+        "{name}: error {err:.2e}, estimate {:.2e}, level {}, dim {}, cond {:.1e}",
+        r.error_estimate, r.level, r.dim, r.cond
     );
     assert!(r.converged, "{name}: not converged");
     assert!(err < tol, "{name}: error {err:.2e} ≥ {tol:.0e}");
@@ -95,6 +95,128 @@ fn airfoil_equation_bounded_solution() {
     let r = solve(src);
     let err = grid_error(&r, 0, |t| (1.0 - t * t).sqrt() * (1.0 + 2.0 * t));
     check("airfoil", &r, err, 1e-10);
+}
+
+/// Largest error of the weighted unknown `f·√(1-x²)` against `phi`.
+fn weighted_error(r: &SolveReport, phi: impl Fn(f64) -> f64) -> f64 {
+    let u = &r.unknowns[0];
+    assert!(u.x.len() > 90, "grid points left out");
+    u.x.iter()
+        .zip(&u.values)
+        .map(|(x, v)| (v * (1.0 - x * x).sqrt() - phi(*x)).abs() / phi(*x).abs().max(1.0))
+        .fold(0.0, f64::max)
+}
+
+#[test]
+fn airfoil_equation_with_side_condition_unbounded_class() {
+    // (1/π) PV∫ T_n(t)/(√(1-t²)(t-x)) dt = U_{n-1}(x) and 0 for n = 0:
+    // g = 1 has the solutions f = (t + c)/√(1-t²), and ∫_{-1}^1 f dt = cπ
+    // selects one. With ∫ f = 2: c = 2/π, so f(1/2) = (1/2 + 2/π)/√(3/4).
+    let src = "operator h = 1/pi*pv int(-1..1) 1/(t - x) dt\nunknown f\nequation h f = 1\n\
+               condition int(-1..1) f(t) dt = 2\noutput V = f(1/2)\noutput W = int(-1..1) f(x) dx + 3*f(0)\n";
+    let r = solve(src);
+    assert!(r.method.contains("side condition"), "{}", r.method);
+    assert!(
+        r.unknowns[0].weight.contains("-0.5"),
+        "{}",
+        r.unknowns[0].weight
+    );
+    let c = 2.0 / PI;
+    let err = weighted_error(&r, |x| x + c);
+    let v = r.outputs[0].1.expect("V");
+    let w = r.outputs[1].1.expect("W");
+    let err = err
+        .max((v - (0.5 + c) / 0.75f64.sqrt()).abs())
+        .max((w - (2.0 + 3.0 * c)).abs() / (2.0 + 3.0 * c));
+    check("airfoil, side condition, g = 1", &r, err, 1e-10);
+
+    // A solution that is not a polynomial times the weight: with a = 2,
+    // (1/π) ∫ 1/((a-t)√(1-t²)) dt = 1/√(a²-1) and the principal value of
+    // 1/(√(1-t²)(t-x)) vanishes, so φ = 1/(a - t) + c solves
+    // g = 1/((a - x)√(a²-1)) for every c, and ∫ f = π/√(a²-1) + cπ.
+    // With ∫ f = 1: c = 1/π - 1/√3.
+    let src = "operator h = 1/pi*pv int(-1..1) 1/(t - x) dt\nunknown f\n\
+               equation h f = 1/((2 - x)*sqrt(3))\ncondition int(-1..1) f(t) dt = 1\n";
+    let r = solve(src);
+    let c = 1.0 / PI - 1.0 / 3f64.sqrt();
+    let err = weighted_error(&r, |x| 1.0 / (2.0 - x) + c);
+    check("airfoil, side condition, g = 1/((2-x)√3)", &r, err, 1e-10);
+}
+
+#[test]
+fn contradicting_side_condition_is_not_converged() {
+    // f - ∫_0^1 x t f dt = 1 - x/2 has the one solution f = 1, so ∫ f = 2
+    // cannot hold: the least-squares residual stays and the answer is
+    // marked unconverged.
+    let src = "operator k = id - int(0..1) x*t dt\nunknown f\nequation k f = 1 - x/2\n\
+               condition int(0..1) f(x) dx = 2\n";
+    let r = solve(src);
+    assert!(!r.converged, "estimate {:.2e}", r.error_estimate);
+    assert!(r.error_estimate > 1e-3, "estimate {:.2e}", r.error_estimate);
+    // The consistent condition ∫ f = 1 converges to f = 1.
+    let r = solve(&src.replace("dx = 2", "dx = 1"));
+    check(
+        "consistent side condition",
+        &r,
+        grid_error(&r, 0, |_| 1.0),
+        1e-10,
+    );
+}
+
+#[test]
+fn point_values_in_outputs_carry_the_estimate() {
+    // Volterra f + ∫_0^x f dt = 1 on [0, 2] (declared: no output needed
+    // to fix the interval): f = exp(-x).
+    let src = "operator k = id + int(0..x) dt\nunknown f on [0, 2]\nequation k f = 1\n\
+               output P = f(1/2) - 2*f(3/2) + int(0..1) f(x) dx\n";
+    let r = solve(src);
+    assert_eq!(r.domain, (0.0, 2.0));
+    let exact = (-0.5f64).exp() - 2.0 * (-1.5f64).exp() + 1.0 - (-1.0f64).exp();
+    let p = r.outputs[0].1.expect("P");
+    let err = (p - exact).abs().max(grid_error(&r, 0, |x| (-x).exp()));
+    check("point values", &r, err, 1e-10);
+}
+
+#[test]
+fn log_kernel_with_a_constant_inside() {
+    // ln|3(x - t)| = ln|x - t| + ln 3 and ∫ ln|x-t|/√(1-t²) dt = -π ln 2,
+    // so f = 1/(π ln(3/2) √(1-t²)) solves ∫ ln|3(x-t)| f dt = 1.
+    for k in [
+        "ln(abs(3*x - 3*t))",
+        "ln(abs(x - t)*3)",
+        "2*ln(abs(3*(t - x)))/2",
+    ] {
+        let src = format!("operator k = int(-1..1) {k} dt\nunknown f\nequation k f = 1\n");
+        let r = solve(&src);
+        let c = 1.0 / (PI * 1.5f64.ln());
+        check(k, &r, weighted_error(&r, |_| c), 1e-10);
+    }
+}
+
+#[test]
+fn every_function_in_kernels_and_right_sides() {
+    // f - ∫_0^1 x F(t) f(t) dt = 1 - x ∫_0^1 F has the solution f = 1;
+    // the integral is written with the functions themselves.
+    let cases = [
+        ("sin(t)", "1 - cos(1)"),
+        ("cos(t)", "sin(1)"),
+        ("tan(t)", "-ln(cos(1))"),
+        ("asin(t/2)", "pi/6 + sqrt(3) - 2"),
+        ("acos(t/2)", "pi/3 - sqrt(3) + 2"),
+        ("atan(t)", "pi/4 - ln(2)/2"),
+        ("acot(t)", "pi/4 + ln(2)/2"),
+        ("sinh(t)", "cosh(1) - 1"),
+        ("cosh(t)", "sinh(1)"),
+        ("tanh(t)", "ln(cosh(1))"),
+    ];
+    for (f, integral) in cases {
+        let src = format!(
+            "operator k = id - int(0..1) x*{f} dt\nunknown u\nequation k u = 1 - x*({integral})\noutput I = int(0..1) u(x) dx\n"
+        );
+        let r = solve(&src);
+        let err = grid_error(&r, 0, |_| 1.0).max((r.outputs[0].1.expect("I") - 1.0).abs());
+        check(f, &r, err, 1e-12);
+    }
 }
 
 #[test]

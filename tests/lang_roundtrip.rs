@@ -66,6 +66,16 @@ fn awkward_shapes_round_trip() {
     );
 }
 
+#[test]
+fn side_conditions_point_values_and_functions_round_trip() {
+    round_trip(
+        "operator h = 1/pi*pv int(-1..1) sin(t)*cosh(x)/(t - x) dt\nunknown f on [-1, 1]\n\
+         equation h f = tanh(x) + acot(x)\n\
+         condition int(-1..1) f(t) dt - 2*f(1/2) + 1 = asin(1/2)\ncondition f(0) = 0\n\
+         output V = f(1/2) - 3*int(0..1) x*f(x) dx\n",
+    );
+}
+
 // ───────────────────────────── generators ─────────────────────────────
 
 /// A small rational literal, possibly a fraction or a decimal.

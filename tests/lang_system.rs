@@ -506,7 +506,8 @@ fn reserved_variables_cannot_be_names_and_keywords_neither() {
 fn outputs_must_be_linear() {
     let all = summary(
         "operator a = id\nunknown p\nequation a p = 1\n\
-         output A = int(0..1) p(x)^2 dx\noutput B = int(0..1) x dx\noutput C = p(1/2)\n",
+         output A = int(0..1) p(x)^2 dx\noutput B = int(0..1) x dx\noutput C = p(1/2)^2\n\
+         output D = p(1/2) + 2*int(0..1) p(x) dx\n",
     );
     let got: Vec<_> = all
         .iter()

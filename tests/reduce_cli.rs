@@ -211,3 +211,23 @@ fn products_out_of_table_order_are_shown_beside_their_image() {
     let v = json(&["reduce", "examples/hertz_stick.lmx"]);
     assert_eq!(v["notes"], json!([]));
 }
+
+#[test]
+fn principal_values_and_side_conditions_are_shown() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let path = dir.path().join("airfoil.lmx");
+    std::fs::write(
+        &path,
+        "operator h = 1/pi*pv int(-1..1) 1/(t - x) dt\nunknown f\nequation h f = 1\n\
+         condition int(-1..1) f(t) dt = 2\n",
+    )
+    .expect("write");
+    let f = path.to_str().expect("utf-8 path");
+    let text = stdout(&["reduce", f]);
+    assert!(text.contains("PV ∫_(-1)^1"), "{text}");
+    assert!(
+        text.contains("note: 1 side condition (condition int(-1..1) f(x) dx = 2)"),
+        "{text}"
+    );
+    assert!(text.contains("least squares"), "{text}");
+}

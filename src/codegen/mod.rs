@@ -168,52 +168,26 @@ fn system_code(
     // Output weights.
     let mut output_terms: Vec<Vec<String>> = Vec::new();
     for (o, compiled) in prog.outputs.iter().zip(&sys.outputs) {
-        let mut terms = Vec::new();
-        let multiple = o.terms.len() > 1;
-        for (k, (t, ct)) in o.terms.iter().zip(&compiled.terms).enumerate() {
-            match (t, ct) {
-                (FunctionalTerm::Constant(_), OutputTerm::Constant(c)) => {
-                    terms.push(format!("OutputTerm::Constant({})", literal(*c)));
-                }
-                (
-                    FunctionalTerm::Integral { weight, .. },
-                    OutputTerm::Integral {
-                        coeff,
-                        lower,
-                        upper,
-                        unknown,
-                        ..
-                    },
-                ) => {
-                    let suffix = if multiple {
-                        format!("_{}", k + 1)
-                    } else {
-                        String::new()
-                    };
-                    let f = names.fresh(&format!("weight_{}{suffix}", o.name));
-                    let doc = format!("Weight of output `{}`: `{weight}`.", o.name);
-                    function_x(&mut fns, &f, &doc, weight);
-                    terms.push(struct_lit(
-                        "OutputTerm::Integral",
-                        &[
-                            ("coeff", literal(*coeff)),
-                            ("lower", literal(*lower)),
-                            ("upper", literal(*upper)),
-                            ("weight", format!("Arc::new({f})")),
-                            ("unknown", unknown.to_string()),
-                        ],
-                        4,
-                    ));
-                }
-                _ => {
-                    return Err(PlanError::Invalid(format!(
-                        "internal: output {} compiled out of order",
-                        o.name
-                    )));
-                }
-            }
-        }
-        output_terms.push(terms);
+        output_terms.push(functional_code(
+            &mut names,
+            &mut fns,
+            &format!("output `{}`", o.name),
+            &format!("weight_{}", o.name),
+            &o.terms,
+            &compiled.terms,
+        )?);
+    }
+    // Side conditions: their weights, like outputs'.
+    let mut condition_terms: Vec<Vec<String>> = Vec::new();
+    for (k, (c, compiled)) in prog.side_conditions.iter().zip(&sys.conditions).enumerate() {
+        condition_terms.push(functional_code(
+            &mut names,
+            &mut fns,
+            &format!("side condition {}", k + 1),
+            &format!("condition_weight_{}", k + 1),
+            &c.terms,
+            &compiled.terms,
+        )?);
     }
 
     let mut code = fns;
@@ -224,7 +198,7 @@ fn system_code(
         &setup,
         &op_vars,
         &rhs_fns,
-        &output_terms,
+        (&output_terms, &condition_terms),
     );
     Ok((sys, code))
 }
@@ -268,7 +242,11 @@ fn header(out: &mut String, prog: &Program, sys: &CompiledSystem, from: &Provena
                     out,
                     "//! - ordered elimination, exact (`--method ordered`, the default; gj is\n//!   the right side of equation j):\n//!   `{}`\n//!   pivots: {}",
                     o.text,
-                    o.pivots.join("; ")
+                    if o.pivots.is_empty() {
+                        "none (one equation)".to_string()
+                    } else {
+                        o.pivots.join("; ")
+                    }
                 );
             }
             Err(e) => match &r.ordered_steps {
@@ -314,6 +292,13 @@ fn header(out: &mut String, prog: &Program, sys: &CompiledSystem, from: &Provena
             }
         }
     }
+    if !sys.conditions.is_empty() {
+        let _ = writeln!(
+            out,
+            "//! - with its {} side condition(s) the system is solved as one least-squares\n//!   system of equations and conditions (every method but the commutative\n//!   model, which refuses them); the eliminations above are not used.",
+            sys.conditions.len()
+        );
+    }
     out.push_str("//!\n//! The system (parameters substituted):\n//!\n//! ```text\n");
     for line in crate::lang::pretty::pretty(prog).lines() {
         if line.is_empty() {
@@ -355,6 +340,7 @@ fn imports(code: &str) -> String {
         (
             "lambdamat::plan::compiled",
             &[
+                "CompiledCondition",
                 "CompiledEquation",
                 "CompiledOutput",
                 "CompiledSystem",
@@ -415,6 +401,75 @@ fn imports(code: &str) -> String {
 }
 
 #[allow(clippy::too_many_arguments)]
+/// The generated terms of one functional (an output or a side
+/// condition): `OutputTerm` literals, with a Rust function for each weight
+/// (named from `weight_name`).
+fn functional_code(
+    names: &mut Names,
+    fns: &mut String,
+    label: &str,
+    weight_name: &str,
+    terms: &[FunctionalTerm],
+    compiled: &[OutputTerm],
+) -> Result<Vec<String>, PlanError> {
+    let mut out = Vec::new();
+    let multiple = terms.len() > 1;
+    for (k, (t, ct)) in terms.iter().zip(compiled).enumerate() {
+        match (t, ct) {
+            (FunctionalTerm::Constant(_), OutputTerm::Constant(c)) => {
+                out.push(format!("OutputTerm::Constant({})", literal(*c)));
+            }
+            (
+                FunctionalTerm::Integral { weight, .. },
+                OutputTerm::Integral {
+                    coeff,
+                    lower,
+                    upper,
+                    unknown,
+                    ..
+                },
+            ) => {
+                let suffix = if multiple {
+                    format!("_{}", k + 1)
+                } else {
+                    String::new()
+                };
+                let f = names.fresh(&format!("{weight_name}{suffix}"));
+                let doc = format!("Weight of {label}: `{weight}`.");
+                function_x(fns, &f, &doc, weight);
+                out.push(struct_lit(
+                    "OutputTerm::Integral",
+                    &[
+                        ("coeff", literal(*coeff)),
+                        ("lower", literal(*lower)),
+                        ("upper", literal(*upper)),
+                        ("weight", format!("Arc::new({f})")),
+                        ("unknown", unknown.to_string()),
+                    ],
+                    4,
+                ));
+            }
+            (FunctionalTerm::Point { .. }, OutputTerm::Point { coeff, at, unknown }) => {
+                out.push(struct_lit(
+                    "OutputTerm::Point",
+                    &[
+                        ("coeff", literal(*coeff)),
+                        ("at", literal(*at)),
+                        ("unknown", unknown.to_string()),
+                    ],
+                    4,
+                ));
+            }
+            _ => {
+                return Err(PlanError::Invalid(format!(
+                    "internal: {label} compiled out of order"
+                )));
+            }
+        }
+    }
+    Ok(out)
+}
+
 fn system_fn(
     out: &mut String,
     prog: &Program,
@@ -422,7 +477,7 @@ fn system_fn(
     setup: &str,
     op_vars: &[Option<String>],
     rhs_fns: &[String],
-    output_terms: &[Vec<String>],
+    (output_terms, condition_terms): (&[Vec<String>], &[Vec<String>]),
 ) {
     out.push_str("\n/// The compiled system, ready for `lambdamat::plan::solve_system`.\n");
     out.push_str("pub fn system() -> Result<CompiledSystem, PlanError> {\n");
@@ -482,6 +537,27 @@ fn system_fn(
         let _ = writeln!(out, "    let {var} = {lit};");
         out_vars.push(var);
     }
+    let mut cond_vars = Vec::new();
+    for (k, (c, terms)) in sys.conditions.iter().zip(condition_terms).enumerate() {
+        let mut term_vars = Vec::new();
+        for (j, t) in terms.iter().enumerate() {
+            let var = format!("condition_{}_term_{}", k + 1, j + 1);
+            let _ = writeln!(out, "    let {var} = {t};");
+            term_vars.push(var);
+        }
+        let var = format!("condition_{}", k + 1);
+        let lit = struct_lit(
+            "CompiledCondition",
+            &[
+                ("terms", vec_expr(&term_vars, 8)),
+                ("value", literal(c.value)),
+                ("text", format!("{:?}.into()", c.text)),
+            ],
+            4,
+        );
+        let _ = writeln!(out, "    let {var} = {lit};");
+        cond_vars.push(var);
+    }
     let _ = writeln!(out, "    let sys = CompiledSystem {{");
     let symbols: Vec<String> = prog
         .symbols
@@ -505,6 +581,7 @@ fn system_fn(
     list_field(out, "unknowns", &unknowns);
     list_field(out, "equations", &eq_vars);
     list_field(out, "outputs", &out_vars);
+    list_field(out, "conditions", &cond_vars);
     let _ = writeln!(out, "        target: {},", sys.target);
     let _ = writeln!(out, "        principal: {:?},", sys.principal);
     // The derivation's pivot sequence, embedded: the solver refuses to run
@@ -633,6 +710,9 @@ fn kernel_fn(out: &mut String, name: &str, sym: &str, written: &Expr, k: &Kernel
             match s {
                 Singularity::Log => "its smooth factor a(x, t) with kernel = a(x, t) ln|x - t|",
                 Singularity::Cauchy => "its smooth factor a(x, t) with kernel = a(x, t)/(t - x)",
+                Singularity::Smooth => {
+                    "its smooth part a(x, t) ln|c| with kernel = a(x, t) ln|c (x - t)|"
+                }
                 _ => "its smooth factor a(x, t) with kernel = a(x, t) |x - t|^(-β)",
             },
         ),

@@ -242,15 +242,17 @@ impl Body {
                     self.call("powf", vec![a, b])
                 }
             },
+            Expr::Call(Func::Acot, a) => {
+                let a = self.node(a);
+                let a = self.fit(vec![a]).pop().expect("one");
+                Code::new(
+                    format!("lambdamat::system::expr::acot({})", a.text),
+                    Prec::Atom,
+                )
+            }
             Expr::Call(f, a) => {
                 let a = self.node(a);
-                let name = match f {
-                    Func::Sqrt => "sqrt",
-                    Func::Ln => "ln",
-                    Func::Abs => "abs",
-                    Func::Exp => "exp",
-                };
-                self.call(name, vec![a])
+                self.call(f.name(), vec![a])
             }
             // Constants and π are folded above.
             Expr::Const(_) | Expr::Pi => lit(e.eval(0.0, 0.0)),

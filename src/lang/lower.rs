@@ -13,13 +13,15 @@ use super::ast::{BinOp, Expr, ExprKind, File, Ident, IntVar, Sign, Stmt};
 use super::error::{ErrorKind, LangError};
 use super::scope::{Entry, Scope, Sort};
 use super::validate::Validated;
-use super::validate_system::{contains_operator, split_term};
+use super::validate_system::{
+    contains_functional, contains_operator, is_side_condition, split_term,
+};
 use crate::algebra::mpoly::MPoly;
 use crate::algebra::ncpoly::NcPoly;
 use crate::system::expr::{Expr as SExpr, Func};
 use crate::system::{
     Directive, Equation, FunctionalTerm, Limit, MatrixDef, OperatorDef, Output, Param, Program,
-    Term,
+    SideCondition, Term,
 };
 
 fn internal(e: &Expr) -> LangError {
@@ -66,6 +68,7 @@ pub fn lower(file: &File, v: &Validated) -> Result<Program, LangError> {
         operators: Vec::new(),
         equations: Vec::new(),
         outputs: Vec::new(),
+        side_conditions: Vec::new(),
         contact: super::lower_contact::lower_contact(file, scope)?,
     };
     let unknown_index = |id: &Ident| match scope.get(&id.name) {
@@ -157,6 +160,12 @@ pub fn lower(file: &File, v: &Validated) -> Result<Program, LangError> {
                 name: name.name.clone(),
                 terms: output_terms(body, scope)?,
             }),
+            Stmt::Condition { lhs, rhs } if is_side_condition(lhs, scope) => {
+                program.side_conditions.push(SideCondition {
+                    terms: output_terms(lhs, scope)?,
+                    value: fexpr(rhs, scope)?,
+                })
+            }
             Stmt::Var(_)
             | Stmt::Param { .. }
             | Stmt::Unknown(..)
@@ -356,15 +365,6 @@ fn t_to_x(e: SExpr) -> SExpr {
     }
 }
 
-fn contains_integral(e: &Expr) -> bool {
-    match &e.kind {
-        ExprKind::Integral { .. } => true,
-        ExprKind::Neg(a) | ExprKind::Call(_, a) => contains_integral(a),
-        ExprKind::Binary(_, a, b) => contains_integral(a) || contains_integral(b),
-        _ => false,
-    }
-}
-
 fn negate_term(t: FunctionalTerm) -> FunctionalTerm {
     scale_term(t, sneg)
 }
@@ -383,6 +383,11 @@ fn scale_term(t: FunctionalTerm, f: impl Fn(SExpr) -> SExpr) -> FunctionalTerm {
             lower,
             upper,
             weight,
+            unknown,
+        },
+        FunctionalTerm::Point { coeff, at, unknown } => FunctionalTerm::Point {
+            coeff: f(coeff),
+            at,
             unknown,
         },
     }
@@ -412,6 +417,28 @@ fn output_terms(e: &Expr, scope: &Scope) -> Result<Vec<FunctionalTerm>, LangErro
                 })
                 .collect()
         }
+        ExprKind::Call(f, arg)
+            if matches!(
+                scope.get(&f.name),
+                Some(Entry {
+                    sort: Sort::Unknown(_),
+                    ..
+                })
+            ) =>
+        {
+            let Some(Entry {
+                sort: Sort::Unknown(u),
+                ..
+            }) = scope.get(&f.name)
+            else {
+                return Err(internal(e));
+            };
+            vec![FunctionalTerm::Point {
+                coeff: SExpr::Const(BigRational::one()),
+                at: constant(arg, scope).ok_or_else(|| internal(arg))?,
+                unknown: u,
+            }]
+        }
         ExprKind::Neg(a) => output_terms(a, scope)?
             .into_iter()
             .map(negate_term)
@@ -426,11 +453,11 @@ fn output_terms(e: &Expr, scope: &Scope) -> Result<Vec<FunctionalTerm>, LangErro
             v.extend(output_terms(b, scope)?.into_iter().map(negate_term));
             v
         }
-        ExprKind::Binary(BinOp::Mul | BinOp::Div, _, _) if !contains_integral(e) => {
+        ExprKind::Binary(BinOp::Mul | BinOp::Div, _, _) if !contains_functional(e, scope) => {
             vec![FunctionalTerm::Constant(fexpr(e, scope)?)]
         }
         ExprKind::Binary(BinOp::Mul, a, b) => {
-            if contains_integral(a) {
+            if contains_functional(a, scope) {
                 let g = fexpr(b, scope)?;
                 output_terms(a, scope)?
                     .into_iter()
@@ -451,7 +478,7 @@ fn output_terms(e: &Expr, scope: &Scope) -> Result<Vec<FunctionalTerm>, LangErro
                 .map(|t| scale_term(t, |c| sdiv(c, g.clone())))
                 .collect()
         }
-        _ if !contains_integral(e) => vec![FunctionalTerm::Constant(fexpr(e, scope)?)],
+        _ if !contains_functional(e, scope) => vec![FunctionalTerm::Constant(fexpr(e, scope)?)],
         _ => return Err(internal(e)),
     })
 }

@@ -228,7 +228,9 @@ pub fn lower_contact(file: &File, scope: &Scope) -> Result<Contact, LangError> {
                     kind,
                 });
             }
-            Stmt::Condition { lhs, rhs } => {
+            Stmt::Condition { lhs, rhs }
+                if !super::validate_system::is_side_condition(lhs, scope) =>
+            {
                 let k = match &lhs.kind {
                     ExprKind::Name(id) => match scope.get(&id.name) {
                         Some(Entry {

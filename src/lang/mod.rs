@@ -56,9 +56,10 @@
 //!   is applied to (`k4*k1 p`, or `k4*k1*p`); the right side is a function of
 //!   `x`. There must be as many equations as unknowns.
 //! * An output is a constant plus constant multiples of `int(a..b) w*p(x) dx`
-//!   (or `… p(t) dt`), linear in the unknowns, with constant limits.
-//! * Reserved words: `var principal matrix smith check with param unknown
-//!   operator equation solve for output int id pi sqrt ln abs exp dt dx`;
+//!   (or `… p(t) dt`) and of point values `p(1/2)`, linear in the unknowns,
+//!   with constant limits and points; a side condition
+//!   `condition int(-1..1) f(t) dt = 1` fixes such a functional.
+//! * Reserved words: see [`keywords::KEYWORDS`];
 //!   `x` and `t` cannot name parameters, unknowns, operators or outputs.
 //! * Limits that keep every pass safe: brackets nest at most
 //!   [`parser::MAX_NESTING`] deep, expression trees at most

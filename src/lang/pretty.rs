@@ -11,7 +11,7 @@ use num_traits::One;
 use crate::algebra::print::{Node, PrintOptions, print};
 
 use crate::system::{
-    Directive, Expr, FunctionalTerm, Limit, MatrixDef, OperatorDef, Program, Term,
+    Directive, Expr, FunctionalTerm, Limit, MatrixDef, OperatorDef, Program, SideCondition, Term,
 };
 
 /// An interval in source syntax.
@@ -177,6 +177,9 @@ pub fn pretty(program: &Program) -> String {
         };
         let _ = writeln!(out, "output {} = {body}", o.name);
     }
+    for sc in &program.side_conditions {
+        let _ = writeln!(out, "{}", side_condition(sc, &program.unknowns));
+    }
     let matrix_name = |i: usize| program.matrices.get(i).map_or("?", |m| m.name.as_str());
     for d in &program.directives {
         let _ = match d {
@@ -249,8 +252,27 @@ fn operator_body(def: &OperatorDef) -> String {
         .join(" + ")
 }
 
+/// A side condition as source: `condition int(-1..1) f(x) dx = 1`.
+pub fn side_condition(c: &SideCondition, unknowns: &[String]) -> String {
+    let terms: Vec<String> = c
+        .terms
+        .iter()
+        .map(|t| functional_term(t, unknowns))
+        .collect();
+    format!("condition {} = {}", terms.join(" + "), c.value)
+}
+
 fn functional_term(t: &FunctionalTerm, unknowns: &[String]) -> String {
     match t {
+        FunctionalTerm::Point { coeff, at, unknown } => {
+            let name = unknowns.get(*unknown).map_or("?", String::as_str);
+            let point = format!("{name}({})", Expr::Const(at.clone()));
+            if coeff.as_const().is_some_and(|c| c.is_one()) {
+                point
+            } else {
+                format!("{}*{point}", factor(coeff))
+            }
+        }
         FunctionalTerm::Constant(c) => format!("({c})"),
         FunctionalTerm::Integral {
             coeff,

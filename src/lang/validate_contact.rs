@@ -5,7 +5,7 @@
 //! program (that is `lower_contact.rs`) or touches the operator part.
 use num_traits::Signed;
 
-use super::ast::{BinOp, Expr, ExprKind, Ident, Interval};
+use super::ast::{BinOp, Expr, ExprKind, File, Ident, Interval, Span, Stmt};
 use super::error::{ErrorKind, LangError};
 use super::scope::{Entry, Sort};
 use super::validate::Validator;
@@ -94,7 +94,7 @@ fn wrong(e: &Expr, msg: impl Into<String>, label: &str, help: &str) -> LangError
 
 impl Validator {
     /// Whether `e` is a real constant (numbers, `pi`, parameters defined
-    /// so far, scalars, `sqrt ln abs exp atan acot`, `+ - * / ^`; and `x`
+    /// so far, scalars, `the functions, `+ - * / ^`; and `x`
     /// when `allow_x`), reporting every error.
     pub(super) fn real_expr(&mut self, e: &Expr, allow_x: bool) -> bool {
         match &e.kind {
@@ -177,7 +177,10 @@ impl Validator {
                             f.span,
                             "not a function",
                         )
-                        .with_help("functions: sqrt, ln, abs, exp, atan, acot"),
+                        .with_help(format!(
+                            "functions: {}",
+                            super::validate_system::function_list()
+                        )),
                     );
                 }
                 self.real_expr(a, allow_x) && ok
@@ -315,8 +318,14 @@ impl Validator {
         }
     }
 
-    /// `condition B = value`.
+    /// `condition B = value`, or a side condition `functional = value`
+    /// (an output's body, linear in the unknowns, fixed to a constant).
     pub(super) fn condition(&mut self, lhs: &Expr, rhs: &Expr) {
+        if super::validate_system::is_side_condition(lhs, &self.scope) {
+            self.output_body(lhs);
+            self.side_value(rhs);
+            return;
+        }
         let ok = matches!(&lhs.kind, ExprKind::Name(id) if matches!(
             self.scope.get(&id.name),
             Some(Entry { sort: Sort::Coefficient(_), .. })
@@ -326,9 +335,48 @@ impl Validator {
                 lhs,
                 "a condition must set the coefficient of a singular term",
                 "not a singular coefficient",
-                "declare `singular q at c- ~ B*g(x)` and write `condition B = 0`",
+                "declare `singular q at c- ~ B*g(x)` and write `condition B = 0`, or state a side condition on the unknowns: `condition int(-1..1) f(t) dt = 1`",
             ));
         }
         self.real_expr(rhs, false);
+    }
+
+    /// Side conditions are rows of the one-interval solver: a file with
+    /// split-domain statements cannot have them.
+    pub(super) fn side_conditions_on_one_interval(&mut self, file: &File) {
+        let split = file.statements.iter().any(|s| match &s.kind {
+            Stmt::Relation { .. } | Stmt::Scalar { .. } | Stmt::Singular { .. } => true,
+            Stmt::Equation { domain, .. } => domain.is_some(),
+            Stmt::Condition { lhs, .. } => {
+                !super::validate_system::is_side_condition(lhs, &self.scope)
+            }
+            _ => false,
+        });
+        if !split {
+            return;
+        }
+        let sides: Vec<Span> = file
+            .statements
+            .iter()
+            .filter_map(|s| match &s.kind {
+                Stmt::Condition { lhs, .. }
+                    if super::validate_system::is_side_condition(lhs, &self.scope) =>
+                {
+                    Some(lhs.span)
+                }
+                _ => None,
+            })
+            .collect();
+        for span in sides {
+            self.err(
+                LangError::new(
+                    ErrorKind::Unsupported,
+                    "side conditions on the unknowns are for systems on one interval; this file has split-domain statements",
+                    span,
+                    "side condition",
+                )
+                .with_help("remove the `on` intervals, relations, scalars and singular declarations, or the side condition"),
+            );
+        }
     }
 }

@@ -9,7 +9,7 @@ use num_traits::Zero;
 
 use super::ast::{BinOp, Expr, ExprKind, File, Ident, IntVar, LhsTerm, Stmt};
 use super::error::{ErrorKind, LangError};
-use super::scope::{Entry, Sort};
+use super::scope::{Entry, Scope, Sort};
 use super::validate::{MAX_DEGREE, PolyCtx, Validator, division_by_zero};
 use crate::system::Func;
 
@@ -200,7 +200,7 @@ impl Validator {
                             f.span,
                             "not a function",
                         )
-                        .with_help("the functions are sqrt, ln, abs and exp"),
+                        .with_help(format!("the functions are {}", function_list())),
                     );
                 }
             }
@@ -300,9 +300,10 @@ impl Validator {
                     "not declared",
                 )
                 .with_help(format!(
-                    "{} may use {}parameters, numbers, pi and sqrt, ln, abs, exp",
+                    "{} may use {}parameters, numbers, pi and the functions {}",
                     place.what(),
-                    place.variables()
+                    place.variables(),
+                    function_list()
                 )),
             ),
         }
@@ -677,6 +678,27 @@ impl Validator {
                     ),
                 }
             }
+            ExprKind::Call(f, arg) if self.is_unknown(&f.name) => {
+                if self.mentions_variable(arg) {
+                    self.err(
+                        LangError::new(
+                            ErrorKind::BadVariable,
+                            format!(
+                                "a point value `{}(…)` in an output or condition must be taken at a constant",
+                                f.name
+                            ),
+                            arg.span,
+                            "not a constant",
+                        )
+                        .with_help(format!(
+                            "write e.g. `{0}(1/2)`, or integrate: `int(0..1) {0}(x) dx`",
+                            f.name
+                        )),
+                    );
+                } else {
+                    self.constant(arg);
+                }
+            }
             ExprKind::Neg(a) => self.output_body(a),
             ExprKind::Binary(BinOp::Add | BinOp::Sub, a, b) => {
                 for side in [a, b] {
@@ -684,7 +706,10 @@ impl Validator {
                 }
             }
             ExprKind::Binary(op @ (BinOp::Mul | BinOp::Div), a, b) => {
-                match (contains_integral(a), contains_integral(b)) {
+                match (
+                    contains_functional(a, &self.scope),
+                    contains_functional(b, &self.scope),
+                ) {
                     (true, true) => self.err(LangError::new(
                         ErrorKind::NonLinear,
                         "a product or quotient of two integrals is not linear in the unknowns",
@@ -715,8 +740,25 @@ impl Validator {
         }
     }
 
+    /// The value of a side condition: a constant.
+    pub(super) fn side_value(&mut self, e: &Expr) {
+        if contains_functional(e, &self.scope) {
+            self.err(
+                LangError::new(
+                    ErrorKind::NonLinear,
+                    "the right side of a side condition must be a constant",
+                    e.span,
+                    "uses an unknown",
+                )
+                .with_help("move every term with an unknown to the left: `condition int(-1..1) f(t) dt - f(0) = 1`"),
+            );
+        } else {
+            self.func(e, Place::OutputConst);
+        }
+    }
+
     fn output_part(&mut self, e: &Expr) {
-        if contains_integral(e) {
+        if contains_functional(e, &self.scope) {
             self.output_body(e);
         } else {
             self.func(e, Place::OutputConst);
@@ -853,11 +895,40 @@ impl Validator {
 }
 
 /// Whether `e` contains an integral.
-fn contains_integral(e: &Expr) -> bool {
+/// The function names, for messages: `sqrt, ln, …, tanh`.
+pub(super) fn function_list() -> String {
+    crate::system::expr::FUNCS
+        .iter()
+        .map(|f| f.name())
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// Whether `condition lhs = …` is a side condition of the unknowns
+/// (`condition int(-1..1) f(t) dt = 1`, `condition p(0) = 0`) rather than
+/// one fixing a singular coefficient of a split problem (`condition B = 0`).
+pub(crate) fn is_side_condition(lhs: &Expr, scope: &Scope) -> bool {
+    contains_functional(lhs, scope)
+}
+
+/// Whether `e` contains a term of a functional: an integral or a point
+/// value `p(c)` of an unknown.
+pub(super) fn contains_functional(e: &Expr, scope: &Scope) -> bool {
     match &e.kind {
         ExprKind::Integral { .. } => true,
-        ExprKind::Neg(a) | ExprKind::Call(_, a) => contains_integral(a),
-        ExprKind::Binary(_, a, b) => contains_integral(a) || contains_integral(b),
+        ExprKind::Call(f, _)
+            if matches!(
+                scope.get(&f.name),
+                Some(Entry {
+                    sort: Sort::Unknown(_),
+                    ..
+                })
+            ) =>
+        {
+            true
+        }
+        ExprKind::Neg(a) | ExprKind::Call(_, a) => contains_functional(a, scope),
+        ExprKind::Binary(_, a, b) => contains_functional(a, scope) || contains_functional(b, scope),
         _ => false,
     }
 }

@@ -183,6 +183,22 @@ impl PanelBasis {
             .collect()
     }
 
+    /// Row vector of the point evaluation `f ↦ f(t) = W(t) φ(t)` (zero
+    /// outside the support; not finite where the weight is not).
+    pub fn point_row(&self, t: f64) -> Vec<f64> {
+        let mut row = vec![0.0; self.dim];
+        if let Some(k) = self.panel_of(t) {
+            let p = &self.panels[k];
+            let mut l = vec![0.0; p.nodes.len()];
+            p.lagrange(t, &mut l);
+            let w = self.weight_at(t);
+            for (i, v) in l.iter().enumerate() {
+                row[p.offset + i] = v * w;
+            }
+        }
+        row
+    }
+
     /// `f(t) = W(t) φ(t)` for coefficients `coef` (zero outside the support).
     pub fn eval(&self, coef: &[f64], t: f64) -> f64 {
         let Some(k) = self.panel_of(t) else {

@@ -1,7 +1,9 @@
 //! Dense solves that refuse to return meaningless numbers: LU with column
 //! equilibration and a Hager–Higham estimate of the 1-norm condition number;
 //! a singular or too ill-conditioned system is a [`NumericError`], never a
-//! result. Also block-matrix assembly helpers. This file owns linear
+//! result. Also least squares for systems with more rows than unknowns
+//! (equations plus side conditions), by SVD with the same conditioning
+//! check, and block-matrix assembly helpers. This file owns linear
 //! algebra only; it must not assemble operators.
 use nalgebra::{DMatrix, DVector};
 
@@ -169,6 +171,64 @@ pub fn block_matrix(rows: &[Vec<&DMatrix<f64>>]) -> Result<DMatrix<f64>, Numeric
     Ok(out)
 }
 
+/// A least-squares solution of `a·x ≈ b` (more rows than columns): the
+/// solution, the 2-norm condition number of `a·D` (`D` scales columns to
+/// unit max-norm) and the relative residual `‖a·x - b‖∞ / ‖b‖∞` (zero
+/// when `b = 0`), which is rounding-small exactly when the rows are
+/// consistent. Errors if `a` is rank-deficient or worse conditioned than
+/// `max_cond`.
+pub fn least_squares(
+    a: &DMatrix<f64>,
+    b: &DVector<f64>,
+    max_cond: f64,
+) -> Result<(DVector<f64>, f64, f64), NumericError> {
+    let (m, n) = a.shape();
+    if m < n || b.len() != m {
+        return Err(NumericError::Dimension(format!(
+            "least squares of a {m}×{n} system with {} right sides",
+            b.len()
+        )));
+    }
+    if a.iter().chain(b.iter()).any(|v| !v.is_finite()) {
+        return Err(NumericError::NonFinite("least-squares system".into()));
+    }
+    let scale: Vec<f64> = (0..n)
+        .map(|j| {
+            let c = a.column(j).amax();
+            if c > 0.0 { 1.0 / c } else { 1.0 }
+        })
+        .collect();
+    let mut scaled = a.clone();
+    for (j, s) in scale.iter().enumerate() {
+        scaled.column_mut(j).scale_mut(*s);
+    }
+    let svd = scaled.svd(true, true);
+    let sv = &svd.singular_values;
+    let (smax, smin) = (sv.max(), sv.min());
+    if smin <= 0.0 {
+        return Err(NumericError::Singular(n));
+    }
+    let cond = smax / smin;
+    if cond.is_nan() || cond > max_cond {
+        return Err(NumericError::IllConditioned {
+            size: n,
+            cond,
+            limit: max_cond,
+        });
+    }
+    let y = svd
+        .solve(b, 0.0)
+        .map_err(|e| NumericError::InvalidArgument(format!("least squares: {e}")))?;
+    let x = DVector::from_iterator(n, y.iter().zip(&scale).map(|(v, s)| v * s));
+    let bn = b.amax();
+    let residual = if bn > 0.0 {
+        (a * &x - b).amax() / bn
+    } else {
+        0.0
+    };
+    Ok((x, cond, residual))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -220,5 +280,27 @@ mod tests {
         assert_eq!(m[(0, 2)], 2.0);
         assert_eq!(m[(2, 2)], 4.0);
         assert!(block_matrix(&[vec![&a, &b], vec![&c]]).is_err());
+    }
+
+    #[test]
+    fn least_squares_of_consistent_and_inconsistent_rows() {
+        // x + y = 3, x - y = 1, 2x = 4: consistent, x = 2, y = 1.
+        let a = DMatrix::from_row_slice(3, 2, &[1.0, 1.0, 1.0, -1.0, 2.0, 0.0]);
+        let b = DVector::from_vec(vec![3.0, 1.0, 4.0]);
+        let (x, cond, res) = least_squares(&a, &b, 1e12).unwrap();
+        assert!(
+            (x[0] - 2.0).abs() < 1e-15 && (x[1] - 1.0).abs() < 1e-15,
+            "{x}"
+        );
+        assert!((1.0..10.0).contains(&cond));
+        assert!(res < 1e-15);
+        // 2x = 5 instead: inconsistent, and the residual says so.
+        let b = DVector::from_vec(vec![3.0, 1.0, 5.0]);
+        let (_, _, res) = least_squares(&a, &b, 1e12).unwrap();
+        assert!(res > 0.05, "{res}");
+        // Rank-deficient and mis-shaped systems are errors.
+        let a = DMatrix::from_row_slice(3, 2, &[1.0, 2.0, 2.0, 4.0, 3.0, 6.0]);
+        assert!(least_squares(&a, &b, 1e12).is_err());
+        assert!(least_squares(&DMatrix::zeros(1, 2), &DVector::zeros(1), 1e12).is_err());
     }
 }

@@ -43,12 +43,8 @@ pub fn compile(e: &Expr) -> Fn2 {
         },
         Expr::Call(f, a) => {
             let a = compile(a);
-            match f {
-                Func::Sqrt => Arc::new(move |x, t| a(x, t).sqrt()),
-                Func::Ln => Arc::new(move |x, t| a(x, t).ln()),
-                Func::Abs => Arc::new(move |x, t| a(x, t).abs()),
-                Func::Exp => Arc::new(move |x, t| a(x, t).exp()),
-            }
+            let f: Func = *f;
+            Arc::new(move |x, t| f.apply(a(x, t)))
         }
         // Constants and π are folded above.
         Expr::Const(_) | Expr::Pi => {
@@ -299,8 +295,12 @@ pub enum DiagonalClass {
         /// Where the written base is real.
         side: i8,
     },
-    /// `ln|x - t|`.
-    Log,
+    /// `ln|c (x - t)| = ln|x - t| + ln|c|`: the constant `ln|c|` times
+    /// the smooth factor is a smooth part of its own (0 when `|c| = 1`).
+    Log {
+        /// `ln|c|`.
+        ln_c: f64,
+    },
     /// `1/(t - x)`.
     Cauchy,
 }
@@ -332,8 +332,14 @@ pub fn diagonal_parts(e: &Expr) -> Option<(DiagonalClass, AbelParts)> {
     let mut scale = sign;
     for (i, (f, p)) in factors.iter().enumerate() {
         let class = if let Expr::Call(Func::Ln, arg) = f {
-            match match_linear(arg) {
-                Some((c, true)) if *p == 1.0 && (c.abs() - 1.0).abs() < 1e-14 => DiagonalClass::Log,
+            match match_linear(arg).or_else(|| match_abs_linear(arg)) {
+                Some((c, true)) if *p == 1.0 => DiagonalClass::Log {
+                    ln_c: if (c.abs() - 1.0).abs() < 1e-14 {
+                        0.0
+                    } else {
+                        c.abs().ln()
+                    },
+                },
                 _ => continue,
             }
         } else {
@@ -396,6 +402,31 @@ fn match_linear(e: &Expr) -> Option<(f64, bool)> {
         }
     }
     c.map(|c| (c, abs))
+}
+
+/// `Some((c, true))` if `e` equals `c |x - t|` with `c > 0` at sample
+/// points on both sides of the diagonal, however the absolute value is
+/// written (`abs(x - t)*3`, `sqrt((x - t)^2)`).
+fn match_abs_linear(e: &Expr) -> Option<(f64, bool)> {
+    if !e.uses_x() || !e.uses_t() {
+        return None;
+    }
+    let f = compile(e);
+    let mut c: Option<f64> = None;
+    for &(x, t) in &SAMPLES {
+        for (x, t) in [(x, t), (t, x)] {
+            let r = f(x, t) / (x - t).abs();
+            if !r.is_finite() || r <= 0.0 {
+                return None;
+            }
+            match c {
+                None => c = Some(r),
+                Some(c0) if (r - c0).abs() <= 1e-12 * c0 => {}
+                Some(_) => return None,
+            }
+        }
+    }
+    c.map(|c| (c, true))
 }
 
 /// The value of a constant expression (no `x`, `t`), if finite.

@@ -55,6 +55,39 @@ pub enum OutputTerm {
         /// Index of the unknown.
         unknown: usize,
     },
+    /// `coeff · u(at)`.
+    Point {
+        /// The constant factor.
+        coeff: f64,
+        /// The point.
+        at: f64,
+        /// Index of the unknown.
+        unknown: usize,
+    },
+}
+
+impl OutputTerm {
+    /// The unknown the term uses, if any.
+    pub fn unknown(&self) -> Option<usize> {
+        match self {
+            OutputTerm::Constant(_) => None,
+            OutputTerm::Integral { unknown, .. } | OutputTerm::Point { unknown, .. } => {
+                Some(*unknown)
+            }
+        }
+    }
+}
+
+/// A side condition `Σ terms = value`: one extra row of the discrete
+/// system.
+#[derive(Clone)]
+pub struct CompiledCondition {
+    /// The terms of the functional (constants included).
+    pub terms: Vec<OutputTerm>,
+    /// The required value.
+    pub value: f64,
+    /// The condition as written (for messages).
+    pub text: String,
 }
 
 /// A named output functional.
@@ -79,6 +112,9 @@ pub struct CompiledSystem {
     pub equations: Vec<CompiledEquation>,
     /// Output functionals.
     pub outputs: Vec<CompiledOutput>,
+    /// Side conditions (extra rows; solved with the equations by least
+    /// squares).
+    pub conditions: Vec<CompiledCondition>,
     /// The unknown the eliminations solve for.
     pub target: usize,
     /// The principal symbol (`principal k4`), preferred as pivot by the
@@ -156,28 +192,17 @@ impl CompiledSystem {
             .iter()
             .map(|o| CompiledOutput {
                 name: o.name.clone(),
-                terms: o
-                    .terms
-                    .iter()
-                    .map(|t| match t {
-                        FunctionalTerm::Constant(e) => {
-                            OutputTerm::Constant(constant_value(e).unwrap_or(f64::NAN))
-                        }
-                        FunctionalTerm::Integral {
-                            coeff,
-                            lower,
-                            upper,
-                            weight,
-                            unknown,
-                        } => OutputTerm::Integral {
-                            coeff: constant_value(coeff).unwrap_or(f64::NAN),
-                            lower: rational(lower),
-                            upper: rational(upper),
-                            weight: compile_x(weight),
-                            unknown: *unknown,
-                        },
-                    })
-                    .collect(),
+                terms: compile_terms(&o.terms),
+            })
+            .collect();
+        let conditions = prog
+            .side_conditions
+            .iter()
+            .enumerate()
+            .map(|(k, c)| CompiledCondition {
+                terms: compile_terms(&c.terms),
+                value: constant_value(&c.value).unwrap_or(f64::NAN),
+                text: format!("side condition {} (= {})", k + 1, c.value),
             })
             .collect();
         let sys = CompiledSystem {
@@ -186,6 +211,7 @@ impl CompiledSystem {
             unknowns: prog.unknowns.clone(),
             equations,
             outputs,
+            conditions,
             target,
             principal: prog.principal,
             derived_pivots: None,
@@ -240,13 +266,31 @@ impl CompiledSystem {
         if !(lo.is_finite() && hi.is_finite() && lo < hi) {
             return invalid(format!("the interval [{lo}, {hi}] is empty or not finite"));
         }
-        for o in &self.outputs {
-            for t in &o.terms {
-                if let OutputTerm::Integral { unknown, .. } = t
-                    && *unknown >= n
+        let named = self.outputs.iter().map(|o| (&o.terms, o.name.as_str()));
+        let conds = self.conditions.iter().map(|c| (&c.terms, c.text.as_str()));
+        for (terms, name) in named.chain(conds) {
+            for t in terms.iter() {
+                if let Some(u) = t.unknown()
+                    && u >= n
                 {
-                    return invalid(format!("output {} uses unknown #{unknown}", o.name));
+                    return invalid(format!("{name} uses unknown #{u}"));
                 }
+                if let OutputTerm::Point { at, unknown, .. } = t
+                    && !(*at >= lo && *at <= hi)
+                {
+                    return invalid(format!(
+                        "{name}: the point value {}({at}) is outside the unknowns' interval [{lo}, {hi}]",
+                        self.unknowns[*unknown]
+                    ));
+                }
+            }
+        }
+        for c in &self.conditions {
+            if !c.value.is_finite() {
+                return invalid(format!(
+                    "side condition {}: its value is not finite",
+                    c.text
+                ));
             }
         }
         Ok(())
@@ -298,6 +342,36 @@ impl CompiledSystem {
     }
 }
 
+/// The compiled terms of a functional.
+fn compile_terms(terms: &[FunctionalTerm]) -> Vec<OutputTerm> {
+    terms
+        .iter()
+        .map(|t| match t {
+            FunctionalTerm::Constant(e) => {
+                OutputTerm::Constant(constant_value(e).unwrap_or(f64::NAN))
+            }
+            FunctionalTerm::Integral {
+                coeff,
+                lower,
+                upper,
+                weight,
+                unknown,
+            } => OutputTerm::Integral {
+                coeff: constant_value(coeff).unwrap_or(f64::NAN),
+                lower: rational(lower),
+                upper: rational(upper),
+                weight: compile_x(weight),
+                unknown: *unknown,
+            },
+            FunctionalTerm::Point { coeff, at, unknown } => OutputTerm::Point {
+                coeff: constant_value(coeff).unwrap_or(f64::NAN),
+                at: rational(at),
+                unknown: *unknown,
+            },
+        })
+        .collect()
+}
+
 /// One equation per unknown, and at least one.
 fn square(equations: usize, unknowns: usize) -> Result<(), PlanError> {
     if unknowns == 0 {
@@ -338,12 +412,24 @@ fn interval(prog: &Program) -> Result<((f64, f64), Vec<f64>), PlanError> {
             }
         }
     }
-    for o in &prog.outputs {
-        for t in &o.terms {
+    let functionals = prog.outputs.iter().map(|o| &o.terms);
+    for terms in functionals.chain(prog.side_conditions.iter().map(|c| &c.terms)) {
+        for t in terms {
             if let FunctionalTerm::Integral { lower, upper, .. } = t {
                 limits.extend([rational(lower), rational(upper)]);
             }
         }
+    }
+    if let Some((lo, hi)) = declared_interval(prog)? {
+        if let Some(z) = limits.iter().find(|&&z| !(z >= lo && z <= hi)) {
+            return Err(PlanError::Invalid(format!(
+                "the integration limit {z} is outside the unknowns' declared interval [{lo}, {hi}]"
+            )));
+        }
+        let mut interior: Vec<f64> = limits.into_iter().filter(|&z| z > lo && z < hi).collect();
+        interior.sort_by(f64::total_cmp);
+        interior.dedup();
+        return Ok(((lo, hi), interior));
     }
     if limits.iter().all(|&c| Some(c) == limits.first().copied()) {
         limits.push(0.0);
@@ -352,13 +438,35 @@ fn interval(prog: &Program) -> Result<((f64, f64), Vec<f64>), PlanError> {
     let hi = limits.iter().copied().fold(f64::NEG_INFINITY, f64::max);
     if !(lo.is_finite() && hi.is_finite() && lo < hi) {
         return Err(PlanError::Invalid(
-            "cannot tell the unknowns' interval: no integral has a nonzero constant limit".into(),
+            "cannot tell the unknowns' interval: no integral has a nonzero constant limit; state it, e.g. `unknown p on [0, 1]`".into(),
         ));
     }
     let mut interior: Vec<f64> = limits.into_iter().filter(|&z| z > lo && z < hi).collect();
     interior.sort_by(f64::total_cmp);
     interior.dedup();
     Ok(((lo, hi), interior))
+}
+
+/// The interval stated by `unknown p, q on [a, b]`, if any: every
+/// unknown that states one must state the same, with finite ends.
+fn declared_interval(prog: &Program) -> Result<Option<(f64, f64)>, PlanError> {
+    let c = &prog.contact;
+    let Some(first) = c.unknown_domains.iter().flatten().next() else {
+        return Ok(None);
+    };
+    if c.unknown_domains.iter().flatten().any(|d| d != first) {
+        return Err(PlanError::Invalid(
+            "the unknowns are declared on different intervals; a system on one interval needs one (`unknown p, q on [0, 1]`)".into(),
+        ));
+    }
+    let vars = c.values(&vec![f64::NAN; c.scalars.len()]);
+    let (lo, hi) = first.eval(&vars);
+    if !(lo.is_finite() && hi.is_finite() && lo < hi) {
+        return Err(PlanError::Invalid(format!(
+            "the unknowns' declared interval [{lo}, {hi}] must have finite ends, the left below the right"
+        )));
+    }
+    Ok(Some((lo, hi)))
 }
 
 /// An ordered operator from its terms: each term is a word (symbol
@@ -422,5 +530,44 @@ mod tests {
         let mut s = CompiledSystem::from_program(&p, None).unwrap();
         s.equations[0].lhs[0] = words(&[(&[1], "1")]).unwrap();
         assert!(s.check().unwrap_err().to_string().contains("symbol #1"));
+    }
+
+    #[test]
+    fn declared_interval_and_side_conditions() {
+        // A pure Volterra file: the interval comes from `unknown … on`.
+        let p = program("operator a = int(0..x) dt\nunknown u on [0, 3/2]\nequation u + a u = 1\n");
+        let s = CompiledSystem::from_program(&p, None).unwrap();
+        assert_eq!(s.domain, (0.0, 1.5));
+        // Without it, the file says nothing about the interval.
+        let p = program("operator a = int(0..x) dt\nunknown u\nequation u + a u = 1\n");
+        let e = CompiledSystem::from_program(&p, None).err().unwrap();
+        assert!(e.to_string().contains("interval"), "{e}");
+        // A limit outside the declared interval is refused.
+        let p = program("operator a = int(0..2) dt\nunknown u on [0, 1]\nequation u + a u = 1\n");
+        let e = CompiledSystem::from_program(&p, None).err().unwrap();
+        assert!(e.to_string().contains("outside"), "{e}");
+        // A side condition's limits count for the interval; its constant
+        // terms stay terms, its value is the right side.
+        let p = program(
+            "operator a = int(0..x) dt\nunknown u\nequation a u = x\ncondition 1 + int(0..2) u(x) dx - u(1) = 3\n",
+        );
+        let s = CompiledSystem::from_program(&p, None).unwrap();
+        assert_eq!(s.domain, (0.0, 2.0));
+        assert_eq!(s.conditions.len(), 1);
+        assert_eq!(s.conditions[0].value, 3.0);
+        assert!(matches!(
+            s.conditions[0].terms.as_slice(),
+            [
+                OutputTerm::Constant(c),
+                OutputTerm::Integral { .. },
+                OutputTerm::Point { coeff, at, unknown: 0 }
+            ] if *c == 1.0 && *coeff == -1.0 && *at == 1.0
+        ));
+        // A point value outside the interval is refused.
+        let p = program(
+            "operator a = int(0..1) dt\nunknown u\nequation u + a u = x\noutput P = u(2)\n",
+        );
+        let e = CompiledSystem::from_program(&p, None).err().unwrap();
+        assert!(e.to_string().contains("outside"), "{e}");
     }
 }

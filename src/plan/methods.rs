@@ -6,7 +6,10 @@
 //! `commutative` (the derivation's eliminant `D_i u_i = Σ_j c_j g_j`
 //! evaluated with operator matrices: the seed's single equation, a
 //! *model*, exact only if its commuted pairs commute). Also the pairs of
-//! symbols a method commuted and their measured defects. This file owns
+//! symbols a method commuted and their measured defects. With side
+//! conditions (`condition int(-1..1) f(t) dt = 1`) every method but the
+//! commutative model solves the equations and the conditions together as
+//! one least-squares system (more rows than unknowns). This file owns
 //! these recipes; it executes the derivation and never re-derives;
 //! assembly is `discrete.rs`'s, refinement `refine.rs`'s.
 use std::fmt;
@@ -15,12 +18,13 @@ use std::str::FromStr;
 use nalgebra::{DMatrix, DVector};
 
 use crate::algebra::derivation::{Derivation, MAX_ELIMINANT_TERMS};
+use crate::numeric::Assembler;
 use crate::numeric::NumericError;
 use crate::numeric::elimination::{apply_to_values, commutator_defect_on, solve_blocks};
-use crate::numeric::solve::CheckedLu;
+use crate::numeric::solve::{CheckedLu, block_matrix, least_squares};
 use crate::system::NcPoly;
 
-use super::compiled::CompiledSystem;
+use super::compiled::{CompiledSystem, OutputTerm};
 use super::discrete::{BasisId, Discretisation};
 use super::error::PlanError;
 
@@ -79,6 +83,127 @@ pub struct LevelSolution {
     /// The pivots the ordered elimination executed, as (equation,
     /// unknown), 0-based, in order (empty for the other methods).
     pub pivots: Vec<(usize, usize)>,
+    /// With side conditions, the relative least-squares residual of the
+    /// equations and conditions together (0 for square systems, solved
+    /// exactly): not rounding-small when the conditions contradict the
+    /// equations.
+    pub residual: f64,
+}
+
+/// A functional on the discrete unknowns: a row per unknown (`None` where
+/// it does not occur) and a constant.
+pub type FunctionalRows = (Vec<Option<DVector<f64>>>, f64);
+
+/// The row vectors of a linear functional on the unknowns' bases (one per
+/// unknown, `None` where it does not occur) and its constant part.
+pub fn functional_rows(
+    d: &Discretisation,
+    terms: &[OutputTerm],
+    what: &str,
+) -> Result<FunctionalRows, PlanError> {
+    let mut rows: Vec<Option<DVector<f64>>> = vec![None; d.bases.len()];
+    let mut constant = 0.0;
+    for t in terms {
+        let (u, row) = match t {
+            OutputTerm::Constant(c) => {
+                constant += c;
+                continue;
+            }
+            OutputTerm::Integral {
+                coeff,
+                lower,
+                upper,
+                weight,
+                unknown,
+            } => {
+                let basis = d.bases.get(*unknown).ok_or_else(|| {
+                    PlanError::Invalid(format!("{what}: unknown #{unknown} has no basis"))
+                })?;
+                let asm = Assembler::new(basis).map_err(PlanError::numeric(what.to_string()))?;
+                let w = weight.clone();
+                let row = asm
+                    .functional(move |x| w(x), *lower, *upper)
+                    .map_err(PlanError::numeric(what.to_string()))?;
+                (*unknown, DVector::from_vec(row) * *coeff)
+            }
+            OutputTerm::Point { coeff, at, unknown } => {
+                let basis = d.bases.get(*unknown).ok_or_else(|| {
+                    PlanError::Invalid(format!("{what}: unknown #{unknown} has no basis"))
+                })?;
+                let row = basis.point_row(*at);
+                if row.iter().any(|v| !v.is_finite()) {
+                    return Err(PlanError::Invalid(format!(
+                        "{what}: the unknown is not finite at x = {at} (its weight {} is singular there); take the point value elsewhere",
+                        if basis.weight_at(*at).is_finite() {
+                            ""
+                        } else {
+                            "in the trial space"
+                        }
+                    )));
+                }
+                (*unknown, DVector::from_vec(row) * *coeff)
+            }
+        };
+        match &mut rows[u] {
+            Some(r) => *r += row,
+            slot => *slot = Some(row),
+        }
+    }
+    Ok((rows, constant))
+}
+
+/// The equations' blocks and right sides with the side conditions as
+/// extra rows, solved together by least squares.
+fn with_conditions(
+    d: &Discretisation,
+    prog: &CompiledSystem,
+    blocks: &[Vec<DMatrix<f64>>],
+    g: &[DVector<f64>],
+    max_cond: f64,
+) -> Result<LevelSolution, PlanError> {
+    let refs: Vec<Vec<&DMatrix<f64>>> = blocks.iter().map(|r| r.iter().collect()).collect();
+    let ctx = || PlanError::numeric("equations with side conditions (least squares)");
+    let a = block_matrix(&refs).map_err(ctx())?;
+    let dims: Vec<usize> = blocks
+        .first()
+        .map(|r| r.iter().map(DMatrix::ncols).collect())
+        .unwrap_or_default();
+    let (m, n) = a.shape();
+    let k = prog.conditions.len();
+    let mut big = DMatrix::zeros(m + k, n);
+    big.rows_mut(0, m).copy_from(&a);
+    let mut rhs = DVector::zeros(m + k);
+    let mut r0 = 0;
+    for gi in g {
+        rhs.rows_mut(r0, gi.len()).copy_from(gi);
+        r0 += gi.len();
+    }
+    for (i, c) in prog.conditions.iter().enumerate() {
+        let (rows, constant) = functional_rows(d, &c.terms, &c.text)?;
+        let mut c0 = 0;
+        for (row, &dim) in rows.iter().zip(&dims) {
+            if let Some(row) = row {
+                big.view_mut((m + i, c0), (1, dim))
+                    .copy_from(&row.transpose());
+            }
+            c0 += dim;
+        }
+        rhs[m + i] = c.value - constant;
+    }
+    let (x, cond, residual) = least_squares(&big, &rhs, max_cond).map_err(ctx())?;
+    let mut coefs = Vec::with_capacity(dims.len());
+    let mut c0 = 0;
+    for dim in dims {
+        coefs.push(Some(x.rows(c0, dim).into_owned()));
+        c0 += dim;
+    }
+    Ok(LevelSolution {
+        coefs,
+        cond,
+        warnings: Vec::new(),
+        pivots: Vec::new(),
+        residual,
+    })
 }
 
 /// Solves the system on `d` by `method`, executing the derivation `der`
@@ -109,6 +234,11 @@ pub fn solve_level(
             })?,
         );
     }
+    if method == Method::Commutative && !prog.conditions.is_empty() {
+        return Err(PlanError::Invalid(
+            "the commutative model is one equation for one unknown and cannot take side conditions; use --method ordered or coupled".into(),
+        ));
+    }
     if method == Method::Commutative {
         let der = der.ok_or_else(|| {
             PlanError::Singular(
@@ -124,6 +254,9 @@ pub fn solve_level(
             .collect::<Result<Vec<_>, _>>()?;
         blocks.push(row);
     }
+    if !prog.conditions.is_empty() {
+        return with_conditions(d, prog, &blocks, &g, max_cond);
+    }
     match method {
         Method::Coupled => {
             let refs: Vec<Vec<&DMatrix<f64>>> = blocks.iter().map(|r| r.iter().collect()).collect();
@@ -135,6 +268,7 @@ pub fn solve_level(
                 cond,
                 warnings: Vec::new(),
                 pivots: Vec::new(),
+                residual: 0.0,
             })
         }
         _ => {
@@ -246,6 +380,7 @@ fn ordered(
         cond,
         warnings,
         pivots: pivots.iter().map(|(col, r, _)| (*r, *col)).collect(),
+        residual: 0.0,
     })
 }
 
@@ -292,6 +427,7 @@ fn commutative(
         cond: lu.cond(),
         warnings: Vec::new(),
         pivots: Vec::new(),
+        residual: 0.0,
     })
 }
 

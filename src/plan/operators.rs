@@ -118,6 +118,9 @@ pub fn plan_operator(
     };
     let mut out = Vec::new();
     for term in &def.terms {
+        // A second term split off the first (the `ln|c|` part of a log
+        // kernel).
+        let mut extra = None;
         let piece = match term {
             Term::Identity => TermPlan::Identity,
             Term::Scalar(c) => TermPlan::Scalar(rational(c)),
@@ -176,6 +179,20 @@ pub fn plan_operator(
                     }
                     None => match diagonal_parts(kernel) {
                         Some((class, parts)) => {
+                            if let DiagonalClass::Log { ln_c } = class
+                                && ln_c != 0.0
+                            {
+                                // ln|c (x - t)| = ln|x - t| + ln|c|: the
+                                // constant part is a smooth term of its own.
+                                let mut smooth = parts.clone();
+                                smooth.scale *= ln_c;
+                                extra = Some(TermPlan::Integral {
+                                    limits,
+                                    sign,
+                                    kernel: KernelPlan::Diagonal(Singularity::Smooth, smooth),
+                                    written: kernel.clone(),
+                                });
+                            }
                             diagonal_plan(class, parts, limits, *pv, kernel).map_err(unsupported)?
                         }
                         None if *pv => {
@@ -205,6 +222,7 @@ pub fn plan_operator(
             }
         };
         out.push(piece);
+        out.extend(extra);
     }
     Ok(out)
 }
@@ -232,7 +250,7 @@ fn diagonal_plan(
             }
             Singularity::Power { beta }
         }
-        DiagonalClass::Log => Singularity::Log,
+        DiagonalClass::Log { .. } => Singularity::Log,
         DiagonalClass::Cauchy => {
             if !pv {
                 return Err(format!(

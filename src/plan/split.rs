@@ -711,9 +711,37 @@ impl SplitProblem {
                     weight,
                     unknown,
                 } => total += coeff * self.integral(d, *unknown, *lower, *upper, weight)?,
+                OutputTerm::Point { coeff, at, unknown } => {
+                    total += coeff * self.point(d, *unknown, *at)
+                }
             }
         }
         Ok(total)
+    }
+
+    /// The value `u(at)` of unknown `u` of `d` (free part, substituted
+    /// parts and exact singular terms); at a breakpoint, the piece to its
+    /// right.
+    fn point(&self, d: &Discrete, u: usize, at: f64) -> f64 {
+        let mut total = 0.0;
+        if let Some(b) = &d.bases[u] {
+            total += b.eval(self.coefs(d, u), at);
+        }
+        for k in 0..d.breaks.len() - 1 {
+            let inside = at >= d.breaks[k]
+                && (at < d.breaks[k + 1] || (k + 2 == d.breaks.len() && at <= d.breaks[k + 1]));
+            if let Status::Related { coeff, other } = d.status[u][k]
+                && inside
+                && let Some(b) = &d.bases[other]
+            {
+                total += coeff * b.eval(self.coefs(d, other), at);
+            }
+        }
+        let dim = d.offsets[d.offsets.len() - 1];
+        for (ti, t) in d.terms.iter().enumerate().filter(|(_, t)| t.unknown == u) {
+            total += d.solution[dim + ti] * t.basis.eval(&t.phi, at);
+        }
+        total
     }
 
     /// `∫_lower^upper w(x) u(x) dx` for unknown `u` of `d`.

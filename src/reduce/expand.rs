@@ -49,6 +49,8 @@ pub enum Layer {
         outer: usize,
         /// Depth of the integration variable.
         inner: usize,
+        /// A Cauchy principal value (`pv int`).
+        pv: bool,
     },
     /// Multiplication by a function of the variable at depth `var`.
     Multiply {
@@ -172,7 +174,7 @@ pub fn expand_word(
                         lower,
                         upper,
                         kernel,
-                        ..
+                        pv,
                     } => {
                         let (c, k) = peel(kernel);
                         let bound = |l: &Limit| match l {
@@ -186,6 +188,7 @@ pub fn expand_word(
                             kernel: k,
                             outer: p.depth,
                             inner: p.depth + 1,
+                            pv: *pv,
                         });
                         q.depth += 1;
                     }
@@ -238,6 +241,7 @@ pub fn expand_word(
 /// text and LaTeX forms differ.
 struct Notation {
     integral: fn(&Bound, &Bound) -> String,
+    pv: &'static str,
     group: fn(&Expr, &str, &str) -> String,
     differential: fn(&str) -> String,
     coeff: fn(&Q) -> String,
@@ -245,6 +249,7 @@ struct Notation {
 
 const TEXT: Notation = Notation {
     integral: |lo, hi| format!("∫_{}^{}", bound_text(lo), bound_text(hi)),
+    pv: "PV ",
     group: group_text,
     differential: |v| format!(" d{v}"),
     coeff: fmt_q,
@@ -252,6 +257,7 @@ const TEXT: Notation = Notation {
 
 const LATEX: Notation = Notation {
     integral: |lo, hi| format!("\\int_{{{}}}^{{{}}}", bound_latex(lo), bound_latex(hi)),
+    pv: "\\mathrm{PV}\\!",
     group: group_latex,
     differential: |v| format!("\\,d{v}"),
     coeff: latex_q,
@@ -281,8 +287,10 @@ impl ExpandedTerm {
                     kernel,
                     outer,
                     inner,
+                    pv,
                 } => {
-                    parts.push((n.integral)(lower, upper));
+                    let pv = if *pv { n.pv } else { "" };
+                    parts.push(format!("{pv}{}", (n.integral)(lower, upper)));
                     if let Some(k) = kernel {
                         parts.push((n.group)(k, &var_name(*outer), &var_name(*inner)));
                     }

@@ -550,6 +550,20 @@ fn product_notes(p: &Program) -> Vec<String> {
             }
         }
     }
+    if !p.side_conditions.is_empty() {
+        out.push(format!(
+            "{} side condition{} ({}): `solve` adds {} as row{} of the discrete system and solves the equations and conditions together by least squares, not by the eliminations shown here",
+            p.side_conditions.len(),
+            if p.side_conditions.len() == 1 { "" } else { "s" },
+            p.side_conditions
+                .iter()
+                .map(|c| crate::lang::pretty::side_condition(c, &p.unknowns))
+                .collect::<Vec<_>>()
+                .join("; "),
+            if p.side_conditions.len() == 1 { "it" } else { "them" },
+            if p.side_conditions.len() == 1 { "" } else { "s" },
+        ));
+    }
     out
 }
 

@@ -42,58 +42,8 @@ pub enum RBin {
     Pow,
 }
 
-/// Elementary functions of [`RExpr`].
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum RFunc {
-    /// √
-    Sqrt,
-    /// ln
-    Ln,
-    /// |·|
-    Abs,
-    /// exp
-    Exp,
-    /// arctan
-    Atan,
-    /// arccot, with values in (0, π) (`acot(0) = π/2`).
-    Acot,
-}
-
-impl RFunc {
-    /// The function with this source name.
-    pub fn from_name(name: &str) -> Option<RFunc> {
-        Some(match name {
-            "sqrt" => RFunc::Sqrt,
-            "ln" => RFunc::Ln,
-            "abs" => RFunc::Abs,
-            "exp" => RFunc::Exp,
-            "atan" => RFunc::Atan,
-            "acot" => RFunc::Acot,
-            _ => return None,
-        })
-    }
-
-    /// The function's value at `v` (what [`RExpr::eval`] computes; code
-    /// that `lambdamat codegen` writes calls it too).
-    pub fn apply(self, v: f64) -> f64 {
-        match self {
-            RFunc::Sqrt => v.sqrt(),
-            RFunc::Ln => v.ln(),
-            RFunc::Abs => v.abs(),
-            RFunc::Exp => v.exp(),
-            RFunc::Atan => v.atan(),
-            RFunc::Acot => {
-                if v == 0.0 {
-                    std::f64::consts::FRAC_PI_2
-                } else if v > 0.0 {
-                    (1.0 / v).atan()
-                } else {
-                    std::f64::consts::PI + (1.0 / v).atan()
-                }
-            }
-        }
-    }
-}
+/// Elementary functions of [`RExpr`]: the same functions as in kernels.
+pub use super::expr::Func as RFunc;
 
 /// `a^b` as [`RExpr::eval`] computes it: `powi` for small integer `b`,
 /// else `powf` (code that `lambdamat codegen` writes calls it too).
@@ -171,14 +121,7 @@ impl RExpr {
                 }
             }
             RExpr::Call(f, a) => {
-                let name = match f {
-                    RFunc::Sqrt => "sqrt",
-                    RFunc::Ln => "ln",
-                    RFunc::Abs => "abs",
-                    RFunc::Exp => "exp",
-                    RFunc::Atan => "atan",
-                    RFunc::Acot => "acot",
-                };
+                let name = f.name();
                 format!("{name}({})", a.to_text(slots))
             }
         }

@@ -23,36 +23,103 @@ pub enum Func {
     Abs,
     /// Exponential.
     Exp,
+    /// Sine.
+    Sin,
+    /// Cosine.
+    Cos,
+    /// Tangent.
+    Tan,
+    /// Arcsine, values in [-π/2, π/2].
+    Asin,
+    /// Arccosine, values in [0, π].
+    Acos,
+    /// Arctangent, values in (-π/2, π/2).
+    Atan,
+    /// Arccotangent, values in (0, π) (`acot(0) = π/2`).
+    Acot,
+    /// Hyperbolic sine.
+    Sinh,
+    /// Hyperbolic cosine.
+    Cosh,
+    /// Hyperbolic tangent.
+    Tanh,
+}
+
+/// Every function, in the order the documentation lists them.
+pub const FUNCS: [Func; 14] = [
+    Func::Sqrt,
+    Func::Ln,
+    Func::Abs,
+    Func::Exp,
+    Func::Sin,
+    Func::Cos,
+    Func::Tan,
+    Func::Asin,
+    Func::Acos,
+    Func::Atan,
+    Func::Acot,
+    Func::Sinh,
+    Func::Cosh,
+    Func::Tanh,
+];
+
+/// arccot with values in (0, π): `acot(0) = π/2`, `acot(v) = atan(1/v)`
+/// for `v > 0` and `π + atan(1/v)` for `v < 0` (the branch that is
+/// continuous through 0; used by generated solvers too).
+pub fn acot(v: f64) -> f64 {
+    if v == 0.0 {
+        std::f64::consts::FRAC_PI_2
+    } else if v > 0.0 {
+        (1.0 / v).atan()
+    } else {
+        std::f64::consts::PI + (1.0 / v).atan()
+    }
 }
 
 impl Func {
-    /// The function's name in source.
+    /// The function's name in source (and, but for `acot`, the name of
+    /// the `f64` method that computes it).
     pub fn name(self) -> &'static str {
         match self {
             Func::Sqrt => "sqrt",
             Func::Ln => "ln",
             Func::Abs => "abs",
             Func::Exp => "exp",
+            Func::Sin => "sin",
+            Func::Cos => "cos",
+            Func::Tan => "tan",
+            Func::Asin => "asin",
+            Func::Acos => "acos",
+            Func::Atan => "atan",
+            Func::Acot => "acot",
+            Func::Sinh => "sinh",
+            Func::Cosh => "cosh",
+            Func::Tanh => "tanh",
         }
     }
 
     /// The function with this source name.
     pub fn from_name(name: &str) -> Option<Func> {
-        Some(match name {
-            "sqrt" => Func::Sqrt,
-            "ln" => Func::Ln,
-            "abs" => Func::Abs,
-            "exp" => Func::Exp,
-            _ => return None,
-        })
+        FUNCS.into_iter().find(|f| f.name() == name)
     }
 
-    fn apply(self, v: f64) -> f64 {
+    /// Its value at `v` (IEEE semantics: NaN outside the domain).
+    pub fn apply(self, v: f64) -> f64 {
         match self {
             Func::Sqrt => v.sqrt(),
             Func::Ln => v.ln(),
             Func::Abs => v.abs(),
             Func::Exp => v.exp(),
+            Func::Sin => v.sin(),
+            Func::Cos => v.cos(),
+            Func::Tan => v.tan(),
+            Func::Asin => v.asin(),
+            Func::Acos => v.acos(),
+            Func::Atan => v.atan(),
+            Func::Acot => acot(v),
+            Func::Sinh => v.sinh(),
+            Func::Cosh => v.cosh(),
+            Func::Tanh => v.tanh(),
         }
     }
 }
@@ -336,5 +403,42 @@ mod tests {
             "-x^2"
         );
         assert_eq!(Expr::Div(b(Expr::Pi), b(c(2, 1))).to_string(), "pi/2");
+    }
+
+    #[test]
+    fn every_function_by_name_and_value() {
+        use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI};
+        let cases: [(&str, f64, f64); 14] = [
+            ("sqrt", 0.25, 0.5),
+            ("ln", 1.0, 0.0),
+            ("abs", -2.0, 2.0),
+            ("exp", 0.0, 1.0),
+            ("sin", FRAC_PI_2, 1.0),
+            ("cos", PI, -1.0),
+            ("tan", FRAC_PI_4, 1.0),
+            ("asin", 1.0, FRAC_PI_2),
+            ("acos", -1.0, PI),
+            ("atan", 1.0, FRAC_PI_4),
+            ("acot", -1.0, 0.75 * PI),
+            ("sinh", 0.0, 0.0),
+            ("cosh", 0.0, 1.0),
+            ("tanh", 0.0, 0.0),
+        ];
+        for (name, at, want) in cases {
+            let f = Func::from_name(name).expect(name);
+            assert_eq!(f.name(), name);
+            let got = f.apply(at);
+            assert!(
+                (got - want).abs() <= 1e-15,
+                "{name}({at}) = {got}, not {want}"
+            );
+            let e = Expr::Call(f, b(Expr::X));
+            assert_eq!(e.to_string(), format!("{name}(x)"));
+            assert_eq!(e.eval(at, 0.0), got);
+        }
+        assert_eq!(FUNCS.len(), cases.len());
+        assert_eq!(acot(0.0), FRAC_PI_2);
+        assert!(Func::Asin.apply(2.0).is_nan());
+        assert_eq!(Func::from_name("sec"), None);
     }
 }

@@ -20,4 +20,6 @@ pub use crate::algebra::mpoly::MPoly;
 pub use crate::algebra::ncpoly::NcPoly;
 pub use expr::{Expr, Func};
 pub use operator::{Limit, OperatorDef, Term};
-pub use program::{Directive, Equation, FunctionalTerm, MatrixDef, Output, Param, Program};
+pub use program::{
+    Directive, Equation, FunctionalTerm, MatrixDef, Output, Param, Program, SideCondition,
+};

@@ -43,6 +43,9 @@ pub struct Program {
     pub equations: Vec<Equation>,
     /// Output functionals, in definition order.
     pub outputs: Vec<Output>,
+    /// Side conditions `functional = value` (`condition int(-1..1) f(t) dt
+    /// = 1`): extra rows of the one-interval system, in definition order.
+    pub side_conditions: Vec<SideCondition>,
     /// Split domains, relations, scalars and singular behaviour (contact
     /// problems); empty for a system on one interval.
     pub contact: Contact,
@@ -110,6 +113,16 @@ pub struct Output {
     pub terms: Vec<FunctionalTerm>,
 }
 
+/// A side condition: a linear functional of the unknowns (the same terms
+/// as an output) equal to a constant.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SideCondition {
+    /// The terms whose sum is fixed (constants included).
+    pub terms: Vec<FunctionalTerm>,
+    /// The required value (a constant; may involve `pi`).
+    pub value: Expr,
+}
+
 /// One term of an output functional.
 #[derive(Clone, Debug, PartialEq)]
 pub enum FunctionalTerm {
@@ -125,6 +138,15 @@ pub enum FunctionalTerm {
         upper: BigRational,
         /// The weight, a function of the integration variable, written `x`.
         weight: Expr,
+        /// Index into `Program::unknowns`.
+        unknown: usize,
+    },
+    /// `coeff · u(at)`: a point value.
+    Point {
+        /// A constant factor (never `x` or `t`).
+        coeff: Expr,
+        /// The point.
+        at: BigRational,
         /// Index into `Program::unknowns`.
         unknown: usize,
     },

@@ -142,6 +142,7 @@ pub fn system() -> Result<CompiledSystem, PlanError> {
         unknowns: vec!["u".into(), "v".into()],
         equations: vec![equation_1, equation_2],
         outputs: vec![output_1, output_2],
+        conditions: Vec::new(),
         target: 1,
         principal: None,
         derived_pivots: Some(vec![(1, 0)]),

@@ -1,0 +1,125 @@
+//! A solver for `tests/data/codegen_condition.lmx`, written by lambdamat 0.1.0 (`lambdamat codegen`).
+//! Do not edit: regenerate with `lambdamat codegen tests/data/codegen_condition.lmx -o FILE.rs`.
+//!
+//! Kernels, multipliers, right sides and output weights are the Rust
+//! functions below; `system()` collects them and `main()` solves through
+//! lambdamat's numeric layer (`lambdamat::plan::solve_system`): assembly,
+//! refinement to the tolerance, and the error estimate.
+//! Unknowns on [-1, 1]; eliminations solve for `f`.
+//!
+//! Derived equations for `f` (`lambdamat reduce`):
+//!
+//! - ordered elimination, exact (`--method ordered`, the default; gj is
+//!   the right side of equation j):
+//!   `h f = g1`
+//!   pivots: none (one equation)
+//! - commutative eliminant, the seed's model (`--method commutative`):
+//!   `h f = [1]`
+//!   commuted pairs: none
+//! - with its 1 side condition(s) the system is solved as one least-squares
+//!   system of equations and conditions (every method but the commutative
+//!   model, which refuses them); the eliminations above are not used.
+//!
+//! The system (parameters substituted):
+//!
+//! ```text
+//! operator h = pv int(-1..1) 1/pi*(1/(t - x)) dt
+//! unknown f on [-1, 1]
+//! equation h f = 1
+//! output V = f(1/2)
+//! condition int(-1..1) f(x) dx + -1*f(0) + f(0) = 2
+//! ```
+
+// Literals are printed to read back bit for bit; some may look like
+// named constants without being them.
+#![allow(clippy::approx_constant)]
+
+use std::sync::Arc;
+
+use lambdamat::numeric::Limits::Fixed;
+use lambdamat::numeric::Operator;
+use lambdamat::plan::PlanError;
+use lambdamat::plan::compiled::{
+    CompiledCondition, CompiledEquation, CompiledOutput, CompiledSystem, OutputTerm, words,
+};
+
+/// Operator `h`, kernel `1/pi*(1/(t - x))`: its smooth factor a(x, t) with kernel = a(x, t)/(t - x).
+fn kernel_h(_x: f64, _t: f64) -> f64 {
+    1.0 * (1.0 / std::f64::consts::PI) * 1.0
+}
+
+/// Right side of equation 1: `1`.
+fn rhs_1(_x: f64) -> f64 {
+    1.0
+}
+
+/// Weight of side condition 1: `1`.
+fn condition_weight_1_1(_x: f64) -> f64 {
+    1.0
+}
+
+/// The compiled system, ready for `lambdamat::plan::solve_system`.
+pub fn system() -> Result<CompiledSystem, PlanError> {
+    let mut op_h = Operator::zero();
+    let limits = Fixed { a: -1.0, b: 1.0 };
+    let term = Operator::integral(limits, lambdamat::numeric::Singularity::Cauchy, kernel_h);
+    op_h = op_h + term;
+    let lhs_1 = vec![words(&[(&[0], "1")])?];
+    let equation_1 = CompiledEquation {
+        lhs: lhs_1,
+        rhs: Arc::new(rhs_1),
+        rhs_text: "1".into(),
+    };
+    let output_1_term_1 = OutputTerm::Point {
+        coeff: 1.0,
+        at: 0.5,
+        unknown: 0,
+    };
+    let output_1 = CompiledOutput {
+        name: "V".into(),
+        terms: vec![output_1_term_1],
+    };
+    let condition_1_term_1 = OutputTerm::Integral {
+        coeff: 1.0,
+        lower: -1.0,
+        upper: 1.0,
+        weight: Arc::new(condition_weight_1_1),
+        unknown: 0,
+    };
+    let condition_1_term_2 = OutputTerm::Point {
+        coeff: -1.0,
+        at: 0.0,
+        unknown: 0,
+    };
+    let condition_1_term_3 = OutputTerm::Point {
+        coeff: 1.0,
+        at: 0.0,
+        unknown: 0,
+    };
+    let condition_1 = CompiledCondition {
+        terms: vec![condition_1_term_1, condition_1_term_2, condition_1_term_3],
+        value: 2.0,
+        text: "side condition 1 (= 2)".into(),
+    };
+    let sys = CompiledSystem {
+        symbols: vec!["h".into()],
+        operators: vec![Some(op_h)],
+        unknowns: vec!["f".into()],
+        equations: vec![equation_1],
+        outputs: vec![output_1],
+        conditions: vec![condition_1],
+        target: 0,
+        principal: None,
+        domain: (-1.0, 1.0),
+        interior: Vec::new(),
+    };
+    sys.check()?;
+    Ok(sys)
+}
+
+/// Solves the system and prints the report of `lambdamat solve`; takes
+/// `[--method coupled|ordered|commutative] [--tol T] [--max-level N] [--json]`
+/// `[--csv FILE] [--plot FILE.svg]` (see `--help`).
+pub fn main() {
+    std::process::exit(lambdamat::cli::solve::solver_main(system));
+}
