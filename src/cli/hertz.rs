@@ -177,10 +177,17 @@ fn text(s: &HertzResult, given_c: bool) -> String {
         "Hertz contact with finite friction: ν = {}, γ = (1-2ν)/(2-2ν) = {:.15}",
         s.nu, s.gamma
     );
+    // The found scalar's own estimate (none in the limits without shear,
+    // where c = 0 or 1 is not computed).
+    let pm = |name: &str| {
+        s.error_estimates
+            .get(name)
+            .map_or(String::new(), |e| format!(" ± {e:.1e}"))
+    };
     if given_c {
-        let _ = writeln!(o, "  given c = {}  →  μ = {:.13}", s.c, s.mu);
+        let _ = writeln!(o, "  given c = {}  →  μ = {:.13}{}", s.c, s.mu, pm("mu"));
     } else {
-        let _ = writeln!(o, "  given μ = {}  →  c = {:.13}", s.mu, s.c);
+        let _ = writeln!(o, "  given μ = {}  →  c = {:.13}{}", s.mu, s.c, pm("c"));
     }
     let _ = writeln!(o, "  edge exponent α = arccot(γμ)/π = {:.15}", s.alpha);
     let _ = writeln!(
