@@ -162,6 +162,7 @@ pub fn system() -> Result<CompiledSystem, PlanError> {
         unknowns: vec!["p".into(), "q".into()],
         equations: vec![equation_1, equation_2],
         outputs: vec![output_1, output_2],
+        conditions: Vec::new(),
         target: 0,
         principal: Some(3),
         derived_pivots: Some(vec![(1, 1)]),

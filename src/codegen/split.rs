@@ -480,15 +480,9 @@ fn expr(e: &RExpr, ctx: Prec) -> String {
     }
 }
 
-fn func_name(f: RFunc) -> &'static str {
-    match f {
-        RFunc::Sqrt => "Sqrt",
-        RFunc::Ln => "Ln",
-        RFunc::Abs => "Abs",
-        RFunc::Exp => "Exp",
-        RFunc::Atan => "Atan",
-        RFunc::Acot => "Acot",
-    }
+/// The variant's name, as the generated code spells `RFunc::Name`.
+fn func_name(f: RFunc) -> String {
+    format!("{f:?}")
 }
 
 /// A long expression as `let` bindings of its operands and a final line

@@ -110,6 +110,7 @@ pub fn system() -> Result<CompiledSystem, PlanError> {
         conditions: vec![condition_1],
         target: 0,
         principal: None,
+        derived_pivots: Some(Vec::new()),
         domain: (-1.0, 1.0),
         interior: Vec::new(),
     };

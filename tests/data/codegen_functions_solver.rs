@@ -136,6 +136,7 @@ pub fn system() -> Result<CompiledSystem, PlanError> {
         conditions: Vec::new(),
         target: 0,
         principal: None,
+        derived_pivots: Some(vec![(1, 1)]),
         domain: (0.0, 1.0),
         interior: Vec::new(),
     };
