@@ -11,6 +11,7 @@
 //! decomposition handed out of this module has been certified.
 
 pub mod certify;
+pub mod detadj;
 pub mod divisors;
 pub mod elimination;
 pub mod modes;

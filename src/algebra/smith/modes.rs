@@ -7,7 +7,7 @@
 //! Q[all], Q[λ] and Q(others)[λ]; it must not print or know about files.
 
 use super::SmithDecomposition;
-use super::certify::{Certificate, Check, Direct, ProductCheck, Unimodular, certify};
+use super::certify::{Certificate, Check, ProductCheck, Unimodular, certify};
 use super::divisors::{certify_divisors, determinantal_divisors};
 use crate::algebra::gcd::{content_in, gcd, lcm};
 use crate::algebra::matrix::Matrix;
@@ -321,7 +321,7 @@ fn one_symbol(
         ring,
         note,
         opts,
-        &Direct,
+        &super::certify::ClearedQx,
     )?
     .0)
 }

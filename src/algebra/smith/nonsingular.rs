@@ -1,9 +1,10 @@
 //! The fast path for a square nonsingular A over Q[x] whose first n-1
 //! invariant factors are 1 (the generic case, e.g. random matrices).
 //!
-//! det A and adj A are computed exactly by evaluation at N+1 consecutive
-//! integers (N a degree bound), fraction-free Gauss–Jordan over Z at each
-//! point, and integer Newton interpolation. With f = det/lc(det) and `a` the
+//! det A and adj A are computed exactly by images mod word primes at N+1
+//! points (N a degree bound) and Chinese remaindering up to a proved
+//! coefficient bound ([`super::detadj`]); the fraction-free integer
+//! Gauss–Jordan kept here is the reference the tests compare against. With f = det/lc(det) and `a` the
 //! last row of adj A, if some `a_j` is invertible mod f then
 //! `h_i = -adj_ij · a_j⁻¹ mod f` gives the Hermite structure
 //! `W·A = H = [[I, h], [0, f]]` with `W = H·adj(A)/det(A)` (checked by exact
@@ -20,6 +21,7 @@ use crate::algebra::ring::{GcdDomain, Ring};
 use num_bigint::BigInt;
 use num_traits::{One, Zero};
 
+#[cfg(test)]
 fn eval_int(p: &[BigInt], x: &BigInt) -> BigInt {
     let mut acc = BigInt::zero();
     for c in p.iter().rev() {
@@ -154,12 +156,15 @@ pub fn try_nonsingular(a: &Matrix<QxRing>) -> Option<SmithDecomposition<QxRing>>
         delta.push(l);
         at.push(row);
     }
-    let (det_t, adj_t) = det_adj_poly(&at, bound)?;
+    let (det_t, adj_t) = super::detadj::det_adj(&at, bound)?;
     let det_q = QPoly::from_ints(det_t);
     if det_q.is_zero() {
         return None;
     }
     let f = r.normalize(&det_q);
+    if det_q.degree() == Some(0) {
+        return Some(unimodular(a, &det_q, &adj_t, &delta));
+    }
     let last: Vec<QPoly> = adj_t[n - 1]
         .iter()
         .map(|p| QPoly::from_ints(p.clone()))
@@ -217,47 +222,45 @@ pub fn try_nonsingular(a: &Matrix<QxRing>) -> Option<SmithDecomposition<QxRing>>
     })
 }
 
-/// An integer polynomial (coefficients, low degree first).
-type IntPoly = Vec<BigInt>;
-
-/// det and adj of an integer polynomial matrix (entries as coefficient
-/// vectors) with det degree ≤ `bound`, by evaluation/interpolation.
-fn det_adj_poly(m: &[Vec<IntPoly>], bound: usize) -> Option<(IntPoly, Vec<Vec<IntPoly>>)> {
-    let n = m.len();
-    // Consecutive nodes s..=s+bound avoiding singular points (a nonzero det
-    // has at most `bound` roots, so a few shifts always suffice).
-    'shift: for attempt in 0..=bound + 1 {
-        let s = -(bound as i64) / 2 + (attempt as i64) * (bound as i64 + 1);
-        let mut dets = Vec::with_capacity(bound + 1);
-        let mut adjs = Vec::with_capacity(bound + 1);
-        for k in 0..=bound {
-            let x = BigInt::from(s + k as i64);
-            let mx: Vec<Vec<BigInt>> = m
-                .iter()
-                .map(|row| row.iter().map(|p| eval_int(p, &x)).collect())
-                .collect();
-            match det_adj_int(&mx) {
-                Some((d, adj)) => {
-                    dets.push(d);
-                    adjs.push(adj);
-                }
-                None => continue 'shift,
-            }
-        }
-        let det = interpolate_int(&dets, s);
-        let adj = (0..n)
-            .map(|i| {
-                (0..n)
-                    .map(|j| {
-                        let vals: Vec<BigInt> = adjs.iter().map(|a| a[i][j].clone()).collect();
-                        interpolate_int(&vals, s)
-                    })
-                    .collect()
-            })
-            .collect();
-        return Some((det, adj));
+/// A with a constant nonzero determinant (always so for a nonsingular
+/// constant matrix): `A·adj(Ã)·Δ = det Ã·I` for `Ã = Δ·A` integral, so
+/// `U = I/det Ã`, `V = adj(Ã)·Δ`, `D = I`, with `U⁻¹ = det Ã·I` and
+/// `V⁻¹ = A/det Ã`. Nothing is inverted over Q and V has integer
+/// coefficients up to the row scales δ.
+fn unimodular(
+    a: &Matrix<QxRing>,
+    det: &QPoly,
+    adj: &[Vec<Vec<BigInt>>],
+    delta: &[BigInt],
+) -> SmithDecomposition<QxRing> {
+    let r = a.ring.clone();
+    let n = a.rows();
+    let c = det.lc();
+    let mut u = Matrix::identity(r.clone(), n);
+    let mut u_inv = Matrix::identity(r.clone(), n);
+    let c_inv = QPoly::constant(&c.recip());
+    let c_poly = QPoly::constant(&c);
+    for i in 0..n {
+        u.set(i, i, c_inv.clone());
+        u_inv.set(i, i, c_poly.clone());
     }
-    None
+    let mut v = Matrix::zeros(r.clone(), n, n);
+    for (i, row) in adj.iter().enumerate() {
+        for (k, (e, d)) in row.iter().zip(delta).enumerate() {
+            v.set(i, k, QPoly::from_ints(e.iter().map(|x| x * d).collect()));
+        }
+    }
+    let mut v_inv = a.clone();
+    for i in 0..n {
+        v_inv.scale_row(i, &c_inv);
+    }
+    SmithDecomposition {
+        d: Matrix::identity(r, n),
+        u,
+        v,
+        u_inv,
+        v_inv,
+    }
 }
 
 #[cfg(test)]
