@@ -5,6 +5,7 @@
 //! checker explains which property a user-supplied decomposition fails.
 
 use crate::algebra::matrix::Matrix;
+use crate::algebra::modular::{self, Fp};
 use crate::algebra::qx::{QPoly, QxRing};
 use crate::algebra::ring::GcdDomain;
 use num_bigint::BigInt;
@@ -360,6 +361,108 @@ impl ProductCheck<QxRing> for ClearedQx {
         }
         acc == *rhs
     }
+}
+
+/// Certifies that a square A over Q[x] has invariant factors 1, …, 1, f
+/// with `f = c/lc(c)`, from `A·B = c·I` alone (no transforms), and returns
+/// f. Three exact checks:
+/// 1. `A·B = c·I` with `c ≠ 0` (an integer product, [`ClearedQx`]); then A
+///    is invertible and `B = (c/det A)·adj A`;
+/// 2. the entries of B have gcd 1: their gcd modulo a prime p that divides
+///    no leading coefficient of the first entry is 1, and the degree of a
+///    gcd over Q is at most that of its image; with 1 this gives
+///    `c ~ det A/d_(n−1)` (d_k the k-th determinantal divisor);
+/// 3. `deg c = N`, where N (the least of the sums of row and of column
+///    degrees) bounds deg det A; so `deg d_(n−1) = 0`, hence
+///    d_1 = … = d_(n−1) = 1 and `f_n = det A` up to a unit.
+pub fn certify_last_factor(a: &Matrix<QxRing>, c: &QPoly, b: &Matrix<QxRing>) -> (Certificate, QPoly) {
+    let r = &a.ring;
+    let n = a.rows();
+    let mut cert = Certificate { checks: Vec::new() };
+    let square = n == a.cols() && b.rows() == n && b.cols() == n && !c.is_zero();
+    let mut ci = Matrix::zeros(r.clone(), n, n);
+    for i in 0..n {
+        ci.set(i, i, c.clone());
+    }
+    let prod = square && ClearedQx.product_equals(&[a, b], &ci);
+    cert.push(
+        "A·B = c·I",
+        prod,
+        if prod {
+            format!("holds exactly for a polynomial B and c ≠ 0 of degree {}", c.degree().unwrap_or(0))
+        } else {
+            "fails (or c = 0)".to_string()
+        },
+    );
+    // Entries of B (nonzero), as integer numerators.
+    let entries: Vec<&QPoly> = (0..b.rows())
+        .flat_map(|i| (0..b.cols()).map(move |j| (i, j)))
+        .map(|(i, j)| b.get(i, j))
+        .filter(|e| !e.is_zero())
+        .collect();
+    let mut coprime = None;
+    if let Some(first) = entries.first() {
+        for p in crate::algebra::modular::primes().take(3) {
+            let f = Fp::new(p);
+            let img = |e: &QPoly| modular::trim(e.num().iter().map(|c| f.reduce(c)).collect());
+            let g0 = img(first);
+            if modular::deg(&g0) != first.degree() {
+                continue;
+            }
+            let mut g = g0;
+            let mut used = 1;
+            for e in &entries[1..] {
+                if modular::deg(&g) == Some(0) {
+                    break;
+                }
+                g = modular::gcd(f, &g, &img(e));
+                used += 1;
+            }
+            if modular::deg(&g) == Some(0) {
+                coprime = Some((p, used));
+                break;
+            }
+        }
+    }
+    cert.push(
+        "gcd of the entries of B is 1",
+        coprime.is_some(),
+        match coprime {
+            Some((p, k)) => format!(
+                "the gcd of the first {k} nonzero entries of B is 1 modulo p = {p}, which does not divide the leading coefficient of the first, so their gcd over Q is 1"
+            ),
+            None => "no prime among the first three showed the entries coprime".to_string(),
+        },
+    );
+    let deg = |p: &QPoly| p.degree().unwrap_or(0);
+    let row_sum: usize = (0..n)
+        .map(|i| (0..a.cols()).map(|j| deg(a.get(i, j))).max().unwrap_or(0))
+        .sum();
+    let col_sum: usize = (0..a.cols())
+        .map(|j| (0..n).map(|i| deg(a.get(i, j))).max().unwrap_or(0))
+        .sum();
+    let bound = row_sum.min(col_sum);
+    let deg_ok = c.degree() == Some(bound);
+    cert.push(
+        "deg c = degree bound of det A",
+        deg_ok,
+        format!(
+            "deg c = {}; deg det A ≤ {bound} (least of the sums of row and of column degrees)",
+            deg(c)
+        ),
+    );
+    let ok = prod && coprime.is_some() && deg_ok;
+    let f = r.normalize(c);
+    cert.push(
+        "invariant factors 1, …, 1, f",
+        ok,
+        if ok {
+            "B = (c/det A)·adj A with coprime entries gives c ~ det A/d_(n−1); deg c ≥ deg det A gives d_(n−1) = 1, so f_1 = … = f_(n−1) = 1 and f_n = c/lc(c)".to_string()
+        } else {
+            "not established".to_string()
+        },
+    );
+    (cert, f)
 }
 
 #[cfg(test)]

@@ -130,6 +130,51 @@ pub fn interpolate_int(values: &[BigInt], s: i64) -> Vec<BigInt> {
 
 /// Tries the fast path; `None` means "use the general elimination".
 pub fn try_nonsingular(a: &Matrix<QxRing>) -> Option<SmithDecomposition<QxRing>> {
+    match try_fast(a, u64::MAX)? {
+        FastPath::Decomposition(d) => Some(d),
+        FastPath::FormOnly { .. } => None,
+    }
+}
+
+/// What the fast path produced.
+pub enum FastPath {
+    /// A full decomposition (not yet certified).
+    Decomposition(SmithDecomposition<QxRing>),
+    /// The transforms would have about `bits` bits of coefficients, over the
+    /// caller's limit: instead `A·B = c·I` with `B = adj(Ã)·Δ` polynomial
+    /// and `c = det Ã ≠ 0`, from which the caller certifies the invariant
+    /// factors 1, …, 1, c/lc(c) (see `certify::certify_last_factor`).
+    FormOnly {
+        /// `c`.
+        c: QPoly,
+        /// `B`.
+        b: Matrix<QxRing>,
+        /// Estimated size of U in bits.
+        bits: u64,
+    },
+}
+
+/// Size estimate of the Hermite transforms, in bits: `h_i` is
+/// `-adj_ij·adj_nj⁻¹ mod f`, whose coefficients are about as large as the
+/// resultant of `adj_nj` and f (Hadamard on the Sylvester matrix), and U
+/// has `n(n−1)` such entries of degree ≤ deg adj.
+fn transform_bits(det: &[BigInt], adj: &[Vec<Vec<BigInt>>]) -> u64 {
+    let n = adj.len();
+    let hb = |p: &[BigInt]| p.iter().map(|c| c.bits()).max().unwrap_or(0);
+    let last = &adj[n - 1];
+    let (hx, dx) = last
+        .iter()
+        .map(|p| (hb(p), p.len().saturating_sub(1) as u64))
+        .fold((0, 0), |(h, d), (h2, d2)| (h.max(h2), d.max(d2)));
+    let df = det.len().saturating_sub(1) as u64;
+    let per_coeff = df.saturating_mul(hx).saturating_add(dx.saturating_mul(hb(det)));
+    (n as u64 * (n as u64 - 1))
+        .saturating_mul(dx + 1)
+        .saturating_mul(per_coeff)
+}
+
+/// The fast path with a limit (in bits) on the size of the transforms.
+pub fn try_fast(a: &Matrix<QxRing>, limit_bits: u64) -> Option<FastPath> {
     let n = a.rows();
     if n < 2 || a.cols() != n {
         return None;
@@ -163,7 +208,19 @@ pub fn try_nonsingular(a: &Matrix<QxRing>) -> Option<SmithDecomposition<QxRing>>
     }
     let f = r.normalize(&det_q);
     if det_q.degree() == Some(0) {
-        return Some(unimodular(a, &det_q, &adj_t, &delta));
+        return Some(FastPath::Decomposition(unimodular(
+            a, &det_q, &adj_t, &delta,
+        )));
+    }
+    let bits = transform_bits(det_q.num(), &adj_t);
+    if bits > limit_bits {
+        let mut b = Matrix::zeros(r.clone(), n, n);
+        for (i, row) in adj_t.iter().enumerate() {
+            for (k, (e, d)) in row.iter().zip(&delta).enumerate() {
+                b.set(i, k, QPoly::from_ints(e.iter().map(|x| x * d).collect()));
+            }
+        }
+        return Some(FastPath::FormOnly { c: det_q, b, bits });
     }
     let last: Vec<QPoly> = adj_t[n - 1]
         .iter()
@@ -213,13 +270,13 @@ pub fn try_nonsingular(a: &Matrix<QxRing>) -> Option<SmithDecomposition<QxRing>>
         }
         u_inv.set(i, n - 1, r.div_exact(&acc, &f)?);
     }
-    Some(SmithDecomposition {
+    Some(FastPath::Decomposition(SmithDecomposition {
         d,
         u,
         v,
         u_inv,
         v_inv,
-    })
+    }))
 }
 
 /// A with a constant nonzero determinant (always so for a nonsingular
@@ -261,6 +318,37 @@ fn unimodular(
         u_inv,
         v_inv,
     }
+}
+
+/// A diagonal A with nonzero entries a_i: `c = Π a_i` and
+/// `B = diag(Π_(j≠i) a_j)`, so `A·B = c·I` (prefix and suffix products).
+/// `None` unless A is square, diagonal, at least 3×3 and has no zero on
+/// its diagonal.
+pub fn diagonal_adjugate(a: &Matrix<QxRing>) -> Option<(QPoly, Matrix<QxRing>)> {
+    let n = a.rows();
+    if n < 3 || a.cols() != n || !a.is_diagonal() {
+        return None;
+    }
+    let r = a.ring.clone();
+    let diag = a.diagonal();
+    if diag.iter().any(|e| e.is_zero()) {
+        return None;
+    }
+    let mut prefix = Vec::with_capacity(n + 1);
+    prefix.push(r.one());
+    for e in &diag {
+        let next = r.mul(prefix.last().expect("nonempty"), e);
+        prefix.push(next);
+    }
+    let mut suffix = vec![r.one(); n + 1];
+    for i in (0..n).rev() {
+        suffix[i] = r.mul(&suffix[i + 1], &diag[i]);
+    }
+    let mut b = Matrix::zeros(r.clone(), n, n);
+    for i in 0..n {
+        b.set(i, i, r.mul(&prefix[i], &suffix[i + 1]));
+    }
+    Some((prefix[n].clone(), b))
 }
 
 #[cfg(test)]
