@@ -375,7 +375,11 @@ impl ProductCheck<QxRing> for ClearedQx {
 /// 3. `deg c = N`, where N (the least of the sums of row and of column
 ///    degrees) bounds deg det A; so `deg d_(n−1) = 0`, hence
 ///    d_1 = … = d_(n−1) = 1 and `f_n = det A` up to a unit.
-pub fn certify_last_factor(a: &Matrix<QxRing>, c: &QPoly, b: &Matrix<QxRing>) -> (Certificate, QPoly) {
+pub fn certify_last_factor(
+    a: &Matrix<QxRing>,
+    c: &QPoly,
+    b: &Matrix<QxRing>,
+) -> (Certificate, QPoly) {
     let r = &a.ring;
     let n = a.rows();
     let mut cert = Certificate { checks: Vec::new() };
@@ -389,7 +393,10 @@ pub fn certify_last_factor(a: &Matrix<QxRing>, c: &QPoly, b: &Matrix<QxRing>) ->
         "A·B = c·I",
         prod,
         if prod {
-            format!("holds exactly for a polynomial B and c ≠ 0 of degree {}", c.degree().unwrap_or(0))
+            format!(
+                "holds exactly for a polynomial B and c ≠ 0 of degree {}",
+                c.degree().unwrap_or(0)
+            )
         } else {
             "fails (or c = 0)".to_string()
         },
@@ -469,9 +476,13 @@ pub fn certify_last_factor(a: &Matrix<QxRing>, c: &QPoly, b: &Matrix<QxRing>) ->
 mod tests {
     use super::*;
     use crate::algebra::rational::Q;
+    use crate::algebra::ring::Ring;
 
     fn qp(num: &[i64], den: i64) -> QPoly {
-        QPoly::new(num.iter().map(|&c| BigInt::from(c)).collect(), BigInt::from(den))
+        QPoly::new(
+            num.iter().map(|&c| BigInt::from(c)).collect(),
+            BigInt::from(den),
+        )
     }
 
     #[test]
@@ -507,7 +518,59 @@ mod tests {
         assert_eq!(mul_cleared(&x, &y).expect("shapes"), direct);
         assert!(ClearedQx.product_equals(&[&x, &y], &direct));
         let mut wrong = direct.clone();
-        wrong.set(1, 1, r.add(direct.get(1, 1), &QPoly::constant(&Q::from_integer(1.into()))));
+        wrong.set(
+            1,
+            1,
+            r.add(
+                direct.get(1, 1),
+                &QPoly::constant(&Q::from_integer(1.into())),
+            ),
+        );
         assert!(!ClearedQx.product_equals(&[&x, &y], &wrong));
+    }
+
+    fn diag3(d: [QPoly; 3]) -> Matrix<QxRing> {
+        let r = QxRing::new("x");
+        let mut m = Matrix::zeros(r, 3, 3);
+        for (i, e) in d.into_iter().enumerate() {
+            m.set(i, i, e);
+        }
+        m
+    }
+
+    #[test]
+    fn last_factor_certificate_accepts_coprime_diagonals_only() {
+        let r = QxRing::new("x");
+        let (x, x1, x2) = (qp(&[0, 1], 1), qp(&[1, 1], 1), qp(&[2, 1], 1));
+        let prod = |a: &QPoly, b: &QPoly| r.mul(a, b);
+        // diag(x, x+1, x+2): coprime, f = x(x+1)(x+2).
+        let a = diag3([x.clone(), x1.clone(), x2.clone()]);
+        let c = prod(&prod(&x, &x1), &x2);
+        let b = diag3([prod(&x1, &x2), prod(&x, &x2), prod(&x, &x1)]);
+        let (cert, f) = certify_last_factor(&a, &c, &b);
+        assert!(cert.verified(), "{cert:?}");
+        assert_eq!(f, c);
+        // A tampered B breaks A·B = c·I.
+        let mut bad = b.clone();
+        bad.set(0, 0, x.clone());
+        assert!(!certify_last_factor(&a, &c, &bad).0.verified());
+        // diag(x, x, x+1): A·B = c·I holds but the entries of B share x,
+        // and indeed the invariant factors are 1, x, x(x+1).
+        let a = diag3([x.clone(), x.clone(), x1.clone()]);
+        let c = prod(&prod(&x, &x), &x1);
+        let b = diag3([prod(&x, &x1), prod(&x, &x1), prod(&x, &x)]);
+        let (cert, _) = certify_last_factor(&a, &c, &b);
+        assert!(cert.checks[0].ok, "the product identity itself holds");
+        assert!(!cert.verified());
+        // c·B/x for the coprime diagonal: A·(B/x) = (c/x)·I fails the
+        // degree check only when deg c < the degree bound.
+        let a = diag3([x1.clone(), x2.clone(), qp(&[3, 1], 1)]);
+        let c = prod(&prod(&x1, &x2), &qp(&[3, 1], 1));
+        let b = diag3([
+            prod(&x2, &qp(&[3, 1], 1)),
+            prod(&x1, &qp(&[3, 1], 1)),
+            prod(&x1, &x2),
+        ]);
+        assert!(certify_last_factor(&a, &c, &b).0.verified());
     }
 }

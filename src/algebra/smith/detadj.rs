@@ -262,7 +262,13 @@ pub fn det_adj(m: &[Vec<IntPoly>], deg: usize) -> Option<(IntPoly, Vec<Vec<IntPo
     let adj = (0..n)
         .map(|i| {
             (0..n)
-                .map(|j| trim((0..=deg).map(|c| lift(&|img| img.1[i * n + j][c])).collect()))
+                .map(|j| {
+                    trim(
+                        (0..=deg)
+                            .map(|c| lift(&|img| img.1[i * n + j][c]))
+                            .collect(),
+                    )
+                })
                 .collect()
         })
         .collect();

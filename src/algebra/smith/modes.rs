@@ -7,9 +7,9 @@
 //! Q[all], Q[λ] and Q(others)[λ]; it must not print or know about files.
 
 use super::SmithDecomposition;
-use super::nonsingular::FastPath;
 use super::certify::{Certificate, Check, ProductCheck, Unimodular, certify};
 use super::divisors::{certify_divisors, determinantal_divisors};
+use super::nonsingular::FastPath;
 use crate::algebra::gcd::{content_in, gcd, lcm};
 use crate::algebra::matrix::Matrix;
 use crate::algebra::mpoly::MPoly;
@@ -368,7 +368,8 @@ fn one_symbol(
         .then(|| super::nonsingular::diagonal_adjugate(&au))
         .flatten();
     if let Some((c, b)) = diag {
-        opts.progress.phase("certifying the invariant factors (A·B = c·I)");
+        opts.progress
+            .phase("certifying the invariant factors (A·B = c·I)");
         let (cert, f) = super::certify::certify_last_factor(&au, &c, &b);
         if cert.verified() {
             return Ok(form_only_report(
@@ -390,7 +391,8 @@ fn one_symbol(
     let (dec, alg) = match super::nonsingular::try_fast(&au, TRANSFORM_LIMIT_BITS) {
         Some(FastPath::Decomposition(d)) => (d, NONSINGULAR_ALGORITHM),
         Some(FastPath::FormOnly { c, b, bits }) => {
-            opts.progress.phase("certifying the invariant factors (A·B = c·I)");
+            opts.progress
+                .phase("certifying the invariant factors (A·B = c·I)");
             let (cert, f) = super::certify::certify_last_factor(&au, &c, &b);
             if cert.verified() {
                 return Ok(form_only_report(

@@ -167,7 +167,9 @@ fn transform_bits(det: &[BigInt], adj: &[Vec<Vec<BigInt>>]) -> u64 {
         .map(|p| (hb(p), p.len().saturating_sub(1) as u64))
         .fold((0, 0), |(h, d), (h2, d2)| (h.max(h2), d.max(d2)));
     let df = det.len().saturating_sub(1) as u64;
-    let per_coeff = df.saturating_mul(hx).saturating_add(dx.saturating_mul(hb(det)));
+    let per_coeff = df
+        .saturating_mul(hx)
+        .saturating_add(dx.saturating_mul(hb(det)));
     (n as u64 * (n as u64 - 1))
         .saturating_mul(dx + 1)
         .saturating_mul(per_coeff)
@@ -383,5 +385,51 @@ mod tests {
             let vals: Vec<BigInt> = (0..7).map(|k| eval_int(&p, &BigInt::from(s + k))).collect();
             assert_eq!(interpolate_int(&vals, s), p);
         }
+    }
+
+    #[test]
+    fn form_only_route_agrees_with_the_transforms() {
+        use crate::algebra::smith::certify::certify_last_factor;
+        // A 6×6 of degree 1 with small integer coefficients.
+        let r = QxRing::new("x");
+        let mut seed = 7u64;
+        let mut next = || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            ((seed >> 33) % 19) as i64 - 9
+        };
+        let n = 6;
+        let data: Vec<QPoly> = (0..n * n)
+            .map(|_| QPoly::from_ints(bi(&[next(), next()])))
+            .collect();
+        let a = Matrix::new(r.clone(), n, n, data);
+        let Some(FastPath::Decomposition(full)) = try_fast(&a, u64::MAX) else {
+            panic!("the fast path applies to this matrix");
+        };
+        assert!(full.certify(&a).verified());
+        let Some(FastPath::FormOnly { c, b, .. }) = try_fast(&a, 0) else {
+            panic!("a zero limit gives the form-only route");
+        };
+        let (cert, f) = certify_last_factor(&a, &c, &b);
+        assert!(cert.verified(), "{cert:?}");
+        assert_eq!(&f, full.d.get(n - 1, n - 1));
+    }
+
+    #[test]
+    fn diagonal_adjugate_is_the_adjugate() {
+        let r = QxRing::new("x");
+        let n = 4;
+        let mut a = Matrix::zeros(r.clone(), n, n);
+        for i in 0..n {
+            a.set(i, i, QPoly::from_ints(bi(&[-(i as i64) - 1, 1])));
+        }
+        let (c, b) = diagonal_adjugate(&a).expect("diagonal");
+        let mut ci = Matrix::zeros(r.clone(), n, n);
+        for i in 0..n {
+            ci.set(i, i, c.clone());
+        }
+        assert_eq!(a.mul(&b).expect("shapes"), ci);
+        assert!(diagonal_adjugate(&Matrix::identity(r, 2)).is_none());
     }
 }
