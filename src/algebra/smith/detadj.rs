@@ -90,9 +90,9 @@ pub fn det_adj_mod(f: Fp, m: &[u64], n: usize) -> Option<(u64, Vec<u64>)> {
 fn interpolate_mod(f: Fp, xs: &[u64], ys: &[u64], inv: &[Vec<u64>]) -> Vec<u64> {
     let n = xs.len();
     let mut c = ys.to_vec();
-    for k in 1..n {
+    for (k, inv_k) in inv.iter().enumerate().take(n).skip(1) {
         for i in (k..n).rev() {
-            c[i] = f.mul_pre(inv[k][i], f.sub(c[i], c[i - 1]));
+            c[i] = f.mul_pre(inv_k[i], f.sub(c[i], c[i - 1]));
         }
     }
     let mut p = vec![0u64; n];

@@ -240,10 +240,10 @@ const NONSINGULAR_ALGORITHM: &str = "nonsingular path: det and adj by images mod
 const ELIMINATION_ALGORITHM: &str =
     "elimination: least-degree pivot, division with remainder, content removal";
 
-/// Above this estimated size of U (bits of coefficients, about 30 MB of
-/// digits) the one-symbol mode certifies the invariant factors without
-/// transforms.
-pub const TRANSFORM_LIMIT_BITS: u64 = 100_000_000;
+/// Above this estimated size of U (bits of coefficients; the estimate is
+/// pessimistic, e.g. a 24×24 of degree 1 at 1e8 prints about 19 MB) the
+/// one-symbol mode certifies the invariant factors without transforms.
+pub const TRANSFORM_LIMIT_BITS: u64 = 500_000_000;
 
 /// Diagonal inputs from this size on get the invariant factors without
 /// transforms (when the entries' products are coprime).
