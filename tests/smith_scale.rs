@@ -3,7 +3,10 @@
 //! three symbols that spent minutes in the rational-coefficient PRS gcd,
 //! a 2×2 of degree 100 over Q[x] (the modular inverse in the nonsingular
 //! path), and a 9×9 in two symbols whose minors are too many to enumerate
-//! (the determinantal mode then goes through one Smith form per symbol).
+//! (the determinantal mode then goes through one Smith form per symbol);
+//! and the large one-symbol shapes: a constant 60×60 (unimodular path), a
+//! 40×40 diagonal and a dense 40×40 of degree 1 (invariant factors
+//! certified without transforms).
 
 mod common;
 
