@@ -93,5 +93,23 @@ fn scale(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, peers, seed, scale);
+/// The large one-symbol shapes of issue 15: a 200×200 constant matrix
+/// (det/adj mod primes, U = I/det, V = adj, certified), a 200×200 diagonal
+/// and a 50×50 of degree 1 (invariant factors certified without
+/// transforms).
+fn large(c: &mut Criterion) {
+    let mut g = c.benchmark_group("smith_large");
+    g.sample_size(10);
+    for case in ["const_200", "diag_200", "qx_50x50_deg1"] {
+        let a = first_matrix(&format!("benches/data/issue15_{case}.lmx"));
+        g.bench_function(case, |b| {
+            b.iter(|| {
+                smith_report("A", black_box(&a), &SmithOptions::default()).expect("certified")
+            })
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, peers, seed, scale, large);
 criterion_main!(benches);

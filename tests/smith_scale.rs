@@ -3,7 +3,10 @@
 //! three symbols that spent minutes in the rational-coefficient PRS gcd,
 //! a 2×2 of degree 100 over Q[x] (the modular inverse in the nonsingular
 //! path), and a 9×9 in two symbols whose minors are too many to enumerate
-//! (the determinantal mode then goes through one Smith form per symbol).
+//! (the determinantal mode then goes through one Smith form per symbol);
+//! and the large one-symbol shapes: a constant 60×60 (unimodular path), a
+//! 40×40 diagonal and a dense 40×40 of degree 1 (invariant factors
+//! certified without transforms).
 
 mod common;
 
@@ -126,5 +129,84 @@ fn determinantal_mode_without_minors_on_a_planted_nine_by_nine() {
                 .is_some_and(|p| p.starts_with("Smith form over")))
             .count()
             == 2
+    );
+}
+
+#[test]
+fn constant_sixty_by_sixty_goes_through_the_unimodular_path() {
+    // A nonsingular constant matrix: D = I, U = I/det, V = adj (integer),
+    // det and adj from images mod word primes; certified like any other.
+    let v = json(&["smith", "tests/data/issue15_const_60.lmx"]);
+    assert_eq!(v["verified"], true);
+    assert!(
+        v["algorithm"]
+            .as_str()
+            .expect("text")
+            .starts_with("nonsingular path"),
+        "{}",
+        v["algorithm"]
+    );
+    let inv = strings(&v["invariant_factors"]);
+    assert_eq!(inv, vec!["1"; 60]);
+    assert!(v["U"].is_array() && v["V"].is_array());
+    // U is a scalar matrix: off-diagonal entries are 0.
+    assert_eq!(v["U"][0][1], "0");
+}
+
+fn check_names(v: &Value) -> Vec<String> {
+    v["certificate"]
+        .as_array()
+        .expect("checks")
+        .iter()
+        .map(|c| {
+            assert_eq!(c["ok"], true, "{c}");
+            c["property"].as_str().expect("name").to_string()
+        })
+        .collect()
+}
+
+#[test]
+fn large_diagonal_gets_certified_invariant_factors_without_transforms() {
+    let v = json(&["smith", "tests/data/issue15_diag_40.lmx"]);
+    assert_eq!(v["mode"], "one-symbol");
+    assert_eq!(v["verified"], true);
+    assert!(v["U"].is_null() && v["V"].is_null());
+    let inv = strings(&v["invariant_factors"]);
+    assert_eq!(inv.len(), 40);
+    assert!(inv[..39].iter().all(|f| f == "1"));
+    // Π_(i=1..40) (x − i) = x^40 − 820·x^39 + …
+    assert!(inv[39].starts_with("x^40 - 820*x^39 + "), "{}", inv[39]);
+    let names = check_names(&v);
+    for want in [
+        "A·B = c·I",
+        "gcd of the entries of B is 1",
+        "deg c = degree bound of det A",
+        "invariant factors 1, …, 1, f",
+    ] {
+        assert!(names.iter().any(|n| n == want), "{want} missing: {names:?}");
+    }
+    assert!(
+        v["mode_note"]
+            .as_str()
+            .expect("text")
+            .contains("transforms omitted")
+    );
+}
+
+#[test]
+fn forty_by_forty_of_degree_one_certifies_the_form_when_transforms_are_huge() {
+    let v = json(&["smith", "tests/data/issue15_qx_40x40_deg1.lmx"]);
+    assert_eq!(v["verified"], true);
+    assert!(v["U"].is_null());
+    let inv = strings(&v["invariant_factors"]);
+    assert_eq!(inv.len(), 40);
+    assert!(inv[..39].iter().all(|f| f == "1"));
+    assert!(inv[39].starts_with("x^40"), "{}", inv[39]);
+    assert_eq!(check_names(&v).len(), 4);
+    assert!(
+        v["mode_note"]
+            .as_str()
+            .expect("text")
+            .contains("transforms omitted: U would hold about")
     );
 }

@@ -145,7 +145,7 @@ impl QPoly {
 }
 
 /// Shorter factors use the schoolbook product.
-const KRONECKER_MIN_LEN: usize = 24;
+pub(crate) const KRONECKER_MIN_LEN: usize = 24;
 
 fn add_vec(
     a: &[BigInt],
@@ -172,7 +172,7 @@ fn add_vec(
     out
 }
 
-fn conv(a: &[BigInt], b: &[BigInt]) -> Vec<BigInt> {
+pub(crate) fn conv(a: &[BigInt], b: &[BigInt]) -> Vec<BigInt> {
     if a.is_empty() || b.is_empty() {
         return Vec::new();
     }

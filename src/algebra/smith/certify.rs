@@ -5,7 +5,11 @@
 //! checker explains which property a user-supplied decomposition fails.
 
 use crate::algebra::matrix::Matrix;
+use crate::algebra::modular::{self, Fp};
+use crate::algebra::qx::{QPoly, QxRing};
 use crate::algebra::ring::GcdDomain;
+use num_bigint::BigInt;
+use num_traits::{One, Zero};
 use serde::Serialize;
 
 /// One checked property.
@@ -266,4 +270,307 @@ fn first_difference<R: GcdDomain>(x: &Matrix<R>, y: &Matrix<R>) -> (usize, usize
         }
     }
     (0, 0)
+}
+
+/// Evaluates identities over Q[x] with denominators cleared: each left
+/// factor's rows and each right factor's columns are brought to one
+/// common denominator, the product is taken over Z[x] (no rational
+/// normalisation per term), and each entry of the result is put in
+/// canonical form once. Exactly the same statement as [`Direct`], much
+/// cheaper on large matrices with big rational entries.
+pub struct ClearedQx;
+
+/// `(integer numerators, common denominator)` of a line of `QPoly`s.
+fn clear_line<'a>(line: impl Iterator<Item = &'a QPoly> + Clone) -> (Vec<Vec<BigInt>>, BigInt) {
+    let mut l = BigInt::one();
+    for p in line.clone() {
+        if !p.is_zero() && p.den() != &l {
+            l = crate::algebra::intgcd::lcm(&l, p.den());
+        }
+    }
+    let nums = line
+        .map(|p| {
+            if p.den() == &l {
+                p.num().to_vec()
+            } else {
+                let s = &l / p.den();
+                p.num().iter().map(|c| c * &s).collect()
+            }
+        })
+        .collect();
+    (nums, l)
+}
+
+/// `X·Y` over Q[x] through an integer product.
+pub fn mul_cleared(x: &Matrix<QxRing>, y: &Matrix<QxRing>) -> Option<Matrix<QxRing>> {
+    if x.cols() != y.rows() {
+        return None;
+    }
+    let (m, k, n) = (x.rows(), x.cols(), y.cols());
+    let rows: Vec<(Vec<Vec<BigInt>>, BigInt)> = (0..m)
+        .map(|i| clear_line((0..k).map(|t| x.get(i, t))))
+        .collect();
+    let cols: Vec<(Vec<Vec<BigInt>>, BigInt)> = (0..n)
+        .map(|j| clear_line((0..k).map(|t| y.get(t, j))))
+        .collect();
+    let mut data = Vec::with_capacity(m * n);
+    for (xr, dx) in &rows {
+        for (yc, dy) in &cols {
+            let mut acc: Vec<BigInt> = Vec::new();
+            for (a, b) in xr.iter().zip(yc) {
+                if a.is_empty() || b.is_empty() {
+                    continue;
+                }
+                let len = a.len() + b.len() - 1;
+                if acc.len() < len {
+                    acc.resize(len, BigInt::zero());
+                }
+                if a.len().min(b.len()) >= crate::algebra::qx::KRONECKER_MIN_LEN {
+                    for (s, c) in acc.iter_mut().zip(crate::algebra::qx::conv(a, b)) {
+                        *s += c;
+                    }
+                } else {
+                    for (i, p) in a.iter().enumerate() {
+                        if p.is_zero() {
+                            continue;
+                        }
+                        for (j, q) in b.iter().enumerate() {
+                            acc[i + j] += p * q;
+                        }
+                    }
+                }
+            }
+            data.push(QPoly::new(acc, dx * dy));
+        }
+    }
+    Some(Matrix::new(x.ring.clone(), m, n, data))
+}
+
+impl ProductCheck<QxRing> for ClearedQx {
+    fn product_equals(&self, factors: &[&Matrix<QxRing>], rhs: &Matrix<QxRing>) -> bool {
+        let mut it = factors.iter();
+        let Some(first) = it.next() else {
+            return false;
+        };
+        let mut acc = (*first).clone();
+        for f in it {
+            match mul_cleared(&acc, f) {
+                Some(m) => acc = m,
+                None => return false,
+            }
+        }
+        acc == *rhs
+    }
+}
+
+/// Certifies that a square A over Q[x] has invariant factors 1, …, 1, f
+/// with `f = c/lc(c)`, from `A·B = c·I` alone (no transforms), and returns
+/// f. Three exact checks:
+/// 1. `A·B = c·I` with `c ≠ 0` (an integer product, [`ClearedQx`]); then A
+///    is invertible and `B = (c/det A)·adj A`;
+/// 2. the entries of B have gcd 1: their gcd modulo a prime p that divides
+///    no leading coefficient of the first entry is 1, and the degree of a
+///    gcd over Q is at most that of its image; with 1 this gives
+///    `c ~ det A/d_(n−1)` (d_k the k-th determinantal divisor);
+/// 3. `deg c = N`, where N (the least of the sums of row and of column
+///    degrees) bounds deg det A; so `deg d_(n−1) = 0`, hence
+///    d_1 = … = d_(n−1) = 1 and `f_n = det A` up to a unit.
+pub fn certify_last_factor(
+    a: &Matrix<QxRing>,
+    c: &QPoly,
+    b: &Matrix<QxRing>,
+) -> (Certificate, QPoly) {
+    let r = &a.ring;
+    let n = a.rows();
+    let mut cert = Certificate { checks: Vec::new() };
+    let square = n == a.cols() && b.rows() == n && b.cols() == n && !c.is_zero();
+    let mut ci = Matrix::zeros(r.clone(), n, n);
+    for i in 0..n {
+        ci.set(i, i, c.clone());
+    }
+    let prod = square && ClearedQx.product_equals(&[a, b], &ci);
+    cert.push(
+        "A·B = c·I",
+        prod,
+        if prod {
+            format!(
+                "holds exactly for a polynomial B and c ≠ 0 of degree {}",
+                c.degree().unwrap_or(0)
+            )
+        } else {
+            "fails (or c = 0)".to_string()
+        },
+    );
+    // Entries of B (nonzero), as integer numerators.
+    let entries: Vec<&QPoly> = (0..b.rows())
+        .flat_map(|i| (0..b.cols()).map(move |j| (i, j)))
+        .map(|(i, j)| b.get(i, j))
+        .filter(|e| !e.is_zero())
+        .collect();
+    let mut coprime = None;
+    if let Some(first) = entries.first() {
+        for p in crate::algebra::modular::primes().take(3) {
+            let f = Fp::new(p);
+            let img = |e: &QPoly| modular::trim(e.num().iter().map(|c| f.reduce(c)).collect());
+            let g0 = img(first);
+            if modular::deg(&g0) != first.degree() {
+                continue;
+            }
+            let mut g = g0;
+            let mut used = 1;
+            for e in &entries[1..] {
+                if modular::deg(&g) == Some(0) {
+                    break;
+                }
+                g = modular::gcd(f, &g, &img(e));
+                used += 1;
+            }
+            if modular::deg(&g) == Some(0) {
+                coprime = Some((p, used));
+                break;
+            }
+        }
+    }
+    cert.push(
+        "gcd of the entries of B is 1",
+        coprime.is_some(),
+        match coprime {
+            Some((p, k)) => format!(
+                "the gcd of the first {k} nonzero entries of B is 1 modulo p = {p}, which does not divide the leading coefficient of the first, so their gcd over Q is 1"
+            ),
+            None => "no prime among the first three showed the entries coprime".to_string(),
+        },
+    );
+    let deg = |p: &QPoly| p.degree().unwrap_or(0);
+    let row_sum: usize = (0..n)
+        .map(|i| (0..a.cols()).map(|j| deg(a.get(i, j))).max().unwrap_or(0))
+        .sum();
+    let col_sum: usize = (0..a.cols())
+        .map(|j| (0..n).map(|i| deg(a.get(i, j))).max().unwrap_or(0))
+        .sum();
+    let bound = row_sum.min(col_sum);
+    let deg_ok = c.degree() == Some(bound);
+    cert.push(
+        "deg c = degree bound of det A",
+        deg_ok,
+        format!(
+            "deg c = {}; deg det A ≤ {bound} (least of the sums of row and of column degrees)",
+            deg(c)
+        ),
+    );
+    let ok = prod && coprime.is_some() && deg_ok;
+    let f = r.normalize(c);
+    cert.push(
+        "invariant factors 1, …, 1, f",
+        ok,
+        if ok {
+            "B = (c/det A)·adj A with coprime entries gives c ~ det A/d_(n−1); deg c ≥ deg det A gives d_(n−1) = 1, so f_1 = … = f_(n−1) = 1 and f_n = c/lc(c)".to_string()
+        } else {
+            "not established".to_string()
+        },
+    );
+    (cert, f)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::algebra::rational::Q;
+    use crate::algebra::ring::Ring;
+
+    fn qp(num: &[i64], den: i64) -> QPoly {
+        QPoly::new(
+            num.iter().map(|&c| BigInt::from(c)).collect(),
+            BigInt::from(den),
+        )
+    }
+
+    #[test]
+    fn cleared_product_agrees_with_the_ring_product() {
+        let r = QxRing::new("x");
+        let x = Matrix::new(
+            r.clone(),
+            2,
+            3,
+            vec![
+                qp(&[1, 2], 3),
+                qp(&[0, 0, 5], 7),
+                qp(&[], 1),
+                qp(&[-4], 9),
+                qp(&[1, 1], 2),
+                qp(&[3, 0, 1], 5),
+            ],
+        );
+        let y = Matrix::new(
+            r.clone(),
+            3,
+            2,
+            vec![
+                qp(&[2, -1], 5),
+                qp(&[1], 1),
+                qp(&[0, 3], 4),
+                qp(&[7, 7, 7], 21),
+                qp(&[-1, 0, 0, 2], 3),
+                qp(&[5], 6),
+            ],
+        );
+        let direct = x.mul(&y).expect("shapes");
+        assert_eq!(mul_cleared(&x, &y).expect("shapes"), direct);
+        assert!(ClearedQx.product_equals(&[&x, &y], &direct));
+        let mut wrong = direct.clone();
+        wrong.set(
+            1,
+            1,
+            r.add(
+                direct.get(1, 1),
+                &QPoly::constant(&Q::from_integer(1.into())),
+            ),
+        );
+        assert!(!ClearedQx.product_equals(&[&x, &y], &wrong));
+    }
+
+    fn diag3(d: [QPoly; 3]) -> Matrix<QxRing> {
+        let r = QxRing::new("x");
+        let mut m = Matrix::zeros(r, 3, 3);
+        for (i, e) in d.into_iter().enumerate() {
+            m.set(i, i, e);
+        }
+        m
+    }
+
+    #[test]
+    fn last_factor_certificate_accepts_coprime_diagonals_only() {
+        let r = QxRing::new("x");
+        let (x, x1, x2) = (qp(&[0, 1], 1), qp(&[1, 1], 1), qp(&[2, 1], 1));
+        let prod = |a: &QPoly, b: &QPoly| r.mul(a, b);
+        // diag(x, x+1, x+2): coprime, f = x(x+1)(x+2).
+        let a = diag3([x.clone(), x1.clone(), x2.clone()]);
+        let c = prod(&prod(&x, &x1), &x2);
+        let b = diag3([prod(&x1, &x2), prod(&x, &x2), prod(&x, &x1)]);
+        let (cert, f) = certify_last_factor(&a, &c, &b);
+        assert!(cert.verified(), "{cert:?}");
+        assert_eq!(f, c);
+        // A tampered B breaks A·B = c·I.
+        let mut bad = b.clone();
+        bad.set(0, 0, x.clone());
+        assert!(!certify_last_factor(&a, &c, &bad).0.verified());
+        // diag(x, x, x+1): A·B = c·I holds but the entries of B share x,
+        // and indeed the invariant factors are 1, x, x(x+1).
+        let a = diag3([x.clone(), x.clone(), x1.clone()]);
+        let c = prod(&prod(&x, &x), &x1);
+        let b = diag3([prod(&x, &x1), prod(&x, &x1), prod(&x, &x)]);
+        let (cert, _) = certify_last_factor(&a, &c, &b);
+        assert!(cert.checks[0].ok, "the product identity itself holds");
+        assert!(!cert.verified());
+        // c·B/x for the coprime diagonal: A·(B/x) = (c/x)·I fails the
+        // degree check only when deg c < the degree bound.
+        let a = diag3([x1.clone(), x2.clone(), qp(&[3, 1], 1)]);
+        let c = prod(&prod(&x1, &x2), &qp(&[3, 1], 1));
+        let b = diag3([
+            prod(&x2, &qp(&[3, 1], 1)),
+            prod(&x1, &qp(&[3, 1], 1)),
+            prod(&x1, &x2),
+        ]);
+        assert!(certify_last_factor(&a, &c, &b).0.verified());
+    }
 }

@@ -1,6 +1,8 @@
 //! Smith normal form, in three honest modes:
 //!
-//! 1. one symbol: over Q[λ] with unimodular U, V and monic D;
+//! 1. one symbol: over Q[λ] with unimodular U, V and monic D (for inputs
+//!    whose transforms would be enormous, D alone, certified from
+//!    `A·B = c·I`, see [`certify::certify_last_factor`]);
 //! 2. a principal symbol among several: over K[λ], K = Q(others), plus a
 //!    denominator-free form over Q[all];
 //! 3. several symbols, no principal one: invariant factors over Q[all] from
@@ -11,6 +13,7 @@
 //! decomposition handed out of this module has been certified.
 
 pub mod certify;
+pub mod detadj;
 pub mod divisors;
 pub mod elimination;
 pub mod modes;

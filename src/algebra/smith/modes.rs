@@ -7,8 +7,9 @@
 //! Q[all], Q[λ] and Q(others)[λ]; it must not print or know about files.
 
 use super::SmithDecomposition;
-use super::certify::{Certificate, Check, Direct, ProductCheck, Unimodular, certify};
+use super::certify::{Certificate, Check, ProductCheck, Unimodular, certify};
 use super::divisors::{certify_divisors, determinantal_divisors};
+use super::nonsingular::FastPath;
 use crate::algebra::gcd::{content_in, gcd, lcm};
 use crate::algebra::matrix::Matrix;
 use crate::algebra::mpoly::MPoly;
@@ -230,14 +231,67 @@ pub fn to_univariate(a: &Matrix<PolyRing>) -> Matrix<QxRing> {
 /// general elimination otherwise. Returns the algorithm's name too.
 pub fn decompose_qx(a: &Matrix<QxRing>) -> (SmithDecomposition<QxRing>, &'static str) {
     match super::nonsingular::try_nonsingular(a) {
-        Some(d) => (
-            d,
-            "nonsingular path: det and adj by evaluation/interpolation, Hermite structure W·A = [[I, h], [0, f]]",
-        ),
-        None => (
-            SmithDecomposition::new(a),
-            "elimination: least-degree pivot, division with remainder, content removal",
-        ),
+        Some(d) => (d, NONSINGULAR_ALGORITHM),
+        None => (SmithDecomposition::new(a), ELIMINATION_ALGORITHM),
+    }
+}
+
+const NONSINGULAR_ALGORITHM: &str = "nonsingular path: det and adj by images mod word primes and CRT, Hermite structure W·A = [[I, h], [0, f]] (U = I/det, V = adj when det is constant)";
+const ELIMINATION_ALGORITHM: &str =
+    "elimination: least-degree pivot, division with remainder, content removal";
+
+/// Above this estimated size of U (bits of coefficients; the estimate is
+/// pessimistic, e.g. a 24×24 of degree 1 at 1e8 prints about 19 MB) the
+/// one-symbol mode certifies the invariant factors without transforms.
+pub const TRANSFORM_LIMIT_BITS: u64 = 500_000_000;
+
+/// Diagonal inputs from this size on get the invariant factors without
+/// transforms (when the entries' products are coprime).
+pub const DIAGONAL_FORM_ONLY: usize = 32;
+
+/// A one-symbol report with D alone, certified by
+/// [`super::certify::certify_last_factor`].
+#[allow(clippy::too_many_arguments)]
+fn form_only_report(
+    name: &str,
+    a_poly: &Matrix<PolyRing>,
+    a: &Matrix<QxRing>,
+    f: QPoly,
+    cert: Certificate,
+    ring: String,
+    algorithm: &str,
+    note: String,
+    opts: &SmithOptions,
+) -> SmithReport {
+    let r = &a.ring;
+    let n = a.rows();
+    let mut d = Matrix::identity(r.clone(), n);
+    d.set(n - 1, n - 1, f.clone());
+    let inv = d.diagonal();
+    let latex = opts.latex.then(|| LatexForms {
+        a: rows_of(a_poly, true),
+        invariant_factors: inv.iter().map(|e| r.latex(e)).collect(),
+        d: Some(rows_of(&d, true)),
+        u: None,
+        v: None,
+    });
+    SmithReport {
+        matrix: name.to_string(),
+        ring,
+        mode: Mode::OneSymbol,
+        mode_note: note,
+        algorithm: algorithm.to_string(),
+        a: rows_of(a_poly, false),
+        invariant_factors: inv.iter().map(|e| r.lmx(e)).collect(),
+        rank: n,
+        d: rows_of(&d, false),
+        u: None,
+        v: None,
+        verified: true,
+        certificate: cert.checks,
+        invariant_factor_coefficients: None,
+        denominator_free: None,
+        latex,
     }
 }
 
@@ -310,7 +364,57 @@ fn one_symbol(
     };
     opts.progress
         .phase(&format!("Smith form over {}", au.ring.name()));
-    let (dec, alg) = decompose_qx(&au);
+    let diag = (au.rows() >= DIAGONAL_FORM_ONLY)
+        .then(|| super::nonsingular::diagonal_adjugate(&au))
+        .flatten();
+    if let Some((c, b)) = diag {
+        opts.progress
+            .phase("certifying the invariant factors (A·B = c·I)");
+        let (cert, f) = super::certify::certify_last_factor(&au, &c, &b);
+        if cert.verified() {
+            return Ok(form_only_report(
+                name,
+                a,
+                &au,
+                f,
+                cert,
+                ring,
+                "diagonal input: c = product of the diagonal, B = diag(product of the others); invariant factors from A·B = c·I, the gcd of B's entries and deg c (no elimination)",
+                format!(
+                    "{note}; transforms omitted for a {n}×{n} diagonal input (they would be dense with Bezout coefficients of huge height): the invariant factors alone are certified",
+                    n = au.rows()
+                ),
+                opts,
+            ));
+        }
+    }
+    let (dec, alg) = match super::nonsingular::try_fast(&au, TRANSFORM_LIMIT_BITS) {
+        Some(FastPath::Decomposition(d)) => (d, NONSINGULAR_ALGORITHM),
+        Some(FastPath::FormOnly { c, b, bits }) => {
+            opts.progress
+                .phase("certifying the invariant factors (A·B = c·I)");
+            let (cert, f) = super::certify::certify_last_factor(&au, &c, &b);
+            if cert.verified() {
+                return Ok(form_only_report(
+                    name,
+                    a,
+                    &au,
+                    f,
+                    cert,
+                    ring,
+                    "det and adj by images mod word primes (CRT above a proved bound); invariant factors from A·B = c·I, the gcd of B's entries and deg c",
+                    format!(
+                        "{note}; transforms omitted: U would hold about {:.1e} digits of coefficients (limit {:.1e}); the invariant factors alone are certified",
+                        bits as f64 * std::f64::consts::LOG10_2,
+                        TRANSFORM_LIMIT_BITS as f64 * std::f64::consts::LOG10_2
+                    ),
+                    opts,
+                ));
+            }
+            (SmithDecomposition::new(&au), ELIMINATION_ALGORITHM)
+        }
+        None => (SmithDecomposition::new(&au), ELIMINATION_ALGORITHM),
+    };
     Ok(generic_report(
         name,
         a,
@@ -321,7 +425,7 @@ fn one_symbol(
         ring,
         note,
         opts,
-        &Direct,
+        &super::certify::ClearedQx,
     )?
     .0)
 }

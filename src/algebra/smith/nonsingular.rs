@@ -1,9 +1,10 @@
 //! The fast path for a square nonsingular A over Q[x] whose first n-1
 //! invariant factors are 1 (the generic case, e.g. random matrices).
 //!
-//! det A and adj A are computed exactly by evaluation at N+1 consecutive
-//! integers (N a degree bound), fraction-free Gauss–Jordan over Z at each
-//! point, and integer Newton interpolation. With f = det/lc(det) and `a` the
+//! det A and adj A are computed exactly by images mod word primes at N+1
+//! points (N a degree bound) and Chinese remaindering up to a proved
+//! coefficient bound ([`super::detadj`]); the fraction-free integer
+//! Gauss–Jordan kept here is the reference the tests compare against. With f = det/lc(det) and `a` the
 //! last row of adj A, if some `a_j` is invertible mod f then
 //! `h_i = -adj_ij · a_j⁻¹ mod f` gives the Hermite structure
 //! `W·A = H = [[I, h], [0, f]]` with `W = H·adj(A)/det(A)` (checked by exact
@@ -20,6 +21,7 @@ use crate::algebra::ring::{GcdDomain, Ring};
 use num_bigint::BigInt;
 use num_traits::{One, Zero};
 
+#[cfg(test)]
 fn eval_int(p: &[BigInt], x: &BigInt) -> BigInt {
     let mut acc = BigInt::zero();
     for c in p.iter().rev() {
@@ -128,6 +130,53 @@ pub fn interpolate_int(values: &[BigInt], s: i64) -> Vec<BigInt> {
 
 /// Tries the fast path; `None` means "use the general elimination".
 pub fn try_nonsingular(a: &Matrix<QxRing>) -> Option<SmithDecomposition<QxRing>> {
+    match try_fast(a, u64::MAX)? {
+        FastPath::Decomposition(d) => Some(d),
+        FastPath::FormOnly { .. } => None,
+    }
+}
+
+/// What the fast path produced.
+pub enum FastPath {
+    /// A full decomposition (not yet certified).
+    Decomposition(SmithDecomposition<QxRing>),
+    /// The transforms would have about `bits` bits of coefficients, over the
+    /// caller's limit: instead `A·B = c·I` with `B = adj(Ã)·Δ` polynomial
+    /// and `c = det Ã ≠ 0`, from which the caller certifies the invariant
+    /// factors 1, …, 1, c/lc(c) (see `certify::certify_last_factor`).
+    FormOnly {
+        /// `c`.
+        c: QPoly,
+        /// `B`.
+        b: Matrix<QxRing>,
+        /// Estimated size of U in bits.
+        bits: u64,
+    },
+}
+
+/// Size estimate of the Hermite transforms, in bits: `h_i` is
+/// `-adj_ij·adj_nj⁻¹ mod f`, whose coefficients are about as large as the
+/// resultant of `adj_nj` and f (Hadamard on the Sylvester matrix), and U
+/// has `n(n−1)` such entries of degree ≤ deg adj.
+fn transform_bits(det: &[BigInt], adj: &[Vec<Vec<BigInt>>]) -> u64 {
+    let n = adj.len();
+    let hb = |p: &[BigInt]| p.iter().map(|c| c.bits()).max().unwrap_or(0);
+    let last = &adj[n - 1];
+    let (hx, dx) = last
+        .iter()
+        .map(|p| (hb(p), p.len().saturating_sub(1) as u64))
+        .fold((0, 0), |(h, d), (h2, d2)| (h.max(h2), d.max(d2)));
+    let df = det.len().saturating_sub(1) as u64;
+    let per_coeff = df
+        .saturating_mul(hx)
+        .saturating_add(dx.saturating_mul(hb(det)));
+    (n as u64 * (n as u64 - 1))
+        .saturating_mul(dx + 1)
+        .saturating_mul(per_coeff)
+}
+
+/// The fast path with a limit (in bits) on the size of the transforms.
+pub fn try_fast(a: &Matrix<QxRing>, limit_bits: u64) -> Option<FastPath> {
     let n = a.rows();
     if n < 2 || a.cols() != n {
         return None;
@@ -154,12 +203,27 @@ pub fn try_nonsingular(a: &Matrix<QxRing>) -> Option<SmithDecomposition<QxRing>>
         delta.push(l);
         at.push(row);
     }
-    let (det_t, adj_t) = det_adj_poly(&at, bound)?;
+    let (det_t, adj_t) = super::detadj::det_adj(&at, bound)?;
     let det_q = QPoly::from_ints(det_t);
     if det_q.is_zero() {
         return None;
     }
     let f = r.normalize(&det_q);
+    if det_q.degree() == Some(0) {
+        return Some(FastPath::Decomposition(unimodular(
+            a, &det_q, &adj_t, &delta,
+        )));
+    }
+    let bits = transform_bits(det_q.num(), &adj_t);
+    if bits > limit_bits {
+        let mut b = Matrix::zeros(r.clone(), n, n);
+        for (i, row) in adj_t.iter().enumerate() {
+            for (k, (e, d)) in row.iter().zip(&delta).enumerate() {
+                b.set(i, k, QPoly::from_ints(e.iter().map(|x| x * d).collect()));
+            }
+        }
+        return Some(FastPath::FormOnly { c: det_q, b, bits });
+    }
     let last: Vec<QPoly> = adj_t[n - 1]
         .iter()
         .map(|p| QPoly::from_ints(p.clone()))
@@ -208,56 +272,85 @@ pub fn try_nonsingular(a: &Matrix<QxRing>) -> Option<SmithDecomposition<QxRing>>
         }
         u_inv.set(i, n - 1, r.div_exact(&acc, &f)?);
     }
-    Some(SmithDecomposition {
+    Some(FastPath::Decomposition(SmithDecomposition {
         d,
         u,
         v,
         u_inv,
         v_inv,
-    })
+    }))
 }
 
-/// An integer polynomial (coefficients, low degree first).
-type IntPoly = Vec<BigInt>;
-
-/// det and adj of an integer polynomial matrix (entries as coefficient
-/// vectors) with det degree ≤ `bound`, by evaluation/interpolation.
-fn det_adj_poly(m: &[Vec<IntPoly>], bound: usize) -> Option<(IntPoly, Vec<Vec<IntPoly>>)> {
-    let n = m.len();
-    // Consecutive nodes s..=s+bound avoiding singular points (a nonzero det
-    // has at most `bound` roots, so a few shifts always suffice).
-    'shift: for attempt in 0..=bound + 1 {
-        let s = -(bound as i64) / 2 + (attempt as i64) * (bound as i64 + 1);
-        let mut dets = Vec::with_capacity(bound + 1);
-        let mut adjs = Vec::with_capacity(bound + 1);
-        for k in 0..=bound {
-            let x = BigInt::from(s + k as i64);
-            let mx: Vec<Vec<BigInt>> = m
-                .iter()
-                .map(|row| row.iter().map(|p| eval_int(p, &x)).collect())
-                .collect();
-            match det_adj_int(&mx) {
-                Some((d, adj)) => {
-                    dets.push(d);
-                    adjs.push(adj);
-                }
-                None => continue 'shift,
-            }
-        }
-        let det = interpolate_int(&dets, s);
-        let adj = (0..n)
-            .map(|i| {
-                (0..n)
-                    .map(|j| {
-                        let vals: Vec<BigInt> = adjs.iter().map(|a| a[i][j].clone()).collect();
-                        interpolate_int(&vals, s)
-                    })
-                    .collect()
-            })
-            .collect();
-        return Some((det, adj));
+/// A with a constant nonzero determinant (always so for a nonsingular
+/// constant matrix): `A·adj(Ã)·Δ = det Ã·I` for `Ã = Δ·A` integral, so
+/// `U = I/det Ã`, `V = adj(Ã)·Δ`, `D = I`, with `U⁻¹ = det Ã·I` and
+/// `V⁻¹ = A/det Ã`. Nothing is inverted over Q and V has integer
+/// coefficients up to the row scales δ.
+fn unimodular(
+    a: &Matrix<QxRing>,
+    det: &QPoly,
+    adj: &[Vec<Vec<BigInt>>],
+    delta: &[BigInt],
+) -> SmithDecomposition<QxRing> {
+    let r = a.ring.clone();
+    let n = a.rows();
+    let c = det.lc();
+    let mut u = Matrix::identity(r.clone(), n);
+    let mut u_inv = Matrix::identity(r.clone(), n);
+    let c_inv = QPoly::constant(&c.recip());
+    let c_poly = QPoly::constant(&c);
+    for i in 0..n {
+        u.set(i, i, c_inv.clone());
+        u_inv.set(i, i, c_poly.clone());
     }
-    None
+    let mut v = Matrix::zeros(r.clone(), n, n);
+    for (i, row) in adj.iter().enumerate() {
+        for (k, (e, d)) in row.iter().zip(delta).enumerate() {
+            v.set(i, k, QPoly::from_ints(e.iter().map(|x| x * d).collect()));
+        }
+    }
+    let mut v_inv = a.clone();
+    for i in 0..n {
+        v_inv.scale_row(i, &c_inv);
+    }
+    SmithDecomposition {
+        d: Matrix::identity(r, n),
+        u,
+        v,
+        u_inv,
+        v_inv,
+    }
+}
+
+/// A diagonal A with nonzero entries a_i: `c = Π a_i` and
+/// `B = diag(Π_(j≠i) a_j)`, so `A·B = c·I` (prefix and suffix products).
+/// `None` unless A is square, diagonal, at least 3×3 and has no zero on
+/// its diagonal.
+pub fn diagonal_adjugate(a: &Matrix<QxRing>) -> Option<(QPoly, Matrix<QxRing>)> {
+    let n = a.rows();
+    if n < 3 || a.cols() != n || !a.is_diagonal() {
+        return None;
+    }
+    let r = a.ring.clone();
+    let diag = a.diagonal();
+    if diag.iter().any(|e| e.is_zero()) {
+        return None;
+    }
+    let mut prefix = Vec::with_capacity(n + 1);
+    prefix.push(r.one());
+    for e in &diag {
+        let next = r.mul(prefix.last().expect("nonempty"), e);
+        prefix.push(next);
+    }
+    let mut suffix = vec![r.one(); n + 1];
+    for i in (0..n).rev() {
+        suffix[i] = r.mul(&suffix[i + 1], &diag[i]);
+    }
+    let mut b = Matrix::zeros(r.clone(), n, n);
+    for i in 0..n {
+        b.set(i, i, r.mul(&prefix[i], &suffix[i + 1]));
+    }
+    Some((prefix[n].clone(), b))
 }
 
 #[cfg(test)]
@@ -292,5 +385,51 @@ mod tests {
             let vals: Vec<BigInt> = (0..7).map(|k| eval_int(&p, &BigInt::from(s + k))).collect();
             assert_eq!(interpolate_int(&vals, s), p);
         }
+    }
+
+    #[test]
+    fn form_only_route_agrees_with_the_transforms() {
+        use crate::algebra::smith::certify::certify_last_factor;
+        // A 6×6 of degree 1 with small integer coefficients.
+        let r = QxRing::new("x");
+        let mut seed = 7u64;
+        let mut next = || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            ((seed >> 33) % 19) as i64 - 9
+        };
+        let n = 6;
+        let data: Vec<QPoly> = (0..n * n)
+            .map(|_| QPoly::from_ints(bi(&[next(), next()])))
+            .collect();
+        let a = Matrix::new(r.clone(), n, n, data);
+        let Some(FastPath::Decomposition(full)) = try_fast(&a, u64::MAX) else {
+            panic!("the fast path applies to this matrix");
+        };
+        assert!(full.certify(&a).verified());
+        let Some(FastPath::FormOnly { c, b, .. }) = try_fast(&a, 0) else {
+            panic!("a zero limit gives the form-only route");
+        };
+        let (cert, f) = certify_last_factor(&a, &c, &b);
+        assert!(cert.verified(), "{cert:?}");
+        assert_eq!(&f, full.d.get(n - 1, n - 1));
+    }
+
+    #[test]
+    fn diagonal_adjugate_is_the_adjugate() {
+        let r = QxRing::new("x");
+        let n = 4;
+        let mut a = Matrix::zeros(r.clone(), n, n);
+        for i in 0..n {
+            a.set(i, i, QPoly::from_ints(bi(&[-(i as i64) - 1, 1])));
+        }
+        let (c, b) = diagonal_adjugate(&a).expect("diagonal");
+        let mut ci = Matrix::zeros(r.clone(), n, n);
+        for i in 0..n {
+            ci.set(i, i, c.clone());
+        }
+        assert_eq!(a.mul(&b).expect("shapes"), ci);
+        assert!(diagonal_adjugate(&Matrix::identity(r, 2)).is_none());
     }
 }

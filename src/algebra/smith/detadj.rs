@@ -1,0 +1,352 @@
+//! det and adjugate of a square matrix of integer polynomials, by images.
+//! For word primes p ([`crate::algebra::modular::primes`]) and enough
+//! points x of Z_p, Gauss–Jordan mod p gives det A(x) and adj A(x) =
+//! det A(x)·A(x)⁻¹; Newton interpolation mod p turns the values into
+//! polynomials mod p, and Garner's mixed-radix Chinese remaindering lifts
+//! them to Z once the product of the primes exceeds twice a proved bound on
+//! every coefficient. The bound: a coefficient of a polynomial is at most
+//! its largest modulus on the unit circle (Cauchy), and there
+//! `|a_ij(x)| ≤ ‖a_ij‖₁`, so Hadamard's inequality with the row norms
+//! `r_i = (Σ_j ‖a_ij‖₁²)^½` bounds every coefficient of det A and of every
+//! (n−1)-minor by `Π r_i` (each `r_i ≥ 1`). The result is therefore exact,
+//! not probabilistic. A prime is skipped when det A vanishes mod p as a
+//! polynomial; three such primes in a row mean "probably singular" and give
+//! `None` (callers then take another, slower, exact route). This module
+//! owns no Smith logic and must not certify: callers' results are checked.
+
+use crate::algebra::modular::{Fp, primes};
+use num_bigint::BigInt;
+use num_traits::{Signed, Zero};
+
+/// An integer polynomial (coefficients, low degree first).
+pub type IntPoly = Vec<BigInt>;
+
+/// Upper bound, in bits, of every coefficient of det A and of every
+/// (n−1)-minor; `None` when a row is zero (A is singular).
+pub fn coefficient_bound_bits(m: &[Vec<IntPoly>]) -> Option<u64> {
+    let mut total = 0u64;
+    for row in m {
+        let mut s = BigInt::zero();
+        for p in row {
+            let n1: BigInt = p.iter().map(|c| c.abs()).sum();
+            s += &n1 * &n1;
+        }
+        if s.is_zero() {
+            return None;
+        }
+        // √s < 2^⌈bits(s)/2⌉.
+        total += s.bits().div_ceil(2);
+    }
+    Some(total)
+}
+
+/// Gauss–Jordan on `[M | I]` mod p: `(det M, adj M)` (row-major), or
+/// `None` when M is singular mod p.
+pub fn det_adj_mod(f: Fp, m: &[u64], n: usize) -> Option<(u64, Vec<u64>)> {
+    let w = 2 * n;
+    let mut a = vec![0u64; n * w];
+    for i in 0..n {
+        a[i * w..i * w + n].copy_from_slice(&m[i * n..(i + 1) * n]);
+        a[i * w + n + i] = 1;
+    }
+    let mut det = 1u64;
+    for k in 0..n {
+        let p = (k..n).find(|&i| a[i * w + k] != 0)?;
+        if p != k {
+            for j in 0..w {
+                a.swap(p * w + j, k * w + j);
+            }
+            det = f.neg(det);
+        }
+        let piv = a[k * w + k];
+        det = f.mul(det, piv);
+        let inv = f.prep(f.inv(piv));
+        for j in k..w {
+            a[k * w + j] = f.mul_pre(inv, a[k * w + j]);
+        }
+        let (before, rest) = a.split_at_mut(k * w);
+        let (prow, after) = rest.split_at_mut(w);
+        for row in before.chunks_mut(w).chain(after.chunks_mut(w)) {
+            let c = row[k];
+            if c == 0 {
+                continue;
+            }
+            let cm = f.prep(c);
+            for j in k..w {
+                row[j] = f.sub(row[j], f.mul_pre(cm, prow[j]));
+            }
+        }
+    }
+    let dm = f.prep(det);
+    let adj = (0..n)
+        .flat_map(|i| (0..n).map(move |j| (i, j)))
+        .map(|(i, j)| f.mul_pre(dm, a[i * w + n + j]))
+        .collect();
+    Some((det, adj))
+}
+
+/// Newton interpolation mod p through `(xs[k], ys[k])`, in monomial form
+/// (length `xs.len()`, not trimmed). `inv[k][i]` = `(xs[i] − xs[i−k])⁻¹`.
+fn interpolate_mod(f: Fp, xs: &[u64], ys: &[u64], inv: &[Vec<u64>]) -> Vec<u64> {
+    let n = xs.len();
+    let mut c = ys.to_vec();
+    for (k, inv_k) in inv.iter().enumerate().take(n).skip(1) {
+        for i in (k..n).rev() {
+            c[i] = f.mul_pre(inv_k[i], f.sub(c[i], c[i - 1]));
+        }
+    }
+    let mut p = vec![0u64; n];
+    // p ← p·(x − xs[k]) + c[k], from the top.
+    let mut len = 0usize;
+    for k in (0..n).rev() {
+        let xk = xs[k];
+        // multiply p (length len) by (x − xk)
+        let mut carry = 0u64;
+        for coef in p.iter_mut().take(len) {
+            let cur = *coef;
+            *coef = f.sub(carry, f.mul(cur, xk));
+            carry = cur;
+        }
+        if len < n {
+            p[len] = carry;
+        }
+        len = (len + 1).min(n);
+        p[0] = f.add(p[0], c[k]);
+    }
+    p
+}
+
+/// One prime's image: det and adj as polynomials mod p of degree ≤ `deg`
+/// (coefficient vectors of length `deg + 1`), or `None` if det A ≡ 0 mod p.
+#[allow(clippy::type_complexity)]
+fn image(f: Fp, m: &[Vec<IntPoly>], deg: usize) -> Option<(Vec<u64>, Vec<Vec<u64>>)> {
+    let n = m.len();
+    let mp: Vec<Vec<u64>> = m
+        .iter()
+        .flat_map(|row| row.iter().map(|p| p.iter().map(|c| f.reduce(c)).collect()))
+        .collect();
+    let mut xs = Vec::with_capacity(deg + 1);
+    let mut dets = Vec::with_capacity(deg + 1);
+    let mut adjs: Vec<Vec<u64>> = Vec::with_capacity(deg + 1);
+    let mut x = 0u64;
+    let mut failures = 0usize;
+    let mut vals = vec![0u64; n * n];
+    while xs.len() <= deg {
+        for (v, p) in vals.iter_mut().zip(&mp) {
+            *v = p.iter().rev().fold(0u64, |acc, &c| f.add(f.mul(acc, x), c));
+        }
+        match det_adj_mod(f, &vals, n) {
+            Some((d, adj)) => {
+                xs.push(x);
+                dets.push(d);
+                adjs.push(adj);
+            }
+            None => {
+                failures += 1;
+                // A nonzero det of degree ≤ deg has at most deg roots.
+                if failures > deg {
+                    return None;
+                }
+            }
+        }
+        x += 1;
+    }
+    let npts = xs.len();
+    let inv: Vec<Vec<u64>> = (0..npts)
+        .map(|k| {
+            (0..npts)
+                .map(|i| {
+                    if k == 0 || i < k {
+                        0
+                    } else {
+                        f.prep(f.inv(f.sub(xs[i], xs[i - k])))
+                    }
+                })
+                .collect()
+        })
+        .collect();
+    let det = interpolate_mod(f, &xs, &dets, &inv);
+    let mut ys = vec![0u64; npts];
+    let adj = (0..n * n)
+        .map(|e| {
+            for (y, a) in ys.iter_mut().zip(&adjs) {
+                *y = a[e];
+            }
+            interpolate_mod(f, &xs, &ys, &inv)
+        })
+        .collect();
+    Some((det, adj))
+}
+
+/// Garner's mixed-radix reconstruction of the residues `res[k] mod ps[k]`
+/// in the symmetric range of `m = Π ps`. `inv[i][j] = ps[j]⁻¹ mod ps[i]`
+/// (prepared), `half = m/2`.
+fn garner(res: &[u64], ps: &[Fp], inv: &[Vec<u64>], m: &BigInt, half: &BigInt) -> BigInt {
+    let k = res.len();
+    let mut v = Vec::with_capacity(k);
+    for i in 0..k {
+        let f = ps[i];
+        let mut t = res[i];
+        for (j, &vj) in v.iter().enumerate() {
+            t = f.mul_pre(inv[i][j], f.sub(t, vj % f.p));
+        }
+        v.push(t);
+    }
+    let mut acc = BigInt::zero();
+    for i in (0..k).rev() {
+        acc = acc * ps[i].p + v[i];
+    }
+    if &acc > half { acc - m } else { acc }
+}
+
+fn trim(mut p: IntPoly) -> IntPoly {
+    while p.last().is_some_and(|c| c.is_zero()) {
+        p.pop();
+    }
+    p
+}
+
+/// det A and adj A for a square matrix of integer polynomials whose det
+/// has degree ≤ `deg`; `None` when A looks singular (det ≡ 0 modulo three
+/// primes in a row) or the prime supply runs out.
+#[allow(clippy::type_complexity)]
+pub fn det_adj(m: &[Vec<IntPoly>], deg: usize) -> Option<(IntPoly, Vec<Vec<IntPoly>>)> {
+    let n = m.len();
+    let need = coefficient_bound_bits(m)? + 2;
+    let mut fps: Vec<Fp> = Vec::new();
+    let mut images: Vec<(Vec<u64>, Vec<Vec<u64>>)> = Vec::new();
+    let mut bits = 0u64;
+    let mut bad_in_a_row = 0;
+    for p in primes() {
+        if bits >= need {
+            break;
+        }
+        let f = Fp::new(p);
+        match image(f, m, deg) {
+            Some(img) => {
+                bad_in_a_row = 0;
+                fps.push(f);
+                images.push(img);
+                // p > 2^61.
+                bits += 61;
+            }
+            None => {
+                bad_in_a_row += 1;
+                if bad_in_a_row >= 3 {
+                    return None;
+                }
+            }
+        }
+    }
+    if bits < need {
+        return None;
+    }
+    let k = fps.len();
+    let inv: Vec<Vec<u64>> = (0..k)
+        .map(|i| {
+            (0..i)
+                .map(|j| fps[i].prep(fps[i].inv(fps[j].p % fps[i].p)))
+                .collect()
+        })
+        .collect();
+    let m_all = fps.iter().fold(BigInt::from(1), |acc, f| acc * f.p);
+    let half = &m_all >> 1u32;
+    let mut res = vec![0u64; k];
+    let mut lift = |get: &dyn Fn(&(Vec<u64>, Vec<Vec<u64>>)) -> u64| -> BigInt {
+        for (r, img) in res.iter_mut().zip(&images) {
+            *r = get(img);
+        }
+        garner(&res, &fps, &inv, &m_all, &half)
+    };
+    let det = trim((0..=deg).map(|c| lift(&|img| img.0[c])).collect());
+    let adj = (0..n)
+        .map(|i| {
+            (0..n)
+                .map(|j| {
+                    trim(
+                        (0..=deg)
+                            .map(|c| lift(&|img| img.1[i * n + j][c]))
+                            .collect(),
+                    )
+                })
+                .collect()
+        })
+        .collect();
+    Some((det, adj))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::algebra::smith::nonsingular::{det_adj_int, interpolate_int};
+
+    fn bi(v: &[i64]) -> IntPoly {
+        v.iter().map(|&x| BigInt::from(x)).collect()
+    }
+
+    #[test]
+    fn modular_det_adj_matches_fraction_free_elimination() {
+        // A 3×3 of integer polynomials of degree ≤ 2.
+        let m = vec![
+            vec![bi(&[1, 2]), bi(&[0, 0, 3]), bi(&[-4])],
+            vec![bi(&[5, -1, 1]), bi(&[2]), bi(&[0, 7])],
+            vec![bi(&[-3]), bi(&[1, 1]), bi(&[9, 0, -2])],
+        ];
+        let deg = 6;
+        let (det, adj) = det_adj(&m, deg).expect("nonsingular");
+        // Reference: exact integer elimination at 7 points, interpolated.
+        let mut dets = Vec::new();
+        let mut adjs = Vec::new();
+        for x in -3i64..=3 {
+            let mx: Vec<Vec<BigInt>> = m
+                .iter()
+                .map(|row| {
+                    row.iter()
+                        .map(|p| {
+                            p.iter()
+                                .rev()
+                                .fold(BigInt::zero(), |a, c| a * BigInt::from(x) + c)
+                        })
+                        .collect()
+                })
+                .collect();
+            let (d, a) = det_adj_int(&mx).expect("nonsingular at the point");
+            dets.push(d);
+            adjs.push(a);
+        }
+        assert_eq!(det, interpolate_int(&dets, -3));
+        for i in 0..3 {
+            for j in 0..3 {
+                let vals: Vec<BigInt> = adjs.iter().map(|a| a[i][j].clone()).collect();
+                assert_eq!(adj[i][j], interpolate_int(&vals, -3), "adj[{i}][{j}]");
+            }
+        }
+    }
+
+    #[test]
+    fn large_constant_entries_need_several_primes() {
+        // det of [[a, b], [c, d]] with 40-digit entries spans many primes.
+        let big = |s: &str| vec![s.parse::<BigInt>().expect("integer")];
+        let m = vec![
+            vec![
+                big("1234567890123456789012345678901234567891"),
+                big("-987654321098765432109876543210987654321"),
+            ],
+            vec![
+                big("555555555555555555555555555555555555555"),
+                big("777777777777777777777777777777777777777"),
+            ],
+        ];
+        let (det, adj) = det_adj(&m, 0).expect("nonsingular");
+        let want = &m[0][0][0] * &m[1][1][0] - &m[0][1][0] * &m[1][0][0];
+        assert_eq!(det, vec![want]);
+        assert_eq!(adj[0][0], m[1][1]);
+        assert_eq!(adj[0][1], vec![-&m[0][1][0]]);
+    }
+
+    #[test]
+    fn singular_input_gives_none() {
+        let m = vec![vec![bi(&[1, 1]), bi(&[2, 2])], vec![bi(&[3]), bi(&[6])]];
+        assert!(det_adj(&m, 1).is_none());
+    }
+}
