@@ -345,10 +345,11 @@ fn find_scalar(
                 return Err(PlanError::Numeric {
                     context: "scalar root".into(),
                     source: NumericError::NoConvergence(format!(
-                        "no admissible root of the condition in ({lo}, {hi}) between {:.3e} and {:.3e}: {}",
+                        "no admissible root of the condition in ({lo}, {hi}) between {:.3e} and {:.3e}: {}; an admissible root, if any, lies closer than {:.1e} (relative) to an end of the range, which the solver does not resolve",
                         map.x(-S_LIMIT),
                         map.x(S_LIMIT),
-                        rejected.join("; ")
+                        rejected.join("; "),
+                        (-S_LIMIT).exp()
                     )),
                 });
             };
@@ -474,10 +475,11 @@ where
     Err(PlanError::Numeric {
         context: "scalar root".into(),
         source: NumericError::NoConvergence(format!(
-            "no sign change of the condition in ({lo}, {hi}): it keeps one sign from {:.6e} to {:.6e} and is smallest in size toward {end} (reached {reached:.6e}, {:.3e} from it){why}; the root, if any, lies closer to the end {end} than the solver resolves",
+            "no sign change of the condition in ({lo}, {hi}): it keeps one sign from {:.6e} to {:.6e} and is smallest in size toward {end} (reached {reached:.6e}, {:.3e} from it){why}; the root, if any, lies closer to the end {end} than the solver resolves ({:.1e} relative)",
             map.x(left.0),
             map.x(right.0),
             (end - reached).abs(),
+            (-S_LIMIT).exp(),
         )),
     })
 }
