@@ -38,10 +38,16 @@ fn small_mu_compliance_is_one_plus_gamma_mu_times_one_minus_two_over_pi() {
     let (_, p1) = solve("0", "0.1").expect("solves");
     let (_, p2) = solve("0", "0.05").expect("solves");
     let (e1, e2) = (err(0.1, p1), err(0.05, p2));
-    eprintln!("P* errors: μ=0.1 {e1:.3e}, μ=0.05 {e2:.3e}, ratio {:.3}", e2 / e1);
+    eprintln!(
+        "P* errors: μ=0.1 {e1:.3e}, μ=0.05 {e2:.3e}, ratio {:.3}",
+        e2 / e1
+    );
     assert!(e1.abs() < 1e-3 && e2.abs() < e1.abs());
     let ratio = e2 / e1;
-    assert!((0.18..=0.3).contains(&ratio), "order 2 expected, ratio {ratio}");
+    assert!(
+        (0.18..=0.3).contains(&ratio),
+        "order 2 expected, ratio {ratio}"
+    );
 }
 
 #[test]
@@ -84,7 +90,10 @@ fn large_mu_leaves_a_slip_annulus_and_approaches_it_at_rate_one_over_mu() {
     // 1 - c decreases to a positive limit (≈ 1.00e-3 at ν = 0).
     assert!(d[0].0 > d[1].0 && d[1].0 > d[2].0 && d[2].0 > 5e-4);
     let ratio = (d[0].0 - d[1].0) / (d[1].0 - d[2].0);
-    assert!((7.0..=15.0).contains(&ratio), "O(1/μ) expected, ratio {ratio}");
+    assert!(
+        (7.0..=15.0).contains(&ratio),
+        "O(1/μ) expected, ratio {ratio}"
+    );
     // P* increases toward its limit, below the full-stick value.
     assert!(d[0].1 < d[1].1 && d[1].1 < d[2].1 && d[2].1 < full_stick);
     assert!(full_stick - d[2].1 < 1e-3);
@@ -102,7 +111,10 @@ fn the_ends_are_refused_with_their_limit() {
     // range; the roots near c → 1 violate the Coulomb bound and are not
     // returned.
     let e = solve("0", "0.02").expect_err("refused");
-    assert!(e.contains("violates the bound") && e.contains("closer than"), "{e}");
+    assert!(
+        e.contains("violates the bound") && e.contains("closer than"),
+        "{e}"
+    );
     // ν = 1/2 (γ = 0): no coupling; the stick zone fills the contact.
     let e = solve("1/2", "0.3").expect_err("refused");
     assert!(e.contains("closer to the end 1"), "{e}");

@@ -1,13 +1,19 @@
 //! Solving a split-domain problem: the unknown scalar (e.g. the stick
-//! radius `c`) is found from its condition by a safeguarded root solve —
-//! on the first level a scan of the declared range for a sign change
-//! (refined geometrically toward the ends) and Brent's method, on every
-//! further level a secant iteration warm-started from the previous root
-//! with a Newton step on the previous slope (a local bracket and Brent if
-//! it misbehaves) — and the levels of [`SplitLevel`] are climbed until two
-//! successive levels agree to the tolerance in every scalar and output.
-//! Every scalar, output and singular coefficient is reported with that
-//! estimate. Owns this control logic; the discretisation is `split.rs`'s.
+//! radius `c`) is found from its condition by a safeguarded root solve in
+//! the variable `s = ln((x - lo)/(hi - x))` of its declared range (so a
+//! root near an end is resolved to a relative accuracy in its distance to
+//! that end). On the first level: a scan (a grid in `s`, then toward the
+//! lower end, then toward the upper end, with doubling steps, to at most
+//! `1e-10` of an end), Brent's method on each bracket from the lowest,
+//! and the first root that is not a pole and whose solution keeps the
+//! bound of every relation (`|q| ≤ |μ p|` where `q` is free: the Coulomb
+//! stick inequality) is taken. On every further level: a secant iteration
+//! warm-started from the previous root with a Newton step on the previous
+//! slope (a local bracket and Brent if it misbehaves). The levels of
+//! [`SplitLevel`] are climbed until two successive levels agree to the
+//! tolerance in every scalar and output. Every scalar, output and singular
+//! coefficient is reported with that estimate. Owns this control logic;
+//! the discretisation is `split.rs`'s.
 use serde::Serialize;
 
 use super::error::PlanError;
@@ -416,8 +422,8 @@ where
     let mut out = Vec::new();
     // Toward one end from `start`, steps 2, 4, 8, … in s (`dir` = ±1).
     let extend = |f: &mut F,
-                      start: (f64, f64),
-                      dir: f64|
+                  start: (f64, f64),
+                  dir: f64|
      -> ((f64, f64), Option<(f64, f64, f64, f64)>, Option<PlanError>) {
         let mut at = start;
         let mut step = 2.0;
@@ -501,7 +507,11 @@ where
             if s.abs() <= S_LIMIT && map.inside(s) {
                 let v = f(s)?;
                 if v.signum() != f0.signum() || v == 0.0 {
-                    return Ok(if s < s0 { (s, v, s0, f0) } else { (s0, f0, s, v) });
+                    return Ok(if s < s0 {
+                        (s, v, s0, f0)
+                    } else {
+                        (s0, f0, s, v)
+                    });
                 }
             }
         }
