@@ -6,18 +6,22 @@
 //! every number comes from the library.
 //!
 //! ```text
-//! cargo run --release --example hertz_curves -- table > docs/hertz_curves_table.md
+//! cargo run --release --example hertz_curves -- table > docs/hertz_curves.md
 //! cargo run --release --example hertz_curves -- sweep [n_nu] [n_mu]
 //! cargo run --release --example hertz_curves -- svg docs/hertz_c_map.svg
-//! cargo run --release --example hertz_curves -- point NU MU
+//! cargo run --release --example hertz_curves -- point NU MU [TOL]
+//! cargo run --release --example hertz_curves -- probe NU MU LEVEL C0 C1 N
 //! ```
+//!
+//! `probe` prints the discrete condition `B(c)` on one refinement level at
+//! `N` log-spaced stick radii (how its noise at small `c` was measured).
 use std::time::Instant;
 
 use lambdamat::lang::parse_program_with;
 use lambdamat::lang::parser::parse_exact;
 use lambdamat::plan::{SplitOptions, SplitReport, solve_split};
 
-/// One solved point: `(c, error of c, P*, error of P*, levels, CPU-ish seconds)`.
+/// One solved point: `c`, `P*` with their estimates, and the wall time.
 struct Point {
     c: f64,
     ce: f64,
