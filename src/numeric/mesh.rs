@@ -324,6 +324,46 @@ mod tests {
     }
 
     #[test]
+    fn scaled_layers_follow_the_gap_and_keep_panels_above_the_floor() {
+        // A point 1e-8 from 0: the side toward 1 gets ⌊log4(0.5e8)⌋ = 12
+        // extra layers, and its first panel is on the scale of the gap.
+        let g = [
+            Grading {
+                at: 1e-8,
+                side: Side::Both,
+                layers: 4,
+            },
+            Grading {
+                at: 1.0,
+                side: Side::Left,
+                layers: 4,
+            },
+        ];
+        let plain = Mesh::graded(0.0, 1.0, &g, 0.25).unwrap();
+        let scaled = Mesh::graded_to_scale(0.0, 1.0, &g, 0.25).unwrap();
+        assert_eq!(scaled.panels(), plain.panels() + 12);
+        let i = scaled.breaks.iter().position(|&z| z == 1e-8).unwrap();
+        let first = scaled.breaks[i + 1] - 1e-8;
+        assert!(first < 1e-8 && first > 1e-10, "{first}");
+        // A point 1e-10 below 1: no panel narrower than ~1e3 ulps of 1.
+        let g = [
+            Grading {
+                at: 1.0 - 1e-10,
+                side: Side::Both,
+                layers: 20,
+            },
+            Grading {
+                at: 1.0,
+                side: Side::Left,
+                layers: 20,
+            },
+        ];
+        let m = Mesh::graded_to_scale(0.0, 1.0, &g, 0.25).unwrap();
+        let narrowest = m.breaks.windows(2).map(|w| w[1] - w[0]).fold(1.0, f64::min);
+        assert!(narrowest >= 0.2e3 * f64::EPSILON, "{narrowest}");
+    }
+
+    #[test]
     fn bad_meshes_are_rejected() {
         assert!(Mesh::from_breaks(vec![0.0, 0.0]).is_err());
         assert!(Mesh::graded(0.0, 1.0, &[], 1.5).is_err());

@@ -553,3 +553,26 @@ where
         })
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_scalar_map_is_invertible_and_resolves_both_ends() {
+        let m = ScalarMap { lo: 0.0, hi: 1.0 };
+        for x in [1e-12, 1e-3, 0.25, 0.5, 0.9, 1.0 - 1e-9] {
+            let back = m.x(m.s(x));
+            assert!((back - x).abs() <= 1e-15 * x.max(1e-3), "{x} {back}");
+        }
+        // Near 1 the distance 1 - x is carried to a relative accuracy.
+        let s = m.s(1.0 - 1e-9);
+        assert!(((1.0 - m.x(s)) / 1e-9 - 1.0).abs() < 1e-6);
+        assert!(m.inside(S_LIMIT) && m.inside(-S_LIMIT) && !m.inside(40.0));
+        let half = ScalarMap {
+            lo: 0.0,
+            hi: f64::INFINITY,
+        };
+        assert!((half.x(half.s(0.3)) - 0.3).abs() < 1e-15);
+    }
+}
