@@ -265,6 +265,11 @@ impl ScalarMap {
         }
     }
 
+    /// Whether `x(s)` is within `1e-8` (relative) of an end.
+    fn near_end(&self, s: f64) -> bool {
+        self.lo.is_finite() && self.hi.is_finite() && s.abs() > 8.0 * 10f64.ln()
+    }
+
     /// Whether `x(s)` is strictly inside the range (and so a distinct
     /// number from both ends in floating point).
     fn inside(&self, s: f64) -> bool {
@@ -321,7 +326,7 @@ fn find_scalar(
                 None => {
                     let (a, fa, b, fb) = local_bracket(&mut f, s0, f0, &map)?;
                     let s = brent(&mut f, a, fa, b, fb, stol)?;
-                    check_not_pole(&mut f, map.x(s), s, fa, fb)?;
+                    check_not_pole(&mut f, map.x(s), s, fa, fb, map.near_end(s))?;
                     (s, l.slope)
                 }
             }
@@ -332,7 +337,7 @@ fn find_scalar(
             let mut found = None;
             for (a, fa, b, fb) in brackets {
                 let s = brent(&mut f, a, fa, b, fb, stol)?;
-                if let Err(e) = check_not_pole(&mut f, map.x(s), s, fa, fb) {
+                if let Err(e) = check_not_pole(&mut f, map.x(s), s, fa, fb, map.near_end(s)) {
                     rejected.push(e.to_string());
                     continue;
                 }
@@ -532,7 +537,14 @@ where
 /// accepted when |f(s)| is below 1% of that); at a pole it falls. The condition's own scale does not
 /// enter (it is tiny when the scalar is: `B ∝ c` for a stick radius
 /// `c → 0`), only its local shape.
-fn check_not_pole<F>(f: &mut F, x: f64, s: f64, fa: f64, fb: f64) -> Result<(), PlanError>
+fn check_not_pole<F>(
+    f: &mut F,
+    x: f64,
+    s: f64,
+    fa: f64,
+    fb: f64,
+    near_end: bool,
+) -> Result<(), PlanError>
 where
     F: FnMut(f64) -> Result<f64, PlanError>,
 {
@@ -548,7 +560,12 @@ where
         Err(PlanError::Numeric {
             context: "scalar root".into(),
             source: NumericError::NoConvergence(format!(
-                "the condition changes sign across a pole near {x:.6e} (value {fx:.3e}, {fl:.3e} and {fr:.3e} at s ∓ {delta}), not a root"
+                "the condition changes sign across a pole near {x:.6e} (value {fx:.3e}, {fl:.3e} and {fr:.3e} at s ∓ {delta}), not a root{}",
+                if near_end {
+                    "; this close to an end of the range the discrete condition is noisy (measured on the Hertz problem below c ≈ 1e-9), so this may be a root the solver cannot place"
+                } else {
+                    ""
+                }
             )),
         })
     }
