@@ -49,6 +49,14 @@ fn split(c: &mut Criterion) {
     g.bench_function("built-in (nu,c)=(0,0.5)", |b| {
         b.iter(|| solve_given_c(0.0, 0.5, &hopts))
     });
+    // The ends of the physical range (issue 13): a stick zone of 2e-8,
+    // a slip annulus of 4.3e-7 (the slowest point of the sweep), ν < 0.
+    for (nu, mu) in [("0", "0.03"), ("0.3", "100"), ("-0.9", "100")] {
+        let prog = program("examples/hertz.lmx", &[("nu", nu), ("mu", mu)]);
+        g.bench_function(format!("language (nu,mu)=({nu},{mu})"), |b| {
+            b.iter(|| solve_split(&prog, &opts))
+        });
+    }
     g.finish();
 }
 

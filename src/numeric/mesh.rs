@@ -82,6 +82,43 @@ impl Mesh {
         gradings: &[Grading],
         sigma: f64,
     ) -> Result<Mesh, NumericError> {
+        Mesh::graded_impl(lo, hi, gradings, sigma, false)
+    }
+
+    /// [`Mesh::graded`], with the layers of every graded side counted from
+    /// the point's own length scale: when the nearest other special point
+    /// (or end of `[lo, hi]`) is at distance `d` and the graded side spans
+    /// `h > d`, the side gets `⌊log(h/d)/log(1/σ)⌋` extra layers, so its
+    /// panels shrink to the scale `d` before the requested `layers` start.
+    /// Two points close together (a stick radius `c → 0` beside `0`, or
+    /// `c → 1` beside an edge singularity at `1`) are then resolved with a
+    /// number of panels that grows like `log(1/d)`, not with panels larger
+    /// than the gap.
+    ///
+    /// ```
+    /// use lambdamat::numeric::mesh::{Grading, Mesh, Side};
+    /// let g = [Grading { at: 1e-6, side: Side::Both, layers: 2 }];
+    /// let m = Mesh::graded_to_scale(0.0, 1.0, &g, 0.25).unwrap();
+    /// // The right side spans 1 - 1e-6 and sees 0 at 1e-6: 9 extra layers.
+    /// assert_eq!(m.panels(), 2 + 2 + 9);
+    /// assert!(m.breaks[3] - 1e-6 < 1e-6);
+    /// ```
+    pub fn graded_to_scale(
+        lo: f64,
+        hi: f64,
+        gradings: &[Grading],
+        sigma: f64,
+    ) -> Result<Mesh, NumericError> {
+        Mesh::graded_impl(lo, hi, gradings, sigma, true)
+    }
+
+    fn graded_impl(
+        lo: f64,
+        hi: f64,
+        gradings: &[Grading],
+        sigma: f64,
+        to_scale: bool,
+    ) -> Result<Mesh, NumericError> {
         if lo.partial_cmp(&hi) != Some(std::cmp::Ordering::Less)
             || !lo.is_finite()
             || !hi.is_finite()
@@ -117,9 +154,43 @@ impl Mesh {
             }
         }
         pts.sort_by(|a, b| a.0.total_cmp(&b.0));
+        // Distance from each special point to its nearest neighbour.
+        let gap: Vec<f64> = (0..pts.len())
+            .map(|i| {
+                let l = if i > 0 {
+                    pts[i].0 - pts[i - 1].0
+                } else {
+                    f64::INFINITY
+                };
+                let r = pts.get(i + 1).map_or(f64::INFINITY, |p| p.0 - pts[i].0);
+                l.min(r)
+            })
+            .collect();
+        let extra = |span: f64, d: f64| -> usize {
+            if to_scale && d > 0.0 && span > d {
+                ((span / d).ln() / (1.0 / sigma).ln()).floor() as usize
+            } else {
+                0
+            }
+        };
+        // With scaled layers, the smallest panel stays above `FLOOR·|z|`
+        // (`z` the graded point): finer panels beside a point near 1 would
+        // be a few ulps wide and their nodes would merge with the point.
+        const FLOOR: f64 = 1e3 * f64::EPSILON;
+        let cap = |layers: usize, span: f64, z: f64| -> usize {
+            if !to_scale || z == 0.0 || span <= 0.0 {
+                return layers;
+            }
+            let most = 1.0 + (span / (FLOOR * z.abs())).ln() / (1.0 / sigma).ln();
+            if most.is_finite() && most >= 1.0 {
+                layers.min(most.floor() as usize)
+            } else {
+                layers.min(1)
+            }
+        };
         let mut breaks = vec![lo];
         let mut levels = Vec::new();
-        for w in pts.windows(2) {
+        for (i, w) in pts.windows(2).enumerate() {
             let (a, _, la) = w[0];
             let (b, lb, _) = w[1];
             let (ga, gb) = (la > 0, lb > 0);
@@ -127,6 +198,16 @@ impl Mesh {
                 (true, true) => 0.5 * (a + b),
                 (true, false) => b,
                 _ => a,
+            };
+            let la = if ga {
+                cap(la + extra(mid - a, gap[i]), mid - a, a)
+            } else {
+                la
+            };
+            let lb = if gb {
+                cap(lb + extra(b - mid, gap[i + 1]), b - mid, b)
+            } else {
+                lb
             };
             if ga {
                 // Panels [a + (mid-a)σ^{k}, a + (mid-a)σ^{k-1}] for k = la..1.
@@ -240,6 +321,46 @@ mod tests {
         let m = Mesh::graded(0.0, 1.0, &g, 0.5).unwrap();
         assert_eq!(m.breaks, vec![0.0, 0.5, 0.75, 1.0]);
         assert_eq!(m.levels, vec![0, 0, 1]);
+    }
+
+    #[test]
+    fn scaled_layers_follow_the_gap_and_keep_panels_above_the_floor() {
+        // A point 1e-8 from 0: the side toward 1 gets ⌊log4(0.5e8)⌋ = 12
+        // extra layers, and its first panel is on the scale of the gap.
+        let g = [
+            Grading {
+                at: 1e-8,
+                side: Side::Both,
+                layers: 4,
+            },
+            Grading {
+                at: 1.0,
+                side: Side::Left,
+                layers: 4,
+            },
+        ];
+        let plain = Mesh::graded(0.0, 1.0, &g, 0.25).unwrap();
+        let scaled = Mesh::graded_to_scale(0.0, 1.0, &g, 0.25).unwrap();
+        assert_eq!(scaled.panels(), plain.panels() + 12);
+        let i = scaled.breaks.iter().position(|&z| z == 1e-8).unwrap();
+        let first = scaled.breaks[i + 1] - 1e-8;
+        assert!(first < 1e-8 && first > 1e-10, "{first}");
+        // A point 1e-10 below 1: no panel narrower than ~1e3 ulps of 1.
+        let g = [
+            Grading {
+                at: 1.0 - 1e-10,
+                side: Side::Both,
+                layers: 20,
+            },
+            Grading {
+                at: 1.0,
+                side: Side::Left,
+                layers: 20,
+            },
+        ];
+        let m = Mesh::graded_to_scale(0.0, 1.0, &g, 0.25).unwrap();
+        let narrowest = m.breaks.windows(2).map(|w| w[1] - w[0]).fold(1.0, f64::min);
+        assert!(narrowest >= 0.2e3 * f64::EPSILON, "{narrowest}");
     }
 
     #[test]

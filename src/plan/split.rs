@@ -326,7 +326,7 @@ impl SplitProblem {
             }
         }
         // The mesh.
-        let mesh = Mesh::graded(a, b, &gradings, lvl.sigma).map_err(num("mesh"))?;
+        let mesh = Mesh::graded_to_scale(a, b, &gradings, lvl.sigma).map_err(num("mesh"))?;
         let counts: Vec<usize> = mesh
             .levels
             .iter()
@@ -800,6 +800,76 @@ impl SplitProblem {
             .iter()
             .position(|t| t.coefficient == k)
             .map(|i| d.solution[dim + i])
+    }
+
+    /// The value of unknown `u` at `x` (its basis where it is free, its
+    /// exact singular terms, or its relation where it is substituted).
+    pub fn value(&self, d: &Discrete, u: usize, x: f64) -> f64 {
+        let dim = d.offsets[d.offsets.len() - 1];
+        let free = |u: usize| -> Option<f64> {
+            let b = d.bases[u].as_ref()?;
+            let (lo, hi) = b.support();
+            (x >= lo && x <= hi).then(|| b.eval(self.coefs(d, u), x))
+        };
+        let k = d
+            .breaks
+            .windows(2)
+            .position(|w| x >= w[0] && x <= w[1])
+            .unwrap_or(0);
+        let mut v = match d.status[u].get(k) {
+            Some(Status::Related { coeff, other }) => coeff * free(*other).unwrap_or(0.0),
+            _ => free(u).unwrap_or(0.0),
+        };
+        for (ti, t) in d.terms.iter().enumerate().filter(|(_, t)| t.unknown == u) {
+            let (lo, hi) = t.basis.support();
+            if x > lo && x < hi {
+                v += d.solution[dim + ti] * t.basis.eval(&t.phi, x);
+            }
+        }
+        v
+    }
+
+    /// A relation `u = a·w on I` is the equality case of the bound
+    /// `|u| ≤ |a·w|` (a Coulomb law: the shear reaches `μ p` where the
+    /// surfaces slip and stays below it where they stick). The worst
+    /// violation of that bound where `u` is free, at the nodes of its
+    /// basis: `(x, |u(x)|, |a·w(x)|)` with `|u| > 1.01·|a·w| + 1e-9·max|a·w|`,
+    /// or `None`. A root of the conditions whose solution violates it is
+    /// not the physical free boundary (e.g. the roots of the Hertz
+    /// condition that accumulate at `c → 1`).
+    pub fn relation_violation(&self, d: &Discrete) -> Option<(String, f64, f64, f64)> {
+        let mut worst: Option<(String, f64, f64, f64)> = None;
+        for r in &self.contact.relations {
+            let coeff = r.coeff.eval(&d.vars, 0.0);
+            let Some(b) = &d.bases[r.unknown] else {
+                continue;
+            };
+            let Some(bw) = &d.bases[r.other] else {
+                continue;
+            };
+            let xs = b.nodes();
+            let vals: Vec<(f64, f64, f64)> = xs
+                .iter()
+                .map(|&x| {
+                    let u = self.value(d, r.unknown, x).abs();
+                    let (lo, hi) = bw.support();
+                    let w = if x >= lo && x <= hi {
+                        (coeff * bw.eval(self.coefs(d, r.other), x)).abs()
+                    } else {
+                        0.0
+                    };
+                    (x, u, w)
+                })
+                .collect();
+            let scale = vals.iter().map(|v| v.2).fold(0.0, f64::max);
+            for (x, u, w) in vals {
+                let excess = u - (1.01 * w + 1e-9 * scale);
+                if excess > 0.0 && worst.as_ref().is_none_or(|o| u - o.3 > excess) {
+                    worst = Some((self.sys.unknowns[r.unknown].clone(), x, u, w));
+                }
+            }
+        }
+        worst
     }
 
     /// Number of coefficients of `d`.
