@@ -324,12 +324,22 @@ pub fn solve(nu: f64, given: Given, opts: &SplitOptions) -> Result<HertzResult, 
         pq,
     };
     let samples = s.sample(&profile_points(c, 200))?;
-    s.stick_ok = samples.iter().filter(|v| v.x < c).all(|v| v.q < v.mu_p);
+    // A point closer to c than c's own uncertainty is in neither zone: at
+    // x = c + 6e-16 the slip is a rounding-level ±1e-19.
+    let blur = if error_estimate.is_finite() {
+        error_estimate
+    } else {
+        0.0
+    };
+    s.stick_ok = samples
+        .iter()
+        .filter(|v| v.x < c - blur)
+        .all(|v| v.q < v.mu_p);
     // With γ = 0 (ν = 1/2) E2's residual κ3 p + κ4 q vanishes identically
     // (κ3 = 0, q = 0): no slip at all, which is not a violation.
     s.slip_ok = samples
         .iter()
-        .filter(|v| v.x > c)
+        .filter(|v| v.x > c + blur)
         .all(|v| v.u < 0.0 || (gamma == 0.0 && v.u == 0.0));
     Ok(s)
 }
