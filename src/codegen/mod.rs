@@ -299,7 +299,17 @@ fn header(out: &mut String, prog: &Program, sys: &CompiledSystem, from: &Provena
             sys.conditions.len()
         );
     }
-    out.push_str("//!\n//! The system (parameters substituted):\n//!\n//! ```text\n");
+    source_block(out, prog, "system");
+}
+
+/// The header's closing part, shared by both generators: `prog`
+/// pretty-printed (parameters substituted) under "The {noun}", and the
+/// lint allowance for bit-exact literals.
+pub(crate) fn source_block(out: &mut String, prog: &Program, noun: &str) {
+    let _ = write!(
+        out,
+        "//!\n//! The {noun} (parameters substituted):\n//!\n//! ```text\n"
+    );
     for line in crate::lang::pretty::pretty(prog).lines() {
         if line.is_empty() {
             out.push_str("//!\n");

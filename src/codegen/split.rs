@@ -74,20 +74,7 @@ fn header(out: &mut String, prog: &Program, from: &Provenance) {
         let _ = writeln!(out, "//! Slots: {}.", slots.join(", "));
     }
     derivations(out, prog);
-    out.push_str("//!\n//! The problem (parameters substituted):\n//!\n//! ```text\n");
-    for line in crate::lang::pretty::pretty(prog).lines() {
-        if line.is_empty() {
-            out.push_str("//!\n");
-        } else {
-            let _ = writeln!(out, "//! {line}");
-        }
-    }
-    out.push_str("//! ```\n");
-    out.push_str(
-        "\n// Literals are printed to read back bit for bit; some may look like\n\
-         // named constants without being them.\n\
-         #![allow(clippy::approx_constant)]\n",
-    );
+    super::source_block(out, prog, "problem");
 }
 
 /// The single equations `lambdamat reduce` derives on every subinterval,
