@@ -325,7 +325,9 @@ impl ScalarMap {
     }
 
     /// The tolerance in `s` for a root near `s` that is to be within the
-    /// absolute tolerance `xtol` in `x`: `xtol/(dx/ds)`, but at most
+    /// absolute tolerance `xtol` in `x`: `xtol/(4 dx/ds)` (a quarter of
+    /// it, so that in the middle of a unit range it is `xtol` in `s` as
+    /// before), but at most
     /// [`S_REL_TOL`] (so a root near an end still has its distance to the
     /// end to that relative accuracy) and at least a few ulps of `x`
     /// (closer than that the iterations only step between neighbouring
@@ -337,7 +339,9 @@ impl ScalarMap {
             return xtol;
         }
         let ulps = 4.0 * f64::EPSILON * self.x(s).abs() / dxds;
-        (xtol / dxds).min(S_REL_TOL).max(ulps).max(xtol)
+        // `dx/ds ≤ (hi - lo)/4`: in the middle of the range this is
+        // `xtol` in `s`, the tolerance the solver always had there.
+        (0.25 * xtol / dxds).min(S_REL_TOL).max(ulps).max(xtol)
     }
 
     /// Whether `x(s)` is within `1e-8` (relative) of an end.
@@ -683,10 +687,10 @@ mod tests {
     fn the_tolerance_in_s_keeps_the_absolute_one_and_stops_at_the_ulps() {
         let m = ScalarMap { lo: 0.0, hi: 1.0 };
         let xtol = 5e-12;
-        // Mid-range: the absolute tolerance in x, through dx/ds = 1/4.
+        // Mid-range: the absolute tolerance itself (dx/ds = 1/4).
         let s = m.s(0.5);
         let t = m.s_tolerance(s, xtol);
-        assert!((t - 4.0 * xtol).abs() < 1e-20, "{t}");
+        assert!((t - xtol).abs() < 1e-20, "{t}");
         // Near 0: capped by the relative accuracy of the distance to 0,
         // and still within the absolute tolerance in x.
         let s = m.s(2e-8);
