@@ -9,7 +9,10 @@
 //! bound of every relation (`|q| ≤ |μ p|` where `q` is free: the Coulomb
 //! stick inequality) is taken. On every further level: a secant iteration
 //! warm-started from the previous root with a Newton step on the previous
-//! slope (a local bracket and Brent if it misbehaves). The levels of
+//! slope (a local bracket and Brent if it misbehaves). Every root
+//! iteration stops at the tolerance in `s` that keeps the absolute root
+//! tolerance in `x`, capped at a relative `1e-6` of the distance to the
+//! nearer end and no finer than a few ulps of `x`. The levels of
 //! [`SplitLevel`] are climbed until two successive levels agree to the
 //! tolerance in every scalar and output. Every scalar, output and singular
 //! coefficient is reported with that estimate. Owns this control logic;
@@ -309,6 +312,38 @@ impl ScalarMap {
         }
     }
 
+    /// `dx/ds` at `s`: `(x - lo)(hi - x)/(hi - lo)` on a finite range.
+    fn dx_ds(&self, s: f64) -> f64 {
+        let (lo, hi) = (self.lo, self.hi);
+        let x = self.x(s);
+        match (lo.is_finite(), hi.is_finite()) {
+            (true, true) => (x - lo) * (hi - x) / (hi - lo),
+            (true, false) => x - lo,
+            (false, true) => hi - x,
+            (false, false) => s.cosh(),
+        }
+    }
+
+    /// The tolerance in `s` for a root near `s` that is to be within the
+    /// absolute tolerance `xtol` in `x`: `xtol/(4 dx/ds)` (a quarter of
+    /// it, so that in the middle of a unit range it is `xtol` in `s` as
+    /// before), but at most
+    /// [`S_REL_TOL`] (so a root near an end still has its distance to the
+    /// end to that relative accuracy) and at least a few ulps of `x`
+    /// (closer than that the iterations only step between neighbouring
+    /// floating-point numbers: measured at `1 - c = 4.3e-7`, where one ulp
+    /// of `c` is `2.6e-10` in `s`).
+    fn s_tolerance(&self, s: f64, xtol: f64) -> f64 {
+        let dxds = self.dx_ds(s);
+        if !(dxds > 0.0 && dxds.is_finite()) {
+            return xtol;
+        }
+        let ulps = 4.0 * f64::EPSILON * self.x(s).abs() / dxds;
+        // `dx/ds ≤ (hi - lo)/4`: in the middle of the range this is
+        // `xtol` in `s`, the tolerance the solver always had there.
+        (0.25 * xtol / dxds).min(S_REL_TOL).max(ulps).max(xtol)
+    }
+
     /// Whether `x(s)` is within `1e-8` (relative) of an end.
     fn near_end(&self, s: f64) -> bool {
         self.lo.is_finite() && self.hi.is_finite() && s.abs() > 8.0 * 10f64.ln()
@@ -329,6 +364,15 @@ impl ScalarMap {
 /// `1e-20/c`, measured 2e-7 at `c = 2e-8` and 1e-3 at `c = 1e-12`), so a
 /// root closer to an end is refused rather than returned inaccurate.
 const S_LIMIT: f64 = 23.0;
+
+/// The largest tolerance of the root in `s`: the distance of a root to the
+/// nearer end of a finite range is resolved to this relative accuracy even
+/// where the absolute tolerance in `x` asks for less. Below it the discrete
+/// condition's own noise (see [`S_LIMIT`]) is reached near the ends:
+/// measured on the Hertz problem at `c = 2.06e-8` (μ = 0.03) the root moves
+/// by about `1e-6` in `s` between neighbouring evaluations, and a tighter
+/// tolerance only makes the iterations chase that noise.
+const S_REL_TOL: f64 = 1e-6;
 
 /// The scalar on level `lvl`, the slope of its condition there (with
 /// respect to the map's variable `s`) and the discrete solution at it.
@@ -351,10 +395,11 @@ fn find_scalar(
     // In `s`, a step `δs` moves x by about `δs·(x - lo)(hi - x)/(hi - lo)`:
     // an absolute tolerance in `s` is a relative one in the distance to the
     // nearer end.
-    let stol = root_tolerance(tol).max(1e-15);
+    let xtol = root_tolerance(tol).max(1e-15);
     let (s, slope) = match last {
         Some(l) => {
             let s0 = map.s(l.scalars[0]);
+            let stol = map.s_tolerance(s0, xtol);
             let f0 = f(s0)?;
             let mut step = if l.slope != 0.0 && l.slope.is_finite() {
                 -f0 / l.slope
@@ -380,6 +425,7 @@ fn find_scalar(
             let mut rejected: Vec<String> = Vec::new();
             let mut found = None;
             for (a, fa, b, fb) in brackets {
+                let stol = map.s_tolerance(a, xtol).min(map.s_tolerance(b, xtol));
                 let s = brent(&mut f, a, fa, b, fb, stol)?;
                 if let Err(e) = check_not_pole(&mut f, map.x(s), s, fa, fb, map.near_end(s)) {
                     rejected.push(e.to_string());
@@ -635,5 +681,28 @@ mod tests {
             hi: f64::INFINITY,
         };
         assert!((half.x(half.s(0.3)) - 0.3).abs() < 1e-15);
+    }
+
+    #[test]
+    fn the_tolerance_in_s_keeps_the_absolute_one_and_stops_at_the_ulps() {
+        let m = ScalarMap { lo: 0.0, hi: 1.0 };
+        let xtol = 5e-12;
+        // Mid-range: the absolute tolerance itself (dx/ds = 1/4).
+        let s = m.s(0.5);
+        let t = m.s_tolerance(s, xtol);
+        assert!((t - xtol).abs() < 1e-20, "{t}");
+        // Near 0: capped by the relative accuracy of the distance to 0,
+        // and still within the absolute tolerance in x.
+        let s = m.s(2e-8);
+        let t = m.s_tolerance(s, xtol);
+        assert_eq!(t, S_REL_TOL);
+        assert!((m.x(s + t) - m.x(s)).abs() <= xtol);
+        // Near 1: no finer than a few ulps of x, which is coarser there
+        // than the requested tolerance.
+        let s = m.s(1.0 - 4.3e-7);
+        let t = m.s_tolerance(s, 1e-18);
+        assert!(m.x(s + t) != m.x(s) && t < 1e-8, "{t}");
+        // Never tighter than the absolute tolerance itself.
+        assert!(m.s_tolerance(0.0, xtol) >= xtol);
     }
 }
