@@ -250,6 +250,7 @@ pub fn try_fast(a: &Matrix<QxRing>, limit_bits: u64) -> Option<FastPath> {
     order.sort_by_key(|&j| last[j].degree());
     let Some((j, inv)) = order
         .into_iter()
+        .filter(|&j| may_be_coprime(&last[j], &det_q))
         .find_map(|j| r.inverse_mod(&last[j], &f).map(|s| (j, s)))
     else {
         let b = scaled_adjugate(&r, &adj_t, &delta);
@@ -300,6 +301,28 @@ pub fn try_fast(a: &Matrix<QxRing>, limit_bits: u64) -> Option<FastPath> {
         u_inv,
         v_inv,
     }))
+}
+
+/// False when the images of `a` and `m` modulo a prime that keeps m's
+/// degree share a factor. That is always so when a and m share one over
+/// Q (a primitive gcd g divides both numerators and keeps its degree mod
+/// p, its leading coefficient dividing m's), and only rarely otherwise
+/// (an unlucky prime, which merely costs the Hermite shortcut). Skips the
+/// costly exact extended Euclid of `inverse_mod` on entries that cannot be
+/// inverted.
+fn may_be_coprime(a: &QPoly, m: &QPoly) -> bool {
+    use crate::algebra::modular::{self, Fp};
+    let Some(p) = modular::primes().next() else {
+        return true;
+    };
+    let f = Fp::new(p);
+    let img = |e: &QPoly| modular::trim(e.num().iter().map(|c| f.reduce(c)).collect());
+    let mi = img(m);
+    let ai = img(a);
+    if modular::deg(&mi) != m.degree() || ai.is_empty() {
+        return true;
+    }
+    modular::deg(&modular::gcd(f, &ai, &mi)) == Some(0)
 }
 
 /// A with a constant nonzero determinant (always so for a nonsingular
