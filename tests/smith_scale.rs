@@ -6,7 +6,8 @@
 //! (the determinantal mode then goes through one Smith form per symbol);
 //! and the large one-symbol shapes: a constant 60×60 (unimodular path), a
 //! 40×40 diagonal and a dense 40×40 of degree 1 (invariant factors
-//! certified without transforms).
+//! certified without transforms), and a 12×12 B·diag·C with two
+//! non-trivial invariant factors (gcd of adj and Jacobi minors).
 
 mod common;
 
@@ -208,5 +209,39 @@ fn forty_by_forty_of_degree_one_certifies_the_form_when_transforms_are_huge() {
             .as_str()
             .expect("text")
             .contains("transforms omitted: U would hold about")
+    );
+}
+
+#[test]
+fn two_nontrivial_factors_are_certified_without_elimination() {
+    // B·diag(1, …, 1, x − 1, (x − 1)(x + 2))·C with B, C dense random of
+    // degree 1 (12×12): d_(n−1) = x − 1, so the Hermite shortcut declines;
+    // the invariant factors come from the gcd of adj's entries and Jacobi
+    // minors. The expected last factor was produced by the general
+    // elimination with transforms (certified U·A·V = D), before this route.
+    let v = json(&["smith", "tests/data/issue15_bdc_12.lmx"]);
+    assert_eq!(v["verified"], true);
+    assert!(v["U"].is_null() && v["V"].is_null());
+    let inv = strings(&v["invariant_factors"]);
+    assert_eq!(inv.len(), 12);
+    assert!(inv[..10].iter().all(|f| f == "1"), "{inv:?}");
+    assert_eq!(inv[10], "x - 1");
+    let want = std::fs::read_to_string("tests/data/issue15_bdc_12_f12.txt").expect("data");
+    assert_eq!(inv[11], want.trim());
+    let names = check_names(&v);
+    for want in [
+        "A·B = c·I",
+        "c = det Ã (Ã = Δ·A, Δ the rows' denominators)",
+        "gcd of the entries of B is g",
+        "d_(n−2)(A) = 1",
+        "invariant factors 1, …, 1, g, c/g",
+    ] {
+        assert!(names.iter().any(|n| n == want), "{want} missing: {names:?}");
+    }
+    assert!(
+        v["mode_note"]
+            .as_str()
+            .expect("text")
+            .contains("transforms omitted")
     );
 }

@@ -249,14 +249,61 @@ pub const TRANSFORM_LIMIT_BITS: u64 = 500_000_000;
 /// transforms (when the entries' products are coprime).
 pub const DIAGONAL_FORM_ONLY: usize = 32;
 
-/// A one-symbol report with D alone, certified by
-/// [`super::certify::certify_last_factor`].
+/// From this size on, a nonsingular one-symbol input whose (n−1)-th
+/// determinantal divisor is not 1 gets its invariant factors without
+/// transforms when [`super::certify::certify_two_factors`] establishes
+/// them (the general elimination with transforms grows fast: 8×8 of
+/// B·diag(1, …, x − 1, (x − 1)(x + 2))·C in 0.5 s, 12×12 in 13.6 s).
+pub const TWO_FACTOR_MIN: usize = 10;
+
+/// The diagonal 1, …, 1, f.
+fn last_only(a: &Matrix<QxRing>, f: QPoly) -> Vec<QPoly> {
+    let mut v = vec![a.ring.one(); a.rows().saturating_sub(1)];
+    v.push(f);
+    v
+}
+
+/// The form-only report with two non-trivial invariant factors, when
+/// [`super::certify::certify_two_factors`] establishes them.
+#[allow(clippy::too_many_arguments)]
+fn two_factor_report(
+    name: &str,
+    a_poly: &Matrix<PolyRing>,
+    au: &Matrix<QxRing>,
+    c: &QPoly,
+    b: &Matrix<QxRing>,
+    ring: &str,
+    note: String,
+    opts: &SmithOptions,
+) -> Option<SmithReport> {
+    opts.progress
+        .phase("certifying the invariant factors (A·B = c·I, gcd of adj, Jacobi minors)");
+    let (cert, factors) = super::certify::certify_two_factors(au, c, b);
+    if !cert.verified() || factors.len() != au.rows() {
+        return None;
+    }
+    Some(form_only_report(
+        name,
+        a_poly,
+        au,
+        factors,
+        cert,
+        ring.to_string(),
+        "det and adj by images mod word primes (CRT above a proved bound); invariant factors from A·B = c·I: f_(n−1) = gcd of adj's entries (exact Euclid, quotients coprime mod p), f_n = det/f_(n−1), d_(n−2) = 1 from 2×2 minors of adj divided by det (Jacobi)",
+        note,
+        opts,
+    ))
+}
+
+/// A one-symbol report with D alone (`factors` its diagonal), certified by
+/// [`super::certify::certify_last_factor`] or
+/// [`super::certify::certify_two_factors`].
 #[allow(clippy::too_many_arguments)]
 fn form_only_report(
     name: &str,
     a_poly: &Matrix<PolyRing>,
     a: &Matrix<QxRing>,
-    f: QPoly,
+    factors: Vec<QPoly>,
     cert: Certificate,
     ring: String,
     algorithm: &str,
@@ -266,7 +313,9 @@ fn form_only_report(
     let r = &a.ring;
     let n = a.rows();
     let mut d = Matrix::identity(r.clone(), n);
-    d.set(n - 1, n - 1, f.clone());
+    for (i, f) in factors.into_iter().enumerate().take(n) {
+        d.set(i, i, f);
+    }
     let inv = d.diagonal();
     let latex = opts.latex.then(|| LatexForms {
         a: rows_of(a_poly, true),
@@ -376,7 +425,7 @@ fn one_symbol(
                 name,
                 a,
                 &au,
-                f,
+                last_only(&au, f),
                 cert,
                 ring,
                 "diagonal input: c = product of the diagonal, B = diag(product of the others); invariant factors from A·B = c·I, the gcd of B's entries and deg c (no elimination)",
@@ -399,7 +448,7 @@ fn one_symbol(
                     name,
                     a,
                     &au,
-                    f,
+                    last_only(&au, f),
                     cert,
                     ring,
                     "det and adj by images mod word primes (CRT above a proved bound); invariant factors from A·B = c·I, the gcd of B's entries and deg c",
@@ -410,6 +459,32 @@ fn one_symbol(
                     ),
                     opts,
                 ));
+            }
+            let why = format!(
+                "{note}; transforms omitted: U would hold about {:.1e} digits of coefficients, and the (n−1)-th determinantal divisor is not 1; the invariant factors alone are certified",
+                bits as f64 * std::f64::consts::LOG10_2
+            );
+            if let Some(report) = two_factor_report(name, a, &au, &c, &b, &ring, why, opts) {
+                return Ok(report);
+            }
+            (SmithDecomposition::new(&au), ELIMINATION_ALGORITHM)
+        }
+        Some(FastPath::NoHermite { c, b }) => {
+            if au.rows() >= TWO_FACTOR_MIN
+                && let Some(report) = two_factor_report(
+                    name,
+                    a,
+                    &au,
+                    &c,
+                    &b,
+                    &ring,
+                    format!(
+                        "{note}; transforms omitted: the (n−1)-th determinantal divisor is not 1, so the Hermite shortcut does not apply and the general elimination with transforms is slow at this size; the invariant factors alone are certified"
+                    ),
+                    opts,
+                )
+            {
+                return Ok(report);
             }
             (SmithDecomposition::new(&au), ELIMINATION_ALGORITHM)
         }

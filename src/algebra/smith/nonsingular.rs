@@ -132,7 +132,7 @@ pub fn interpolate_int(values: &[BigInt], s: i64) -> Vec<BigInt> {
 pub fn try_nonsingular(a: &Matrix<QxRing>) -> Option<SmithDecomposition<QxRing>> {
     match try_fast(a, u64::MAX)? {
         FastPath::Decomposition(d) => Some(d),
-        FastPath::FormOnly { .. } => None,
+        FastPath::FormOnly { .. } | FastPath::NoHermite { .. } => None,
     }
 }
 
@@ -152,6 +152,28 @@ pub enum FastPath {
         /// Estimated size of U in bits.
         bits: u64,
     },
+    /// No entry of adj's last row is invertible modulo det (so
+    /// `d_(n−1) ≠ 1`, or an unlucky last row): `A·B = c·I` as in
+    /// [`FastPath::FormOnly`], for a certificate with more than one
+    /// non-trivial invariant factor (`certify::certify_two_factors`).
+    NoHermite {
+        /// `c = det Ã`.
+        c: QPoly,
+        /// `B = adj(Ã)·Δ`.
+        b: Matrix<QxRing>,
+    },
+}
+
+/// `B = adj(Ã)·Δ` as a matrix over Q[x] (integer coefficients).
+fn scaled_adjugate(r: &QxRing, adj_t: &[Vec<Vec<BigInt>>], delta: &[BigInt]) -> Matrix<QxRing> {
+    let n = adj_t.len();
+    let mut b = Matrix::zeros(r.clone(), n, n);
+    for (i, row) in adj_t.iter().enumerate() {
+        for (k, (e, d)) in row.iter().zip(delta).enumerate() {
+            b.set(i, k, QPoly::from_ints(e.iter().map(|x| x * d).collect()));
+        }
+    }
+    b
 }
 
 /// Size estimate of the Hermite transforms, in bits: `h_i` is
@@ -216,12 +238,7 @@ pub fn try_fast(a: &Matrix<QxRing>, limit_bits: u64) -> Option<FastPath> {
     }
     let bits = transform_bits(det_q.num(), &adj_t);
     if bits > limit_bits {
-        let mut b = Matrix::zeros(r.clone(), n, n);
-        for (i, row) in adj_t.iter().enumerate() {
-            for (k, (e, d)) in row.iter().zip(&delta).enumerate() {
-                b.set(i, k, QPoly::from_ints(e.iter().map(|x| x * d).collect()));
-            }
-        }
+        let b = scaled_adjugate(&r, &adj_t, &delta);
         return Some(FastPath::FormOnly { c: det_q, b, bits });
     }
     let last: Vec<QPoly> = adj_t[n - 1]
@@ -231,9 +248,14 @@ pub fn try_fast(a: &Matrix<QxRing>, limit_bits: u64) -> Option<FastPath> {
     // Pick the column of least degree whose entry is invertible mod f.
     let mut order: Vec<usize> = (0..n).filter(|&j| !last[j].is_zero()).collect();
     order.sort_by_key(|&j| last[j].degree());
-    let (j, inv) = order
+    let Some((j, inv)) = order
         .into_iter()
-        .find_map(|j| r.inverse_mod(&last[j], &f).map(|s| (j, s)))?;
+        .filter(|&j| may_be_coprime(&last[j], &det_q))
+        .find_map(|j| r.inverse_mod(&last[j], &f).map(|s| (j, s)))
+    else {
+        let b = scaled_adjugate(&r, &adj_t, &delta);
+        return Some(FastPath::NoHermite { c: det_q, b });
+    };
     let mut h = Vec::with_capacity(n - 1);
     let mut w = Matrix::zeros(r.clone(), n, n);
     for (i, adj_row) in adj_t.iter().enumerate().take(n - 1) {
@@ -279,6 +301,28 @@ pub fn try_fast(a: &Matrix<QxRing>, limit_bits: u64) -> Option<FastPath> {
         u_inv,
         v_inv,
     }))
+}
+
+/// False when the images of `a` and `m` modulo a prime that keeps m's
+/// degree share a factor. That is always so when a and m share one over
+/// Q (a primitive gcd g divides both numerators and keeps its degree mod
+/// p, its leading coefficient dividing m's), and only rarely otherwise
+/// (an unlucky prime, which merely costs the Hermite shortcut). Skips the
+/// costly exact extended Euclid of `inverse_mod` on entries that cannot be
+/// inverted.
+fn may_be_coprime(a: &QPoly, m: &QPoly) -> bool {
+    use crate::algebra::modular::{self, Fp};
+    let Some(p) = modular::primes().next() else {
+        return true;
+    };
+    let f = Fp::new(p);
+    let img = |e: &QPoly| modular::trim(e.num().iter().map(|c| f.reduce(c)).collect());
+    let mi = img(m);
+    let ai = img(a);
+    if modular::deg(&mi) != m.degree() || ai.is_empty() {
+        return true;
+    }
+    modular::deg(&modular::gcd(f, &ai, &mi)) == Some(0)
 }
 
 /// A with a constant nonzero determinant (always so for a nonsingular
