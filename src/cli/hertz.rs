@@ -9,7 +9,7 @@
 use super::AFTER_HELP;
 use super::error::CliError;
 use super::output::write_file;
-use crate::hertz::front::{DEFAULT_MAX_LEVEL, Given, HertzResult, solve};
+use crate::hertz::front::{DEFAULT_MAX_LEVEL, Given, HertzResult, Limit, Refusal, solve, solve_with_limit};
 use crate::hertz::seed::seed_literal;
 use crate::plan::{PlanError, SplitOptions};
 use clap::{Args, Subcommand};
@@ -25,7 +25,7 @@ use std::path::PathBuf;
 pub struct HertzArgs {
     #[command(subcommand)]
     sub: Option<HertzSub>,
-    /// Poisson's ratio ν in [0, 1/2].
+    /// Poisson's ratio ν, -1 < ν ≤ 1/2 (a stable isotropic solid).
     #[arg(long, allow_negative_numbers = true)]
     nu: Option<f64>,
     /// Stick radius c in (0, 1): find μ.
@@ -66,10 +66,11 @@ enum HertzSub {
     /// Solve on a ν × μ grid in parallel; CSV (default) or JSON lines.
     #[command(after_help = AFTER_HELP)]
     Sweep {
-        /// ν range as START:END:COUNT within [0, 1/2], e.g. 0:0.45:10 (END may be below START).
+        /// ν range as START:END:COUNT within (-1, 1/2], e.g. -0.9:0.5:15 (END may be below START).
         #[arg(long, value_name = "START:END:COUNT", allow_hyphen_values = true)]
         nu: String,
-        /// μ range as START:END:COUNT with μ ≥ 0, e.g. 0.1:1:10.
+        /// μ range as START:END:COUNT with μ ≥ 0, e.g. 0.1:1:10, or log:START:END:COUNT for
+        /// log spacing (START, END > 0), e.g. log:0.01:100:13 (0.01, 0.0215…, 0.0464…, 0.1, …, 100).
         #[arg(long, value_name = "START:END:COUNT", allow_hyphen_values = true)]
         mu: String,
         /// Target accuracy of each solve (finite, > 0).
@@ -137,15 +138,36 @@ pub fn hertz_command(a: &HertzArgs, w: &mut dyn Write) -> Result<(), CliError> {
     // -0 is 0 (and is shown so).
     let (nu, c, mu) = (nu + 0.0, a.c.map(|c| c + 0.0), a.mu.map(|m| m + 0.0));
     let opts = options(a.tol);
-    let s = match (c, mu) {
-        (Some(c), None) => solve_given_c(nu, c, &opts),
-        (None, Some(mu)) => solve_given_mu(nu, mu, &opts),
+    let given = match (c, mu) {
+        (Some(c), None) => Given::C(c),
+        (None, Some(mu)) => Given::Mu(mu),
         _ => {
             return Err(CliError::Usage(
                 "give exactly one of --c C or --mu M".into(),
             ));
         }
-    }?;
+    };
+    let s = match solve_with_limit(nu, given, &opts) {
+        Ok(s) => s,
+        Err(Refusal { error, limit }) => {
+            // With --json a refusal at a physical limit is still one JSON
+            // object (the error and the limit's asymptotic values); the
+            // exit status is the error's (3).
+            if a.json && limit.is_some() {
+                super::output::write_json(
+                    w,
+                    &RefusalJson {
+                        nu,
+                        c,
+                        mu,
+                        error: error.to_string(),
+                        limit,
+                    },
+                )?;
+            }
+            return Err(error.into());
+        }
+    };
     if let Some(path) = &a.csv {
         write_file(path, profile_csv(&s)?.as_bytes(), &[], "")?;
     }
@@ -506,7 +528,10 @@ fn write_csv_rows(w: &mut dyn Write, head: &[&str], rows: &[Vec<String>]) -> Res
 pub const MAX_SWEEP_POINTS: usize = 100_000;
 
 /// Parses `START:END:COUNT` into `COUNT` evenly spaced values (END may be
-/// below START), each inside `domain` (a description and a test).
+/// below START), or `log:START:END:COUNT` into `COUNT` values evenly
+/// spaced in the logarithm (START and END > 0; the inner values rounded to
+/// 12 significant digits, so log:0.01:100:5 is 0.01, 0.1, 1, 10, 100), each
+/// inside `domain` (a description and a test). Checked before any work.
 pub fn parse_range(
     flag: &str,
     s: &str,
@@ -514,10 +539,14 @@ pub fn parse_range(
 ) -> Result<Vec<f64>, CliError> {
     let bad = || {
         CliError::Usage(format!(
-            "--{flag} {s}: expected START:END:COUNT, e.g. 0:0.45:10"
+            "--{flag} {s}: expected START:END:COUNT (e.g. 0:0.45:10) or log:START:END:COUNT (e.g. log:0.01:100:13)"
         ))
     };
-    let parts: Vec<&str> = s.split(':').collect();
+    let (log, body) = match s.trim().strip_prefix("log:") {
+        Some(rest) => (true, rest),
+        None => (false, s),
+    };
+    let parts: Vec<&str> = body.split(':').collect();
     let [a, b, n] = parts.as_slice() else {
         return Err(bad());
     };
@@ -538,6 +567,11 @@ pub fn parse_range(
                 "--{flag} {s}: {v} is outside {what}"
             )));
         }
+        if log && !(v > 0.0 && v.is_finite()) {
+            return Err(CliError::Invalid(format!(
+                "--{flag} {s}: {v} is not > 0; a log range needs START and END > 0"
+            )));
+        }
     }
     let (a, b) = (a + 0.0, b + 0.0);
     Ok(if n == 1 {
@@ -545,12 +579,32 @@ pub fn parse_range(
     } else {
         (0..n)
             .map(|k| {
-                // Exact at both ends: a·(1 − s) + b·s.
                 let s = k as f64 / (n - 1) as f64;
-                a * (1.0 - s) + b * s
+                if k == 0 {
+                    a
+                } else if k == n - 1 {
+                    b
+                } else if log {
+                    let v = (a.ln() * (1.0 - s) + b.ln() * s).exp();
+                    // 12 significant digits: 10^k comes out as 10^k.
+                    format!("{v:.11e}").parse().unwrap_or(v)
+                } else {
+                    // Exact at both ends: a·(1 − s) + b·s.
+                    a * (1.0 - s) + b * s
+                }
             })
             .collect()
     })
+}
+
+/// `--json` output of a refusal at a physical limit.
+#[derive(serde::Serialize)]
+struct RefusalJson {
+    nu: f64,
+    c: Option<f64>,
+    mu: Option<f64>,
+    error: String,
+    limit: Option<Limit>,
 }
 
 #[derive(serde::Serialize)]
@@ -565,6 +619,8 @@ struct SweepRow {
     stick_ok: Option<bool>,
     slip_ok: Option<bool>,
     error: Option<String>,
+    /// The physical limit of a refusal, with its asymptotic values.
+    limit: Option<Limit>,
 }
 
 fn sweep(
@@ -576,7 +632,14 @@ fn sweep(
     w: &mut dyn Write,
 ) -> Result<(), CliError> {
     check_tol(tol)?;
-    let nus = parse_range("nu", nu, ("[0, 1/2]", |v| (0.0..=0.5).contains(&v)))?;
+    let nus = parse_range(
+        "nu",
+        nu,
+        (
+            "(-1, 1/2] (a stable isotropic solid has -1 < ν ≤ 1/2)",
+            |v| v > -1.0 && v <= 0.5,
+        ),
+    )?;
     let mus = parse_range("mu", mu, ("μ ≥ 0 (finite)", |v| v >= 0.0 && v.is_finite()))?;
     let points = nus.len().saturating_mul(mus.len());
     if points > MAX_SWEEP_POINTS {
@@ -600,7 +663,7 @@ fn sweep(
     let rows: Vec<SweepRow> = grid
         .par_iter()
         .map(|&(nu, mu)| {
-            let r = solve_given_mu(nu, mu, &opts);
+            let r = solve_with_limit(nu, Given::Mu(mu), &opts);
             bar.inc(1);
             if let Ok(mut t) = tally.lock() {
                 t.add(&r);
@@ -617,8 +680,9 @@ fn sweep(
                     stick_ok: Some(s.stick_ok),
                     slip_ok: Some(s.slip_ok),
                     error: None,
+                    limit: None,
                 },
-                Err(e) => SweepRow {
+                Err(Refusal { error: e, limit }) => SweepRow {
                     nu,
                     mu,
                     c: None,
@@ -629,6 +693,7 @@ fn sweep(
                     stick_ok: None,
                     slip_ok: None,
                     error: Some(e.to_string()),
+                    limit,
                 },
             }
         })
@@ -645,14 +710,22 @@ fn sweep(
         }
     } else {
         text.push_str(
-            "nu,mu,c,alpha,compliance,compliance_via_shear,error_estimate,stick_ok,slip_ok,error\n",
+            "nu,mu,c,alpha,compliance,compliance_via_shear,error_estimate,stick_ok,slip_ok,error,limit,c_asymptotic_low,c_asymptotic_high,compliance_asymptotic\n",
         );
         let f = |v: Option<f64>| v.map_or(String::new(), |x| format!("{x:.15e}"));
         let b = |v: Option<bool>| v.map_or(String::new(), |x| x.to_string());
         for r in &rows {
+            let (c_lo, c_hi, p_asym) = match r.limit {
+                Some(Limit::SmallFriction {
+                    c_asymptotic: (lo, hi),
+                    compliance_asymptotic,
+                    ..
+                }) => (Some(lo), Some(hi), Some(compliance_asymptotic)),
+                _ => (None, None, None),
+            };
             let _ = writeln!(
                 text,
-                "{},{},{},{},{},{},{},{},{},{}",
+                "{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
                 r.nu,
                 r.mu,
                 f(r.c),
@@ -662,7 +735,11 @@ fn sweep(
                 f(r.error_estimate),
                 b(r.stick_ok),
                 b(r.slip_ok),
-                r.error.as_deref().map(csv_field).unwrap_or_default()
+                r.error.as_deref().map(csv_field).unwrap_or_default(),
+                r.limit.map(|l| l.kind()).unwrap_or_default(),
+                f(c_lo),
+                f(c_hi),
+                f(p_asym),
             );
         }
     }
@@ -680,7 +757,18 @@ fn sweep(
 fn sweep_summary(rows: &[SweepRow]) -> String {
     let solved: Vec<&SweepRow> = rows.iter().filter(|r| r.c.is_some()).collect();
     let failed = rows.len() - solved.len();
-    let head = format!("sweep: {} solves, {failed} failed", rows.len());
+    let limit = |k: &str| {
+        rows.iter()
+            .filter(|r| r.limit.is_some_and(|l| l.kind() == k))
+            .count()
+    };
+    let (small, thin) = (limit("small_friction"), limit("thin_slip"));
+    let head = format!(
+        "sweep: {} solves, {failed} failed ({small} in the small-friction limit, c < 1e-10; \
+         {thin} near full stick, 1 − c < 1e-10; {} other)",
+        rows.len(),
+        failed - small - thin
+    );
     if solved.is_empty() {
         return format!("{head}; no point solved, so no physical check");
     }
