@@ -9,7 +9,9 @@
 use super::AFTER_HELP;
 use super::error::CliError;
 use super::output::write_file;
-use crate::hertz::front::{DEFAULT_MAX_LEVEL, Given, HertzResult, Limit, Refusal, solve, solve_with_limit};
+use crate::hertz::front::{
+    DEFAULT_MAX_LEVEL, Given, HertzResult, Limit, Refusal, solve, solve_with_limit,
+};
 use crate::hertz::seed::seed_literal;
 use crate::plan::{PlanError, SplitOptions};
 use clap::{Args, Subcommand};
@@ -529,8 +531,9 @@ pub const MAX_SWEEP_POINTS: usize = 100_000;
 
 /// Parses `START:END:COUNT` into `COUNT` evenly spaced values (END may be
 /// below START), or `log:START:END:COUNT` into `COUNT` values evenly
-/// spaced in the logarithm (START and END > 0; the inner values rounded to
-/// 12 significant digits, so log:0.01:100:5 is 0.01, 0.1, 1, 10, 100), each
+/// spaced in the logarithm (START and END > 0). The inner values are
+/// rounded to 12 significant digits, so log:0.01:100:5 is 0.01, 0.1, 1,
+/// 10, 100 and -0.9:0.5:15 is -0.9, -0.8, …, 0.5. Each value must lie
 /// inside `domain` (a description and a test). Checked before any work.
 pub fn parse_range(
     flag: &str,
@@ -584,13 +587,15 @@ pub fn parse_range(
                     a
                 } else if k == n - 1 {
                     b
-                } else if log {
-                    let v = (a.ln() * (1.0 - s) + b.ln() * s).exp();
-                    // 12 significant digits: 10^k comes out as 10^k.
-                    format!("{v:.11e}").parse().unwrap_or(v)
                 } else {
-                    // Exact at both ends: a·(1 − s) + b·s.
-                    a * (1.0 - s) + b * s
+                    let v = if log {
+                        (a.ln() * (1.0 - s) + b.ln() * s).exp()
+                    } else {
+                        a * (1.0 - s) + b * s
+                    };
+                    // 12 significant digits: 10^k comes out as 10^k, and
+                    // -0.9:0.5:15 as -0.8, -0.7, … (not 0.10000000000000003).
+                    format!("{v:.11e}").parse().unwrap_or(v)
                 }
             })
             .collect()
@@ -752,7 +757,7 @@ fn sweep(
 }
 
 /// The sweep's summary line: counts, then the physical checks over the
-/// solved points (stick, slip, 0 < c < 1; c non-decreasing in μ at each ν,
+/// solved points (stick, slip, 0 < c < 1 or c = 1 at ν = 1/2; c non-decreasing in μ at each ν,
 /// whatever order the μ range was given in).
 fn sweep_summary(rows: &[SweepRow]) -> String {
     let solved: Vec<&SweepRow> = rows.iter().filter(|r| r.c.is_some()).collect();
@@ -775,7 +780,8 @@ fn sweep_summary(rows: &[SweepRow]) -> String {
     let phys = solved.iter().filter(|r| r.mu > 0.0).all(|r| {
         r.stick_ok == Some(true)
             && r.slip_ok == Some(true)
-            && r.c.is_some_and(|c| c > 0.0 && c < 1.0)
+            // ν = 1/2 (γ = 0) sticks everywhere: c = 1 exactly.
+            && r.c.is_some_and(|c| c > 0.0 && (c < 1.0 || r.nu == 0.5))
     });
     let mut by_nu: Vec<(f64, f64, f64)> = solved
         .iter()
@@ -786,9 +792,54 @@ fn sweep_summary(rows: &[SweepRow]) -> String {
         .windows(2)
         .all(|p| p[0].0 != p[1].0 || p[1].2 >= p[0].2);
     format!(
-        "{head}; physical checks on the {} solved points (stick, slip, 0 < c < 1): {}; c non-decreasing in μ: {}",
+        "{head}; physical checks on the {} solved points (stick, slip, 0 < c < 1, c = 1 at ν = 1/2): {}; c non-decreasing in μ: {}",
         solved.len(),
         if phys { "all hold" } else { "SOME FAIL" },
         if monotone { "yes" } else { "NO" }
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn positive(v: f64) -> bool {
+        v >= 0.0 && v.is_finite()
+    }
+
+    #[test]
+    fn log_ranges_are_geometric_with_exact_decades() {
+        let v = parse_range("mu", "log:0.01:100:13", ("μ ≥ 0", positive)).unwrap();
+        assert_eq!(v.len(), 13);
+        assert_eq!(
+            (v[0], v[3], v[6], v[9], v[12]),
+            (0.01, 0.1, 1.0, 10.0, 100.0)
+        );
+        // Equal ratios 10^(1/3) to the 12 rounded digits.
+        for w in v.windows(2) {
+            assert!((w[1] / w[0] - 10f64.powf(1.0 / 3.0)).abs() < 1e-10, "{w:?}");
+        }
+        // Descending works too, and one point is START.
+        let d = parse_range("mu", "log:100:1:3", ("μ ≥ 0", positive)).unwrap();
+        assert_eq!(d, vec![100.0, 10.0, 1.0]);
+        assert_eq!(
+            parse_range("mu", "log:0.5:7:1", ("μ ≥ 0", positive)).unwrap(),
+            vec![0.5]
+        );
+    }
+
+    #[test]
+    fn bad_ranges_are_refused() {
+        let r = |s: &str| parse_range("mu", s, ("μ ≥ 0", positive));
+        assert!(matches!(r("log:0:1:3"), Err(CliError::Invalid(_))));
+        assert!(matches!(r("log:1:inf:3"), Err(CliError::Invalid(_))));
+        assert!(matches!(r("log:1:2"), Err(CliError::Usage(_))));
+        assert!(matches!(r("log:1:2:0"), Err(CliError::Invalid(_))));
+        assert!(matches!(r("0:1:3"), Ok(v) if v == vec![0.0, 0.5, 1.0]));
+        let nu = |s: &str| parse_range("nu", s, ("(-1, 1/2]", |v| v > -1.0 && v <= 0.5));
+        assert!(
+            matches!(nu("-0.9:0.5:15"), Ok(v) if v.len() == 15 && v[0] == -0.9 && v[1] == -0.8 && v[10] == 0.1 && v[14] == 0.5)
+        );
+        assert!(matches!(nu("-1:0.5:3"), Err(CliError::Invalid(_))));
+    }
 }

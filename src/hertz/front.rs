@@ -237,7 +237,10 @@ impl Limit {
                 // end" and the front's spurious free boundary, where the
                 // asymptotic c is at most 1e-8 (the noisy zone starts near
                 // 1e-9, the scan stops at 1e-10).
-                let near_end = text.contains("closer than") || text.contains("spurious free boundary");
+                let near_end = text.contains("closer than")
+                    || text.contains("closer to the end 0 ")
+                    || text.contains("noisy")
+                    || text.contains("spurious free boundary");
                 (near_end && c_hi <= 1e-8).then(|| Limit::SmallFriction {
                     exponent: a,
                     c_asymptotic: (lo * (-a / mu).exp(), c_hi),
@@ -245,9 +248,11 @@ impl Limit {
                     mu_resolved: a / (4.5 / RESOLVED).ln(),
                 })
             }
-            Given::C(_) if text.contains("closer to the end inf") => Some(Limit::BeyondLargeFriction {
-                one_minus_c_infinity_heuristic: thin_slip_heuristic(gamma),
-            }),
+            Given::C(_) if text.contains("closer to the end inf") => {
+                Some(Limit::BeyondLargeFriction {
+                    one_minus_c_infinity_heuristic: thin_slip_heuristic(gamma),
+                })
+            }
             _ => None,
         }
     }
@@ -408,15 +413,17 @@ pub fn solve(nu: f64, given: Given, opts: &SplitOptions) -> Result<HertzResult, 
 /// not resolve (see [`Limit`]) comes back as a [`Refusal`] whose error
 /// states the limit and its asymptotic values (for information: they are
 /// not refined to the tolerance, so the refusal stays a failure, exit 3).
-pub fn solve_with_limit(nu: f64, given: Given, opts: &SplitOptions) -> Result<HertzResult, Refusal> {
-    solve_inner(nu, given, opts).map_err(|error| {
-        match Limit::classify(nu, given, &error) {
-            Some(limit) => Refusal {
-                error: no_convergence(limit.message(nu, given, &error)),
-                limit: Some(limit),
-            },
-            None => Refusal { error, limit: None },
-        }
+pub fn solve_with_limit(
+    nu: f64,
+    given: Given,
+    opts: &SplitOptions,
+) -> Result<HertzResult, Refusal> {
+    solve_inner(nu, given, opts).map_err(|error| match Limit::classify(nu, given, &error) {
+        Some(limit) => Refusal {
+            error: no_convergence(limit.message(nu, given, &error)),
+            limit: Some(limit),
+        },
+        None => Refusal { error, limit: None },
     })
 }
 
