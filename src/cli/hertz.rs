@@ -532,8 +532,9 @@ pub const MAX_SWEEP_POINTS: usize = 100_000;
 /// Parses `START:END:COUNT` into `COUNT` evenly spaced values (END may be
 /// below START), or `log:START:END:COUNT` into `COUNT` values evenly
 /// spaced in the logarithm (START and END > 0). The inner values are
-/// rounded to 12 significant digits, so log:0.01:100:5 is 0.01, 0.1, 1,
-/// 10, 100 and -0.9:0.5:15 is -0.9, -0.8, …, 0.5. Each value must lie
+/// rounded to 12 significant digits (a linear range: 12 digits of its
+/// larger end), so log:0.01:100:5 is 0.01, 0.1, 1, 10, 100 and
+/// -0.9:0.5:15 is -0.9, -0.8, …, 0, …, 0.5. Each value must lie
 /// inside `domain` (a description and a test). Checked before any work.
 pub fn parse_range(
     flag: &str,
@@ -587,15 +588,20 @@ pub fn parse_range(
                     a
                 } else if k == n - 1 {
                     b
-                } else {
-                    let v = if log {
-                        (a.ln() * (1.0 - s) + b.ln() * s).exp()
-                    } else {
-                        a * (1.0 - s) + b * s
-                    };
-                    // 12 significant digits: 10^k comes out as 10^k, and
-                    // -0.9:0.5:15 as -0.8, -0.7, … (not 0.10000000000000003).
+                } else if log {
+                    // 12 significant digits: 10^k comes out as 10^k.
+                    let v = (a.ln() * (1.0 - s) + b.ln() * s).exp();
                     format!("{v:.11e}").parse().unwrap_or(v)
+                } else {
+                    // 12 digits of the range's scale: -0.9:0.5:15 gives
+                    // -0.8, …, 0, …, 0.1 (not 5.6e-17 or 0.10000000000000003).
+                    let v = a * (1.0 - s) + b * s;
+                    let scale = a.abs().max(b.abs());
+                    // (f64 arithmetic: a zero scale gives +∞, clamped.)
+                    let digits = (11.0 - scale.log10().floor()).clamp(0.0, 400.0) as usize;
+                    format!("{v:.digits$}")
+                        .parse::<f64>()
+                        .map_or(v, |r| r + 0.0)
                 }
             })
             .collect()
@@ -836,9 +842,11 @@ mod tests {
         assert!(matches!(r("log:1:2"), Err(CliError::Usage(_))));
         assert!(matches!(r("log:1:2:0"), Err(CliError::Invalid(_))));
         assert!(matches!(r("0:1:3"), Ok(v) if v == vec![0.0, 0.5, 1.0]));
+        assert!(matches!(r("0:0:3"), Ok(v) if v == vec![0.0; 3]));
+        assert!(matches!(r("1e-300:2e-300:3"), Ok(v) if v.len() == 3 && v[1] > 0.0));
         let nu = |s: &str| parse_range("nu", s, ("(-1, 1/2]", |v| v > -1.0 && v <= 0.5));
         assert!(
-            matches!(nu("-0.9:0.5:15"), Ok(v) if v.len() == 15 && v[0] == -0.9 && v[1] == -0.8 && v[10] == 0.1 && v[14] == 0.5)
+            matches!(nu("-0.9:0.5:15"), Ok(v) if v.len() == 15 && v[0] == -0.9 && v[1] == -0.8 && v[9] == 0.0 && v[10] == 0.1 && v[14] == 0.5)
         );
         assert!(matches!(nu("-1:0.5:3"), Err(CliError::Invalid(_))));
     }
