@@ -144,7 +144,11 @@ fn hertz_exit_codes_and_wrote_on_stderr() {
         .code(4)
         .stdout(predicate::str::contains("NOT reached"));
     // Negative numbers reach our own validation; -0 is shown as 0.
-    assert_eq!(code(&["hertz", "--nu", "-0.5", "--mu", "0.1"]), 2);
+    // -1 < ν ≤ 1/2 is physical (ν < 0: auxetic); ν ≤ -1 is bad input.
+    assert_eq!(code(&["hertz", "--nu", "-1.5", "--mu", "0.1"]), 2);
+    assert_eq!(code(&["hertz", "--nu", "-0.5", "--mu", "0"]), 0);
+    // A point in the small-friction limit (c ≈ 4e-25 < 1e-10): refused, 3.
+    assert_eq!(code(&["hertz", "--nu", "0", "--mu", "0.01"]), 3);
     assert_eq!(
         code(&["hertz", "--nu", "0.25", "--mu", "0.2", "--tol", "-1"]),
         2

@@ -166,3 +166,78 @@ fn bad_parameters_and_usage() {
         .assert()
         .code(1);
 }
+
+#[test]
+fn negative_poisson_ratio_solves_and_the_physical_bound_is_stated() {
+    // An auxetic solid: -1 < ν < 0 is physical.
+    let v = solve(&["--nu", "-0.5", "--mu", "1", "--tol", "1e-8"]);
+    assert_eq!(num(&v, "nu"), -0.5);
+    let c = num(&v, "c");
+    assert!(c > 0.0 && c < 1.0, "c = {c}");
+    assert!(num(&v, "error_estimate") <= 1e-8);
+    assert_eq!(v["stick_ok"], Value::Bool(true));
+    assert_eq!(v["slip_ok"], Value::Bool(true));
+    for bad in ["-1", "-1.5", "0.6"] {
+        lambdamat()
+            .args(["hertz", "--nu", bad, "--mu", "0.2"])
+            .assert()
+            .code(2)
+            .stderr(predicate::str::contains("-1 < ν ≤ 1/2"));
+    }
+}
+
+#[test]
+fn the_small_friction_limit_is_refused_with_its_asymptotics() {
+    // (ν, μ) = (0, 0.01): c ≈ 4.5·exp(−√3/0.01) ≈ 4e-25, far below the
+    // resolved 1e-10. Exit 3 (a refusal), the limit and the asymptotic
+    // values in the message; with --json also one object with `limit`.
+    lambdamat()
+        .args(["hertz", "--nu", "0", "--mu", "0.01"])
+        .assert()
+        .code(3)
+        .stderr(predicate::str::contains("small-friction limit"))
+        .stderr(predicate::str::contains("c ≈ 3.6e-25–4.0e-25"))
+        .stderr(predicate::str::contains(
+            "P* = 1 + γμ(1−2/π) + O(μ²) = 1.00181690",
+        ))
+        .stderr(predicate::str::contains("docs/hertz_asymptotics.md"));
+    let out = lambdamat()
+        .args(["hertz", "--nu", "0", "--mu", "0.01", "--json"])
+        .output()
+        .expect("runs");
+    assert_eq!(out.status.code(), Some(3));
+    let v: Value = serde_json::from_slice(&out.stdout).expect("one JSON object");
+    assert_eq!(v["limit"]["kind"], "small_friction");
+    assert!(
+        v["error"]
+            .as_str()
+            .is_some_and(|e| e.contains("below 1e-10"))
+    );
+    let p = v["limit"]["compliance_asymptotic"]
+        .as_f64()
+        .expect("number");
+    assert!((p - (1.0 + 0.005 * (1.0 - 2.0 / std::f64::consts::PI))).abs() < 1e-15);
+}
+
+#[test]
+fn log_ranges_are_validated_before_any_work() {
+    // Log spacing needs START, END > 0: refused at once (exit 2), and a
+    // malformed range is a usage error (exit 1).
+    for (mu, code) in [
+        ("log:0:100:3", 2),
+        ("log:-1:1:3", 2),
+        ("log:0.01:100", 1),
+        ("lin:0.01:100:3", 1),
+    ] {
+        lambdamat()
+            .args(["hertz", "sweep", "--nu", "0:0:1", "--mu", mu])
+            .assert()
+            .code(code)
+            .stderr(predicate::str::contains(mu));
+    }
+    lambdamat()
+        .args(["hertz", "sweep", "--help"])
+        .assert()
+        .success()
+        .stdout(predicate::str::contains("log:0.01:100:13"));
+}

@@ -2,7 +2,7 @@
 //! (`examples/hertz_frictionless.lmx`): `μ = 0` gives the punch pressure
 //! `(2/π)/√(1-x²)` and `P* = 1`; `ν = 1/2` decouples the stresses (full
 //! stick). Also the serialised keys and the refusal of bad parameters.
-use lambdamat::hertz::front::{Given, frictionless_pressure, solve};
+use lambdamat::hertz::front::{Given, Limit, frictionless_pressure, solve, solve_with_limit};
 use lambdamat::plan::{PlanError, SplitOptions};
 
 #[test]
@@ -11,7 +11,8 @@ fn zero_friction_is_the_punch() {
         tol: 1e-12,
         max_level: 7,
     };
-    for nu in [0.0, 0.25, 0.5] {
+    // ν < 0 (auxetic solids, -1 < ν ≤ 1/2) is accepted like ν ≥ 0.
+    for nu in [-0.5, 0.0, 0.25, 0.5] {
         let s = solve(nu, Given::Mu(0.0), &opts).unwrap();
         assert!(s.converged);
         assert!(
@@ -87,6 +88,9 @@ fn bad_parameters_are_errors_not_results() {
     assert!(input(solve(0.0, Given::C(1.0), &o)));
     assert!(input(solve(0.0, Given::C(-0.1), &o)));
     assert!(input(solve(0.7, Given::C(0.5), &o)));
+    // A stable isotropic solid has -1 < ν ≤ 1/2.
+    assert!(input(solve(-1.0, Given::Mu(0.3), &o)));
+    assert!(input(solve(-1.5, Given::C(0.5), &o)));
     assert!(input(solve(0.5, Given::C(0.5), &o)));
     assert!(input(solve(0.0, Given::Mu(-1.0), &o)));
     assert!(input(solve(0.0, Given::Mu(f64::NAN), &o)));
@@ -100,4 +104,25 @@ fn bad_parameters_are_errors_not_results() {
     // computation, not bad input), not returned.
     let tiny = solve(0.0, Given::Mu(0.01), &o);
     assert!(matches!(tiny, Err(e) if !e.is_input_error()));
+    // …and the refusal names the limit, with the asymptotic values.
+    let r = solve_with_limit(0.0, Given::Mu(0.01), &o)
+        .err()
+        .expect("refused");
+    let Some(Limit::SmallFriction {
+        exponent,
+        c_asymptotic: (lo, hi),
+        compliance_asymptotic,
+        ..
+    }) = r.limit
+    else {
+        panic!("not the small-friction limit: {:?}", r.limit);
+    };
+    // a = γ/√(1−γ²) with γ = 1/2 is 1/√3; P* = 1 + μ(1−2/π)/2.
+    assert!((exponent - 1.0 / 3f64.sqrt()).abs() < 1e-15);
+    assert!(lo < hi && hi < 1e-24 && lo > 1e-26, "{lo:e} {hi:e}");
+    let p = 1.0 + 0.005 * (1.0 - 2.0 / std::f64::consts::PI);
+    assert!((compliance_asymptotic - p).abs() < 1e-15);
+    let text = r.error.to_string();
+    assert!(text.contains("small-friction limit"), "{text}");
+    assert!(!r.error.is_input_error());
 }

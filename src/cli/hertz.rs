@@ -9,7 +9,9 @@
 use super::AFTER_HELP;
 use super::error::CliError;
 use super::output::write_file;
-use crate::hertz::front::{DEFAULT_MAX_LEVEL, Given, HertzResult, solve};
+use crate::hertz::front::{
+    DEFAULT_MAX_LEVEL, Given, HertzResult, Limit, Refusal, solve, solve_with_limit,
+};
 use crate::hertz::seed::seed_literal;
 use crate::plan::{PlanError, SplitOptions};
 use clap::{Args, Subcommand};
@@ -25,7 +27,7 @@ use std::path::PathBuf;
 pub struct HertzArgs {
     #[command(subcommand)]
     sub: Option<HertzSub>,
-    /// Poisson's ratio ν in [0, 1/2].
+    /// Poisson's ratio ν, -1 < ν ≤ 1/2 (a stable isotropic solid).
     #[arg(long, allow_negative_numbers = true)]
     nu: Option<f64>,
     /// Stick radius c in (0, 1): find μ.
@@ -66,10 +68,11 @@ enum HertzSub {
     /// Solve on a ν × μ grid in parallel; CSV (default) or JSON lines.
     #[command(after_help = AFTER_HELP)]
     Sweep {
-        /// ν range as START:END:COUNT within [0, 1/2], e.g. 0:0.45:10 (END may be below START).
+        /// ν range as START:END:COUNT within (-1, 1/2], e.g. -0.9:0.5:15 (END may be below START).
         #[arg(long, value_name = "START:END:COUNT", allow_hyphen_values = true)]
         nu: String,
-        /// μ range as START:END:COUNT with μ ≥ 0, e.g. 0.1:1:10.
+        /// μ range as START:END:COUNT with μ ≥ 0, e.g. 0.1:1:10, or log:START:END:COUNT for
+        /// log spacing (START, END > 0), e.g. log:0.01:100:13 (0.01, 0.0215…, 0.0464…, 0.1, …, 100).
         #[arg(long, value_name = "START:END:COUNT", allow_hyphen_values = true)]
         mu: String,
         /// Target accuracy of each solve (finite, > 0).
@@ -137,15 +140,36 @@ pub fn hertz_command(a: &HertzArgs, w: &mut dyn Write) -> Result<(), CliError> {
     // -0 is 0 (and is shown so).
     let (nu, c, mu) = (nu + 0.0, a.c.map(|c| c + 0.0), a.mu.map(|m| m + 0.0));
     let opts = options(a.tol);
-    let s = match (c, mu) {
-        (Some(c), None) => solve_given_c(nu, c, &opts),
-        (None, Some(mu)) => solve_given_mu(nu, mu, &opts),
+    let given = match (c, mu) {
+        (Some(c), None) => Given::C(c),
+        (None, Some(mu)) => Given::Mu(mu),
         _ => {
             return Err(CliError::Usage(
                 "give exactly one of --c C or --mu M".into(),
             ));
         }
-    }?;
+    };
+    let s = match solve_with_limit(nu, given, &opts) {
+        Ok(s) => s,
+        Err(Refusal { error, limit }) => {
+            // With --json a refusal at a physical limit is still one JSON
+            // object (the error and the limit's asymptotic values); the
+            // exit status is the error's (3).
+            if a.json && limit.is_some() {
+                super::output::write_json(
+                    w,
+                    &RefusalJson {
+                        nu,
+                        c,
+                        mu,
+                        error: error.to_string(),
+                        limit,
+                    },
+                )?;
+            }
+            return Err(error.into());
+        }
+    };
     if let Some(path) = &a.csv {
         write_file(path, profile_csv(&s)?.as_bytes(), &[], "")?;
     }
@@ -506,7 +530,12 @@ fn write_csv_rows(w: &mut dyn Write, head: &[&str], rows: &[Vec<String>]) -> Res
 pub const MAX_SWEEP_POINTS: usize = 100_000;
 
 /// Parses `START:END:COUNT` into `COUNT` evenly spaced values (END may be
-/// below START), each inside `domain` (a description and a test).
+/// below START), or `log:START:END:COUNT` into `COUNT` values evenly
+/// spaced in the logarithm (START and END > 0). The inner values are
+/// rounded to 12 significant digits (a linear range: 12 digits of its
+/// larger end), so log:0.01:100:5 is 0.01, 0.1, 1, 10, 100 and
+/// -0.9:0.5:15 is -0.9, -0.8, …, 0, …, 0.5. Each value must lie
+/// inside `domain` (a description and a test). Checked before any work.
 pub fn parse_range(
     flag: &str,
     s: &str,
@@ -514,10 +543,14 @@ pub fn parse_range(
 ) -> Result<Vec<f64>, CliError> {
     let bad = || {
         CliError::Usage(format!(
-            "--{flag} {s}: expected START:END:COUNT, e.g. 0:0.45:10"
+            "--{flag} {s}: expected START:END:COUNT (e.g. 0:0.45:10) or log:START:END:COUNT (e.g. log:0.01:100:13)"
         ))
     };
-    let parts: Vec<&str> = s.split(':').collect();
+    let (log, body) = match s.trim().strip_prefix("log:") {
+        Some(rest) => (true, rest),
+        None => (false, s),
+    };
+    let parts: Vec<&str> = body.split(':').collect();
     let [a, b, n] = parts.as_slice() else {
         return Err(bad());
     };
@@ -538,6 +571,11 @@ pub fn parse_range(
                 "--{flag} {s}: {v} is outside {what}"
             )));
         }
+        if log && !(v > 0.0 && v.is_finite()) {
+            return Err(CliError::Invalid(format!(
+                "--{flag} {s}: {v} is not > 0; a log range needs START and END > 0"
+            )));
+        }
     }
     let (a, b) = (a + 0.0, b + 0.0);
     Ok(if n == 1 {
@@ -545,12 +583,39 @@ pub fn parse_range(
     } else {
         (0..n)
             .map(|k| {
-                // Exact at both ends: a·(1 − s) + b·s.
                 let s = k as f64 / (n - 1) as f64;
-                a * (1.0 - s) + b * s
+                if k == 0 {
+                    a
+                } else if k == n - 1 {
+                    b
+                } else if log {
+                    // 12 significant digits: 10^k comes out as 10^k.
+                    let v = (a.ln() * (1.0 - s) + b.ln() * s).exp();
+                    format!("{v:.11e}").parse().unwrap_or(v)
+                } else {
+                    // 12 digits of the range's scale: -0.9:0.5:15 gives
+                    // -0.8, …, 0, …, 0.1 (not 5.6e-17 or 0.10000000000000003).
+                    let v = a * (1.0 - s) + b * s;
+                    let scale = a.abs().max(b.abs());
+                    // (f64 arithmetic: a zero scale gives +∞, clamped.)
+                    let digits = (11.0 - scale.log10().floor()).clamp(0.0, 400.0) as usize;
+                    format!("{v:.digits$}")
+                        .parse::<f64>()
+                        .map_or(v, |r| r + 0.0)
+                }
             })
             .collect()
     })
+}
+
+/// `--json` output of a refusal at a physical limit.
+#[derive(serde::Serialize)]
+struct RefusalJson {
+    nu: f64,
+    c: Option<f64>,
+    mu: Option<f64>,
+    error: String,
+    limit: Option<Limit>,
 }
 
 #[derive(serde::Serialize)]
@@ -565,6 +630,8 @@ struct SweepRow {
     stick_ok: Option<bool>,
     slip_ok: Option<bool>,
     error: Option<String>,
+    /// The physical limit of a refusal, with its asymptotic values.
+    limit: Option<Limit>,
 }
 
 fn sweep(
@@ -576,7 +643,14 @@ fn sweep(
     w: &mut dyn Write,
 ) -> Result<(), CliError> {
     check_tol(tol)?;
-    let nus = parse_range("nu", nu, ("[0, 1/2]", |v| (0.0..=0.5).contains(&v)))?;
+    let nus = parse_range(
+        "nu",
+        nu,
+        (
+            "(-1, 1/2] (a stable isotropic solid has -1 < ν ≤ 1/2)",
+            |v| v > -1.0 && v <= 0.5,
+        ),
+    )?;
     let mus = parse_range("mu", mu, ("μ ≥ 0 (finite)", |v| v >= 0.0 && v.is_finite()))?;
     let points = nus.len().saturating_mul(mus.len());
     if points > MAX_SWEEP_POINTS {
@@ -600,7 +674,7 @@ fn sweep(
     let rows: Vec<SweepRow> = grid
         .par_iter()
         .map(|&(nu, mu)| {
-            let r = solve_given_mu(nu, mu, &opts);
+            let r = solve_with_limit(nu, Given::Mu(mu), &opts);
             bar.inc(1);
             if let Ok(mut t) = tally.lock() {
                 t.add(&r);
@@ -617,8 +691,9 @@ fn sweep(
                     stick_ok: Some(s.stick_ok),
                     slip_ok: Some(s.slip_ok),
                     error: None,
+                    limit: None,
                 },
-                Err(e) => SweepRow {
+                Err(Refusal { error: e, limit }) => SweepRow {
                     nu,
                     mu,
                     c: None,
@@ -629,6 +704,7 @@ fn sweep(
                     stick_ok: None,
                     slip_ok: None,
                     error: Some(e.to_string()),
+                    limit,
                 },
             }
         })
@@ -645,14 +721,22 @@ fn sweep(
         }
     } else {
         text.push_str(
-            "nu,mu,c,alpha,compliance,compliance_via_shear,error_estimate,stick_ok,slip_ok,error\n",
+            "nu,mu,c,alpha,compliance,compliance_via_shear,error_estimate,stick_ok,slip_ok,error,limit,c_asymptotic_low,c_asymptotic_high,compliance_asymptotic\n",
         );
         let f = |v: Option<f64>| v.map_or(String::new(), |x| format!("{x:.15e}"));
         let b = |v: Option<bool>| v.map_or(String::new(), |x| x.to_string());
         for r in &rows {
+            let (c_lo, c_hi, p_asym) = match r.limit {
+                Some(Limit::SmallFriction {
+                    c_asymptotic: (lo, hi),
+                    compliance_asymptotic,
+                    ..
+                }) => (Some(lo), Some(hi), Some(compliance_asymptotic)),
+                _ => (None, None, None),
+            };
             let _ = writeln!(
                 text,
-                "{},{},{},{},{},{},{},{},{},{}",
+                "{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
                 r.nu,
                 r.mu,
                 f(r.c),
@@ -662,7 +746,11 @@ fn sweep(
                 f(r.error_estimate),
                 b(r.stick_ok),
                 b(r.slip_ok),
-                r.error.as_deref().map(csv_field).unwrap_or_default()
+                r.error.as_deref().map(csv_field).unwrap_or_default(),
+                r.limit.map(|l| l.kind()).unwrap_or_default(),
+                f(c_lo),
+                f(c_hi),
+                f(p_asym),
             );
         }
     }
@@ -675,19 +763,31 @@ fn sweep(
 }
 
 /// The sweep's summary line: counts, then the physical checks over the
-/// solved points (stick, slip, 0 < c < 1; c non-decreasing in μ at each ν,
+/// solved points (stick, slip, 0 < c < 1 or c = 1 at ν = 1/2; c non-decreasing in μ at each ν,
 /// whatever order the μ range was given in).
 fn sweep_summary(rows: &[SweepRow]) -> String {
     let solved: Vec<&SweepRow> = rows.iter().filter(|r| r.c.is_some()).collect();
     let failed = rows.len() - solved.len();
-    let head = format!("sweep: {} solves, {failed} failed", rows.len());
+    let limit = |k: &str| {
+        rows.iter()
+            .filter(|r| r.limit.is_some_and(|l| l.kind() == k))
+            .count()
+    };
+    let (small, thin) = (limit("small_friction"), limit("thin_slip"));
+    let head = format!(
+        "sweep: {} solves, {failed} failed ({small} in the small-friction limit, c < 1e-10; \
+         {thin} near full stick, 1 − c < 1e-10; {} other)",
+        rows.len(),
+        failed - small - thin
+    );
     if solved.is_empty() {
         return format!("{head}; no point solved, so no physical check");
     }
     let phys = solved.iter().filter(|r| r.mu > 0.0).all(|r| {
         r.stick_ok == Some(true)
             && r.slip_ok == Some(true)
-            && r.c.is_some_and(|c| c > 0.0 && c < 1.0)
+            // ν = 1/2 (γ = 0) sticks everywhere: c = 1 exactly.
+            && r.c.is_some_and(|c| c > 0.0 && (c < 1.0 || r.nu == 0.5))
     });
     let mut by_nu: Vec<(f64, f64, f64)> = solved
         .iter()
@@ -698,9 +798,56 @@ fn sweep_summary(rows: &[SweepRow]) -> String {
         .windows(2)
         .all(|p| p[0].0 != p[1].0 || p[1].2 >= p[0].2);
     format!(
-        "{head}; physical checks on the {} solved points (stick, slip, 0 < c < 1): {}; c non-decreasing in μ: {}",
+        "{head}; physical checks on the {} solved points (stick, slip, 0 < c < 1, c = 1 at ν = 1/2): {}; c non-decreasing in μ: {}",
         solved.len(),
         if phys { "all hold" } else { "SOME FAIL" },
         if monotone { "yes" } else { "NO" }
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn positive(v: f64) -> bool {
+        v >= 0.0 && v.is_finite()
+    }
+
+    #[test]
+    fn log_ranges_are_geometric_with_exact_decades() {
+        let v = parse_range("mu", "log:0.01:100:13", ("μ ≥ 0", positive)).unwrap();
+        assert_eq!(v.len(), 13);
+        assert_eq!(
+            (v[0], v[3], v[6], v[9], v[12]),
+            (0.01, 0.1, 1.0, 10.0, 100.0)
+        );
+        // Equal ratios 10^(1/3) to the 12 rounded digits.
+        for w in v.windows(2) {
+            assert!((w[1] / w[0] - 10f64.powf(1.0 / 3.0)).abs() < 1e-10, "{w:?}");
+        }
+        // Descending works too, and one point is START.
+        let d = parse_range("mu", "log:100:1:3", ("μ ≥ 0", positive)).unwrap();
+        assert_eq!(d, vec![100.0, 10.0, 1.0]);
+        assert_eq!(
+            parse_range("mu", "log:0.5:7:1", ("μ ≥ 0", positive)).unwrap(),
+            vec![0.5]
+        );
+    }
+
+    #[test]
+    fn bad_ranges_are_refused() {
+        let r = |s: &str| parse_range("mu", s, ("μ ≥ 0", positive));
+        assert!(matches!(r("log:0:1:3"), Err(CliError::Invalid(_))));
+        assert!(matches!(r("log:1:inf:3"), Err(CliError::Invalid(_))));
+        assert!(matches!(r("log:1:2"), Err(CliError::Usage(_))));
+        assert!(matches!(r("log:1:2:0"), Err(CliError::Invalid(_))));
+        assert!(matches!(r("0:1:3"), Ok(v) if v == vec![0.0, 0.5, 1.0]));
+        assert!(matches!(r("0:0:3"), Ok(v) if v == vec![0.0; 3]));
+        assert!(matches!(r("1e-300:2e-300:3"), Ok(v) if v.len() == 3 && v[1] > 0.0));
+        let nu = |s: &str| parse_range("nu", s, ("(-1, 1/2]", |v| v > -1.0 && v <= 0.5));
+        assert!(
+            matches!(nu("-0.9:0.5:15"), Ok(v) if v.len() == 15 && v[0] == -0.9 && v[1] == -0.8 && v[9] == 0.0 && v[10] == 0.1 && v[14] == 0.5)
+        );
+        assert!(matches!(nu("-1:0.5:3"), Err(CliError::Invalid(_))));
+    }
 }

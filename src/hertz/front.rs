@@ -141,6 +141,186 @@ fn no_convergence(s: String) -> PlanError {
     }
 }
 
+/// The stick radius below which the split solver does not place a root
+/// (it scans to `1e-10` relative of an end; below `c ≈ 1e-9` its discrete
+/// condition is noisy, docs/hertz_asymptotics.md).
+pub const RESOLVED: f64 = 1e-10;
+
+/// The prefactor range of `c ≈ C·exp(−a/μ)` measured in
+/// docs/hertz_asymptotics.md (not derived).
+pub const SMALL_FRICTION_PREFACTOR: (f64, f64) = (4.3, 4.7);
+
+/// A refusal of [`solve_with_limit`]: the error (exit 3 for a numerical
+/// refusal, 2 for bad input) and, when the refusal is one of the physical
+/// limits, which one.
+#[derive(Debug)]
+pub struct Refusal {
+    /// The error, whose text states the limit when there is one.
+    pub error: PlanError,
+    /// The physical limit the point lies in, if the refusal is one.
+    pub limit: Option<Limit>,
+}
+
+/// A physical limit of the Hertz problem that the split solver refuses to
+/// resolve, with its asymptotic values (information only: none of them is
+/// a solution refined to the tolerance).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Limit {
+    /// μ → 0: the stick radius is below [`RESOLVED`]. `c ≈ C·exp(−a/μ)`
+    /// with `a = γ/√(1−γ²)` and `C ∈ [4.3, 4.7]` (measured), and
+    /// `P* = 1 + γμ(1−2/π) + O(μ²)` (derived).
+    SmallFriction {
+        /// `a = γ/√(1−γ²)`.
+        exponent: f64,
+        /// `C·exp(−a/μ)` for the low and high measured `C`.
+        c_asymptotic: (f64, f64),
+        /// `1 + γμ(1−2/π)` (remainder O(μ²), not estimated).
+        compliance_asymptotic: f64,
+        /// The μ at which the asymptotic c reaches [`RESOLVED`] (C = 4.5).
+        mu_resolved: f64,
+    },
+    /// `1 − c` is below [`RESOLVED`]: near-full stick (ν close to 1/2 or
+    /// large μ). As μ → ∞, `1 − c → 1 − c∞(ν)`, heuristically
+    /// `exp(−k·π/artanh γ)` with `k ∈ [1.20, 1.37]` (measured at ν = 0 and
+    /// 0.3, not derived); `P*` lies below the full-stick `artanh(γ)/γ`.
+    ThinSlip {
+        /// `exp(−k·π/artanh γ)` for `k = 1.37` and `k = 1.20`.
+        one_minus_c_infinity_heuristic: (f64, f64),
+        /// The full-stick compliance `artanh(γ)/γ`, an upper bound of P*.
+        compliance_full_stick: f64,
+    },
+    /// A given stick radius beyond `c∞(ν)`, the limit of c as μ → ∞: no
+    /// finite μ has it.
+    BeyondLargeFriction {
+        /// The heuristic `1 − c∞(ν)` range, as in [`Limit::ThinSlip`].
+        one_minus_c_infinity_heuristic: (f64, f64),
+    },
+}
+
+/// `γ = (1−2ν)/(2−2ν)`.
+fn gamma_of(nu: f64) -> f64 {
+    (1.0 - 2.0 * nu) / (2.0 - 2.0 * nu)
+}
+
+/// The heuristic range of `1 − c∞(ν)` (docs/hertz_asymptotics.md).
+fn thin_slip_heuristic(gamma: f64) -> (f64, f64) {
+    let eps0 = gamma.atanh() / PI;
+    ((-1.37 / eps0).exp(), (-1.20 / eps0).exp())
+}
+
+impl Limit {
+    /// The limit a refusal `err` of `(nu, given)` lies in, if any: only
+    /// the split solver's root refusals (and the front's own spurious-root
+    /// refusal) are read, never bad input.
+    pub fn classify(nu: f64, given: Given, err: &PlanError) -> Option<Limit> {
+        let PlanError::Numeric { .. } = err else {
+            return None;
+        };
+        if !(nu > -1.0 && nu < 0.5) {
+            return None;
+        }
+        let text = err.to_string();
+        let gamma = gamma_of(nu);
+        match given {
+            Given::Mu(mu) if mu > 0.0 && mu.is_finite() => {
+                if text.contains("closer to the end 1 ") {
+                    return Some(Limit::ThinSlip {
+                        one_minus_c_infinity_heuristic: thin_slip_heuristic(gamma),
+                        compliance_full_stick: gamma.atanh() / gamma,
+                    });
+                }
+                let a = gamma / (1.0 - gamma * gamma).sqrt();
+                let (lo, hi) = SMALL_FRICTION_PREFACTOR;
+                let c_hi = hi * (-a / mu).exp();
+                // Refusals of roots near 0: the solver's "closer than … to an
+                // end" and the front's spurious free boundary, where the
+                // asymptotic c is at most 1e-8 (the noisy zone starts near
+                // 1e-9, the scan stops at 1e-10).
+                let near_end = text.contains("closer than")
+                    || text.contains("closer to the end 0 ")
+                    || text.contains("noisy")
+                    || text.contains("spurious free boundary");
+                (near_end && c_hi <= 1e-8).then(|| Limit::SmallFriction {
+                    exponent: a,
+                    c_asymptotic: (lo * (-a / mu).exp(), c_hi),
+                    compliance_asymptotic: 1.0 + gamma * mu * (1.0 - FRAC_2_PI),
+                    mu_resolved: a / (4.5 / RESOLVED).ln(),
+                })
+            }
+            Given::C(_) if text.contains("closer to the end inf") => {
+                Some(Limit::BeyondLargeFriction {
+                    one_minus_c_infinity_heuristic: thin_slip_heuristic(gamma),
+                })
+            }
+            _ => None,
+        }
+    }
+
+    /// The name used in the sweep's `limit` column.
+    pub fn kind(&self) -> &'static str {
+        match self {
+            Limit::SmallFriction { .. } => "small_friction",
+            Limit::ThinSlip { .. } => "thin_slip",
+            Limit::BeyondLargeFriction { .. } => "beyond_large_friction",
+        }
+    }
+
+    /// The refusal's text: the physical limit, its asymptotic values, and
+    /// the solver's own words.
+    pub fn message(&self, nu: f64, given: Given, err: &PlanError) -> String {
+        let gamma = gamma_of(nu);
+        let nu = nu + 0.0;
+        let head = match *self {
+            Limit::SmallFriction {
+                exponent,
+                c_asymptotic: (c_lo, c_hi),
+                compliance_asymptotic,
+                mu_resolved,
+            } => {
+                let mu = match given {
+                    Given::Mu(m) => m,
+                    Given::C(_) => f64::NAN,
+                };
+                format!(
+                    "the stick radius is below {RESOLVED:.0e}, which the solver does not resolve: \
+                     (ν, μ) = ({nu}, {mu}) is in the small-friction limit, where \
+                     c ≈ C·exp(−a/μ) with a = γ/√(1−γ²) = {exponent:.4} and C ≈ 4.3–4.7 (measured, not derived), \
+                     so c ≈ {c_lo:.1e}–{c_hi:.1e} (c reaches {RESOLVED:.0e} near μ ≈ {mu_resolved:.3}); \
+                     P* = 1 + γμ(1−2/π) + O(μ²) = {compliance_asymptotic:.8} + O(μ²) (derived; the O(μ²) remainder is not estimated). \
+                     These asymptotic values are not refined to the tolerance, so no answer is given \
+                     (docs/hertz_asymptotics.md)"
+                )
+            }
+            Limit::ThinSlip {
+                one_minus_c_infinity_heuristic: (lo, hi),
+                compliance_full_stick,
+            } => format!(
+                "1 − c is below {RESOLVED:.0e}, which the solver does not resolve: near-full stick \
+                 (ν = {nu}, γ = {gamma:.4}); as μ → ∞ a slip annulus of width 1 − c∞(ν) remains, \
+                 heuristically {lo:.0e}–{hi:.0e} (exp(−k·π/artanh γ), k = 1.20–1.37 measured, not derived), \
+                 and P* < artanh(γ)/γ = {compliance_full_stick:.10} (full stick). No answer is given \
+                 (docs/hertz_asymptotics.md)"
+            ),
+            Limit::BeyondLargeFriction {
+                one_minus_c_infinity_heuristic: (lo, hi),
+            } => {
+                let c = match given {
+                    Given::C(c) => c,
+                    Given::Mu(_) => f64::NAN,
+                };
+                format!(
+                    "no μ the solver reaches (up to about 1e10) gives c = {c} at ν = {nu}: as μ → ∞ the \
+                     stick radius tends to c∞(ν) < 1 (a slip annulus remains; 1 − c∞ heuristically \
+                     {lo:.0e}–{hi:.0e}, not derived), so c is beyond c∞(ν) or within the solver's \
+                     resolution of it (docs/hertz_asymptotics.md)"
+                )
+            }
+        };
+        format!("{head}. The solver: {err}")
+    }
+}
+
 /// `x` as `--set` reads it: its shortest decimal, as an exact rational.
 fn exact(name: &str, x: f64) -> Result<(String, num_rational::BigRational), PlanError> {
     let text = format!("{x}");
@@ -164,8 +344,10 @@ type Sets = Vec<(&'static str, f64)>;
 /// Which file runs for `(ν, given)` and with which parameters, after the
 /// physical ranges are checked (bad input is [`PlanError::Invalid`]).
 fn plan(nu: f64, given: Given) -> Result<(Source, Sets), PlanError> {
-    if !(0.0..=0.5).contains(&nu) {
-        return Err(invalid(format!("Poisson's ratio ν = {nu} not in [0, 1/2]")));
+    if !(nu > -1.0 && nu <= 0.5) {
+        return Err(invalid(format!(
+            "Poisson's ratio ν = {nu} is outside (-1, 1/2]: a stable isotropic solid has -1 < ν ≤ 1/2"
+        )));
     }
     let nu = nu + 0.0;
     match given {
@@ -224,6 +406,28 @@ fn estimate(list: &[crate::plan::split_solve::Estimate], name: &str) -> Result<f
 /// println!("c = {} ± {}", s.c, s.error_estimate);
 /// ```
 pub fn solve(nu: f64, given: Given, opts: &SplitOptions) -> Result<HertzResult, PlanError> {
+    solve_with_limit(nu, given, opts).map_err(|r| r.error)
+}
+
+/// [`solve`], but a refusal at one of the physical limits the solver does
+/// not resolve (see [`Limit`]) comes back as a [`Refusal`] whose error
+/// states the limit and its asymptotic values (for information: they are
+/// not refined to the tolerance, so the refusal stays a failure, exit 3).
+pub fn solve_with_limit(
+    nu: f64,
+    given: Given,
+    opts: &SplitOptions,
+) -> Result<HertzResult, Refusal> {
+    solve_inner(nu, given, opts).map_err(|error| match Limit::classify(nu, given, &error) {
+        Some(limit) => Refusal {
+            error: no_convergence(limit.message(nu, given, &error)),
+            limit: Some(limit),
+        },
+        None => Refusal { error, limit: None },
+    })
+}
+
+fn solve_inner(nu: f64, given: Given, opts: &SplitOptions) -> Result<HertzResult, PlanError> {
     if !(opts.tol > 0.0 && opts.tol.is_finite()) {
         return Err(invalid(format!(
             "--tol {}: the tolerance must be a finite number > 0, e.g. 1e-10",
