@@ -394,6 +394,37 @@ fn coprime_mod_p(entries: &[&QPoly]) -> Option<(u64, usize)> {
     None
 }
 
+/// Checks `A·B = c·I` exactly (integer products with cleared
+/// denominators) when `shaped`, and records it in `cert`.
+fn push_product_check(
+    cert: &mut Certificate,
+    a: &Matrix<QxRing>,
+    c: &QPoly,
+    b: &Matrix<QxRing>,
+    shaped: bool,
+    failure: &str,
+) -> bool {
+    let n = a.rows();
+    let mut ci = Matrix::zeros(a.ring.clone(), n, n);
+    for i in 0..n {
+        ci.set(i, i, c.clone());
+    }
+    let prod = shaped && ClearedQx.product_equals(&[a, b], &ci);
+    cert.push(
+        "A·B = c·I",
+        prod,
+        if prod {
+            format!(
+                "holds exactly for a polynomial B and c ≠ 0 of degree {}",
+                c.degree().unwrap_or(0)
+            )
+        } else {
+            failure.to_string()
+        },
+    );
+    prod
+}
+
 /// Certifies that a square A over Q[x] has invariant factors 1, …, 1, f
 /// with `f = c/lc(c)`, from `A·B = c·I` alone (no transforms), and returns
 /// f. Three exact checks:
@@ -415,23 +446,7 @@ pub fn certify_last_factor(
     let n = a.rows();
     let mut cert = Certificate { checks: Vec::new() };
     let square = n == a.cols() && b.rows() == n && b.cols() == n && !c.is_zero();
-    let mut ci = Matrix::zeros(r.clone(), n, n);
-    for i in 0..n {
-        ci.set(i, i, c.clone());
-    }
-    let prod = square && ClearedQx.product_equals(&[a, b], &ci);
-    cert.push(
-        "A·B = c·I",
-        prod,
-        if prod {
-            format!(
-                "holds exactly for a polynomial B and c ≠ 0 of degree {}",
-                c.degree().unwrap_or(0)
-            )
-        } else {
-            "fails (or c = 0)".to_string()
-        },
-    );
+    let prod = push_product_check(&mut cert, a, c, b, square, "fails (or c = 0)");
     // Entries of B (nonzero), as integer numerators.
     let entries: Vec<&QPoly> = (0..b.rows())
         .flat_map(|i| (0..b.cols()).map(move |j| (i, j)))
@@ -567,22 +582,13 @@ pub fn certify_two_factors(
     let n = a.rows();
     let mut cert = Certificate { checks: Vec::new() };
     let square = n >= 3 && n == a.cols() && b.rows() == n && b.cols() == n && !c.is_zero();
-    let mut ci = Matrix::zeros(r.clone(), n, n);
-    for i in 0..n {
-        ci.set(i, i, c.clone());
-    }
-    let prod = square && ClearedQx.product_equals(&[a, b], &ci);
-    cert.push(
-        "A·B = c·I",
-        prod,
-        if prod {
-            format!(
-                "holds exactly for a polynomial B and c ≠ 0 of degree {}",
-                c.degree().unwrap_or(0)
-            )
-        } else {
-            "fails (or c = 0, or A is not square and at least 3×3)".to_string()
-        },
+    let prod = push_product_check(
+        &mut cert,
+        a,
+        c,
+        b,
+        square,
+        "fails (or c = 0, or A is not square and at least 3×3)",
     );
     if !prod {
         return (cert, Vec::new());
