@@ -76,7 +76,7 @@ enum HertzSub {
         #[arg(long, value_name = "START:END:COUNT", allow_hyphen_values = true)]
         mu: String,
         /// Target accuracy of each solve (finite, > 0).
-        #[arg(long, default_value = "1e-8", allow_negative_numbers = true)]
+        #[arg(long, default_value = "1e-10", allow_negative_numbers = true)]
         tol: f64,
         /// Print JSON lines instead of CSV.
         #[arg(long)]
