@@ -1,18 +1,11 @@
 //! Spence's published (μ, c) pairs (seed Table 1, column c1) through the
 //! `hertz` front (the language files and the split-domain solver), the
 //! physical checks along a small sweep, and monotonicity of c(μ).
+mod common;
+
+use common::SPENCE;
 use lambdamat::hertz::front::{Given, HertzResult, solve};
 use lambdamat::plan::SplitOptions;
-
-const SPENCE: [(f64, f64, f64); 7] = [
-    (0.0, 0.2063, 0.24),
-    (0.0, 0.2986, 0.50),
-    (0.0, 0.4013, 0.70),
-    (0.0, 0.4862, 0.80),
-    (0.25, 0.1387, 0.30),
-    (0.25, 0.1801, 0.50),
-    (0.25, 0.2843, 0.80),
-];
 
 fn front(nu: f64, given: Given, tol: f64) -> HertzResult {
     solve(nu, given, &SplitOptions { tol, max_level: 7 }).expect("the front solves")

@@ -7,21 +7,11 @@
 //! bit.
 mod common;
 
+use common::SPENCE;
 use common::cli::{json, lambdamat};
 use lambdamat::hertz::front::{Given, HertzResult, profile_points, solve};
 use lambdamat::hertz::{HertzOptions, HertzSolution, solve_given_c, solve_given_mu};
 use lambdamat::plan::SplitOptions;
-
-/// Spence's (ν, μ, c) rows (seed Table 1, column c1).
-const SPENCE: [(f64, f64, f64); 7] = [
-    (0.0, 0.2063, 0.24),
-    (0.0, 0.2986, 0.50),
-    (0.0, 0.4013, 0.70),
-    (0.0, 0.4862, 0.80),
-    (0.25, 0.1387, 0.30),
-    (0.25, 0.1801, 0.50),
-    (0.25, 0.2843, 0.80),
-];
 
 fn front(nu: f64, given: Given) -> HertzResult {
     solve(nu, given, &SplitOptions::default()).expect("the front solves")

@@ -203,7 +203,9 @@ fn system_code(
     Ok((sys, code))
 }
 
-fn header(out: &mut String, prog: &Program, sys: &CompiledSystem, from: &Provenance) {
+/// The header's first two lines, shared by both generators: what the file
+/// solves and how to regenerate it.
+pub(crate) fn provenance_lines(out: &mut String, from: &Provenance) {
     let _ = writeln!(
         out,
         "//! A solver for `{}`, written by lambdamat {} (`lambdamat codegen`).",
@@ -211,6 +213,10 @@ fn header(out: &mut String, prog: &Program, sys: &CompiledSystem, from: &Provena
         env!("CARGO_PKG_VERSION")
     );
     let _ = writeln!(out, "//! Do not edit: regenerate with `{}`.", from.command);
+}
+
+fn header(out: &mut String, prog: &Program, sys: &CompiledSystem, from: &Provenance) {
+    provenance_lines(out, from);
     out.push_str(
         "//!\n\
          //! Kernels, multipliers, right sides and output weights are the Rust\n\

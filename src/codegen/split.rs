@@ -50,13 +50,7 @@ pub fn split_solver_source(prog: &Program, from: &Provenance) -> Result<String, 
 }
 
 fn header(out: &mut String, prog: &Program, from: &Provenance) {
-    let _ = writeln!(
-        out,
-        "//! A solver for `{}`, written by lambdamat {} (`lambdamat codegen`).",
-        from.source,
-        env!("CARGO_PKG_VERSION")
-    );
-    let _ = writeln!(out, "//! Do not edit: regenerate with `{}`.", from.command);
+    super::provenance_lines(out, from);
     out.push_str(
         "//!\n\
          //! A split-domain (contact) problem. Kernels, right sides and output\n\
