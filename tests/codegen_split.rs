@@ -18,6 +18,10 @@ use lambdamat::plan::{SplitOptions, SplitReport, solve_split, solve_split_input}
 #[path = "../examples/hertz_solver.rs"]
 mod hertz_solver;
 
+#[allow(dead_code)]
+#[path = "../examples/punch_torsion_solver.rs"]
+mod punch_torsion_solver;
+
 #[test]
 fn generated_hertz_solver_is_up_to_date() {
     let dir = tempfile::tempdir().expect("temp dir");
@@ -98,6 +102,23 @@ fn generated_hertz_solver_matches_the_in_process_solve_bit_for_bit() {
     let (p, ps) = (generated.outputs[0].value, generated.outputs[1].value);
     assert!((p - ps).abs() <= 1e-10, "P = {p}, P_shear = {ps}");
     assert!(generated.coefficients[0].value.abs() <= 1e-10);
+}
+
+#[test]
+fn generated_torsion_solver_matches_the_in_process_solve_bit_for_bit() {
+    // The second contact problem (tests/contact_torsion.rs checks its
+    // closed form): a different operator, right side and relation.
+    let text = std::fs::read_to_string("examples/punch_torsion.lmx").expect("source");
+    let prog = parse_program(&text, "examples/punch_torsion.lmx").expect("parses");
+    let opts = SplitOptions {
+        tol: 1e-10,
+        ..SplitOptions::default()
+    };
+    let here = solve_split(&prog, &opts).expect("in-process solve");
+    let input = punch_torsion_solver::input().expect("generated input is consistent");
+    let generated = solve_split_input(input, &opts).expect("generated solver solves");
+    assert!(generated.converged, "tol 1e-10 reached");
+    assert_identical(&generated, &here);
 }
 
 #[test]

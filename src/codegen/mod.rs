@@ -761,6 +761,10 @@ impl Names {
                 }
             })
             .collect();
+        // One underscore per run of other characters (`__` is not snake case).
+        while base.contains("__") {
+            base = base.replace("__", "_");
+        }
         if base.is_empty() || base.starts_with(|c: char| c.is_ascii_digit()) {
             base.insert(0, 'f');
         }

@@ -155,9 +155,10 @@ impl Fns {
                 format!("slot_{}", self.slots.get(*i).map_or("", String::as_str)),
                 "Slot value".to_string(),
             ),
-            _ if !role.starts_with("real_") && !uses_var(e) && !e.uses_x() => {
-                (format!("const_{text}"), "A constant".to_string())
-            }
+            _ if !role.starts_with("real_") && !uses_var(e) && !e.uses_x() => (
+                format!("const_{}", text.replace('-', "minus_")),
+                "A constant".to_string(),
+            ),
             _ => (role.to_string(), what.to_string()),
         };
         let f = self.names.fresh(&role);
