@@ -153,11 +153,11 @@ pub struct SolveFlags {
     /// coupled (block system), ordered (exact elimination) or commutative (the seed's single equation, a model).
     #[arg(long, default_value = "ordered", value_parser = ["coupled", "ordered", "commutative"])]
     pub method: String,
-    /// Refine until two successive answers agree to this (relative; finite, > 0).
+    /// Refine until the error estimate, from successive answers, is below this (finite, > 0).
     #[arg(long, default_value = "1e-10", allow_negative_numbers = true)]
     pub tol: f64,
-    /// Highest refinement level tried (at most 12).
-    #[arg(long, default_value_t = 7, allow_negative_numbers = true)]
+    /// Highest refinement level tried (at most 14).
+    #[arg(long, default_value_t = 8, allow_negative_numbers = true)]
     pub max_level: usize,
     /// Print one JSON object instead of text.
     #[arg(long)]

@@ -47,7 +47,7 @@ pub const NO_SHEAR: Source = (
 
 /// The highest refinement level tried by default: `lambdamat solve`'s
 /// default `--max-level`, so the two commands climb the same ladder.
-pub const DEFAULT_MAX_LEVEL: usize = 7;
+pub const DEFAULT_MAX_LEVEL: usize = 8;
 
 /// Which of c and μ is given.
 #[derive(Debug, Clone, Copy, PartialEq)]

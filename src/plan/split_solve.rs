@@ -93,7 +93,7 @@ struct Level {
 /// Tolerance of the root iterations: a twentieth of the requested
 /// accuracy, added to the estimate.
 fn root_tolerance(tol: f64) -> f64 {
-    (0.05 * tol).clamp(1e-15, 1e-9)
+    (0.005 * tol).clamp(1e-15, 1e-9)
 }
 
 /// A solved split-domain problem with its last discretisation, for
