@@ -145,7 +145,8 @@ fn small_mu_fields_match_the_inner_solution() {
                 "ν={nu} μ={mu} c={c:.3e}: q/(μp(c)) at x/c={r}: {:.5} vs {inner:.5}",
                 qv / (mu * pc)
             );
-            assert!(err.abs() <= 2.0 * mu, "ν={nu} x/c={r}: {err}");
+            // Measured |err| ≤ 0.11μ (ν = 0) and 0.16μ (ν = −0.9): O(μ).
+            assert!(err.abs() <= 0.3 * mu, "ν={nu} x/c={r}: {err}");
         }
         let g = gamma(nuf);
         let s0 = -mu * g * (1.0 + g * (2.0 * std::f64::consts::LN_2 - 1.0) * mu);
@@ -154,15 +155,16 @@ fn small_mu_fields_match_the_inner_solution() {
         let p2 = f.value(p, x2, Approach::Below).expect("p");
         let slope = (p1 / p2).ln() / (x1 / x2).ln();
         eprintln!("ν={nu} μ={mu}: d ln p/d ln x on [1e-4, 1e-2] = {slope:.5}, s₀ = {s0:.5}");
-        assert!((slope - s0).abs() <= 0.1 * s0.abs(), "{slope} vs {s0}");
+        // Measured within 0.1 % (the O(x²) part of p_fs is below 1e-4 here).
+        assert!((slope - s0).abs() <= 0.01 * s0.abs(), "{slope} vs {s0}");
     }
 }
 
 #[test]
 fn stick_radii_below_1e_9_are_found_through_the_conditions_noise() {
     // Below c ≈ 1e-9 the discrete condition B(c) carries rounding noise of
-    // about 4e-16/c (docs/hertz_asymptotics.md); the scan now reaches
-    // c ≈ 6.9e-13 and the pole test widens its probe past the noise. These
+    // about 4e-16/c (docs/hertz_asymptotics.md); the pole test now widens
+    // its probe past that noise (it probed only at s ∓ 1e-3 before). These
     // points were refused before (ν = 0, μ = 0.025: "changes sign across a
     // pole near 4.459e-10"). The answers agree with the derived asymptotics
     // (independent of the solver) and with P* = 1 + γμ(1 − 2/π) + O(μ²).

@@ -146,10 +146,11 @@ fn no_convergence(s: String) -> PlanError {
 pub const RESOLVED: f64 = 1e-10;
 
 /// The stick radius below which the split solver does not place a root:
-/// it scans to `e^(−28) ≈ 6.9e-13` of the lower end (below `c ≈ 1e-9` its
-/// discrete condition carries rounding noise of about `4e-16/c`, which
-/// moves the root by about `3e-14` absolute; docs/hertz_asymptotics.md).
-pub const RESOLVED_STICK: f64 = 6.9e-13;
+/// it scans to `1e-10` of the lower end (below `c ≈ 1e-9` its discrete
+/// condition carries rounding noise of about `4e-16/c`, and below about
+/// `1e-10` that noise breaks the Coulomb bound beside `c`;
+/// docs/hertz_asymptotics.md).
+pub const RESOLVED_STICK: f64 = 1e-10;
 
 /// The small-μ stick radius derived in docs/hertz_asymptotics.md:
 /// `(a, C₀)` of `c = C₀·exp(−a/μ)·(1 + O(μ))`, `a = −ln(1−γ²)/γ`,
@@ -185,7 +186,8 @@ pub struct Refusal {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
 pub enum Limit {
-    /// μ → 0: the stick radius is below [`RESOLVED_STICK`].
+    /// μ → 0: the stick radius is below [`RESOLVED_STICK`], or below about
+    /// `1e-9` where the shear-jump check refuses the noisy stick shear.
     /// `c = C₀·exp(−a/μ)·(1 + O(μ))` with `a = −ln(1−γ²)/γ` and
     /// `C₀ = 4(1−γ²)^(1−2 ln 2)`, and `P* = 1 + γμ(1−2/π) + O(μ²)` (both
     /// derived).
@@ -257,7 +259,7 @@ impl Limit {
                 // Refusals of roots near 0: the solver's "closer than … to an
                 // end" and the front's spurious free boundary, where the
                 // asymptotic c is at most 1e-8 (the noisy zone starts near
-                // 1e-9, the scan stops at 6.9e-13).
+                // 1e-9, the scan stops at 1e-10).
                 let near_end = text.contains("closer than")
                     || text.contains("closer to the end 0 ")
                     || text.contains("noisy")
@@ -304,10 +306,10 @@ impl Limit {
                     Given::C(_) => f64::NAN,
                 };
                 format!(
-                    "the stick radius is below {RESOLVED_STICK:.1e}, which the solver does not resolve: \
+                    "the stick radius is too small for the solver (it scans to {RESOLVED_STICK:.0e}; below about 1e-9 its condition and the stick shear beside c carry rounding noise of about 4e-16/c and up to 5e-14/c, and the shear-jump check refuses): \
                      (ν, μ) = ({nu}, {mu}) is in the small-friction limit, where \
                      c = C₀·exp(−a/μ)·(1 + O(μ)) with a = −ln(1−γ²)/γ = {exponent:.4} and C₀ = 4(1−γ²)^(1−2 ln 2) (derived), \
-                     so c ≈ {c_lo:.1e}–{c_hi:.1e} (the range is the measured O(μ) term; c reaches {RESOLVED_STICK:.1e} near μ ≈ {mu_resolved:.3}); \
+                     so c ≈ {c_lo:.2e}–{c_hi:.2e} (the range is the measured O(μ) term; c reaches {RESOLVED_STICK:.0e} near μ ≈ {mu_resolved:.3}); \
                      P* = 1 + γμ(1−2/π) + O(μ²) = {compliance_asymptotic:.8} + O(μ²) (derived; the O(μ²) remainder is not estimated). \
                      These asymptotic values are not refined to the tolerance, so no answer is given \
                      (docs/hertz_asymptotics.md)"

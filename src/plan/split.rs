@@ -836,26 +836,8 @@ impl SplitProblem {
     /// basis: `(x, |u(x)|, |a·w(x)|)` with `|u| > 1.01·|a·w| + 1e-9·max|a·w|`,
     /// or `None`. A root of the conditions whose solution violates it is
     /// not the physical free boundary (e.g. the roots of the Hertz
-    /// condition that accumulate at `c → 1`). A singular term whose
-    /// coefficient a condition fixes is taken at that value: what is left
-    /// of it is the root's residual, not the solution (at a Hertz stick
-    /// radius `c ≲ 1e-10` that residual is the condition's rounding noise,
-    /// about `4e-16/c`, and the term `B·x/√(c²−x²)` would magnify it at
-    /// the nodes nearest `c`).
+    /// condition that accumulate at `c → 1`).
     pub fn relation_violation(&self, d: &Discrete) -> Option<(String, f64, f64, f64)> {
-        let dim = d.offsets[d.offsets.len() - 1];
-        let residual_terms: Vec<(usize, f64)> = self
-            .contact
-            .conditions
-            .iter()
-            .filter_map(|cond| {
-                let ti = d
-                    .terms
-                    .iter()
-                    .position(|t| t.coefficient == cond.coefficient)?;
-                Some((ti, d.solution[dim + ti] - cond.value.eval(&d.vars, 0.0)))
-            })
-            .collect();
         let mut worst: Option<(String, f64, f64, f64)> = None;
         for r in &self.contact.relations {
             let coeff = r.coeff.eval(&d.vars, 0.0);
@@ -869,15 +851,7 @@ impl SplitProblem {
             let vals: Vec<(f64, f64, f64)> = xs
                 .iter()
                 .map(|&x| {
-                    let mut u = self.value(d, r.unknown, x);
-                    for &(ti, res) in &residual_terms {
-                        let t = &d.terms[ti];
-                        let (lo, hi) = t.basis.support();
-                        if t.unknown == r.unknown && x > lo && x < hi {
-                            u -= res * t.basis.eval(&t.phi, x);
-                        }
-                    }
-                    let u = u.abs();
+                    let u = self.value(d, r.unknown, x).abs();
                     let (lo, hi) = bw.support();
                     let w = if x >= lo && x <= hi {
                         (coeff * bw.eval(self.coefs(d, r.other), x)).abs()

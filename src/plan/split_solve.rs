@@ -364,16 +364,19 @@ impl ScalarMap {
 /// was not measured further).
 const S_LIMIT: f64 = 23.0;
 
-/// How far the root is sought toward the lower end: `s ≥ -28`, a root at
-/// least `6.9e-13` (relative) from the lower end. Measured on the Hertz
+/// How far the root is sought toward the lower end: `s ≥ -23`, a root at
+/// least `1e-10` (relative) from the lower end. Measured on the Hertz
 /// problem: below a stick radius of about `1e-9` the discrete condition
 /// `B(c)` carries rounding noise of about `4e-16/c` (the stick zone's `p`
 /// is fixed by `O(c)` variations of `O(1)` rows of E1; see
 /// docs/hertz_asymptotics.md). Its slope is `c·dB/dc ≈ 0.012` there, so
-/// the noise moves the root by about `3e-14` absolute at any such `c`:
-/// harmless for an absolute tolerance, but a 5 % relative error at
-/// `c = 1e-12`. [`check_not_pole`] widens its probe to see past it.
-const S_LIMIT_LO: f64 = 28.0;
+/// the noise moves the root by only about `3e-14` absolute, and
+/// [`check_not_pole`] widens its probe to see past it. Further down (tried
+/// to `s = -28`, `c ≈ 6.9e-13`) the roots are found where the asymptotics
+/// put them, but the same noise, magnified about 100-fold in the stick
+/// shear at the nodes nearest `c` (about `1e-14/c` to `5e-14/c`), breaks
+/// the Coulomb bound there: they would be refused anyway.
+const S_LIMIT_LO: f64 = 23.0;
 
 /// The largest tolerance of the root in `s`: the distance of a root to the
 /// nearer end of a finite range is resolved to this relative accuracy even
