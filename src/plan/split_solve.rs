@@ -613,7 +613,7 @@ where
     let mut h = 1e-6;
     for _ in 0..40 {
         for s in [s0 - h, s0 + h] {
-            if s >= -S_LIMIT_LO && s <= S_LIMIT && map.inside(s) {
+            if (-S_LIMIT_LO..=S_LIMIT).contains(&s) && map.inside(s) {
                 let v = f(s)?;
                 if v.signum() != f0.signum() || v == 0.0 {
                     return Ok(if s < s0 {
