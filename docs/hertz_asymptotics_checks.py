@@ -1,5 +1,5 @@
 """Numerical checks of the intermediate steps of the small-μ derivation in
-docs/hertz_asymptotics.md (parts a, b, c there). Needs mpmath only:
+docs/hertz_asymptotics.md (parts a to d there). Needs mpmath only:
 
     python3 docs/hertz_asymptotics_checks.py
 
@@ -41,3 +41,19 @@ for s in [mpf("-1e-3"), mpf("-1e-4")]:
           f" (-> ln2 = {mp.nstr(log(2), 10)});"
           f"  (B(1+s/2,1/2)/2 - 1)/s = {mp.nstr((B(1 + s / 2, 0.5) / 2 - 1) / s, 10)}"
           f" (-> ln2-1 = {mp.nstr(log(2) - 1, 10)})")
+
+print("(d) step 4, the lemma: v = (2/pi)/(x0^2 - xi^2) solves int_0^tau v/sqrt(tau^2-xi^2) dxi")
+print("    = 1/(x0 sqrt(x0^2-tau^2)) for tau < x0 and = 0 (principal value) for tau > x0")
+x0 = mpf("0.7")
+for tau in [mpf("0.3"), mpf("0.6")]:
+    v = quad(lambda ph: (2 / pi) / (x0 ** 2 - (tau * mp.sin(ph)) ** 2), [0, pi / 2])
+    print(f"  tau={float(tau)}: {mp.nstr(v, 15)}  {mp.nstr(1 / (x0 * sqrt(x0 ** 2 - tau ** 2)), 15)}")
+for tau in [mpf("0.9"), mpf("1.5")]:
+    f = lambda xi: 1 / ((x0 ** 2 - xi ** 2) * sqrt(tau ** 2 - xi ** 2))
+    w = min(x0, tau - x0)  # pair x0 - u with x0 + u: the principal value
+    pv = quad(lambda u: f(x0 - u) + f(x0 + u), [0, w])
+    if x0 - w > 0:
+        pv += quad(f, [0, x0 - w])
+    if x0 + w < tau:
+        pv += quad(f, [x0 + w, tau])
+    print(f"  tau={float(tau)}: PV = {mp.nstr(pv, 6)}")
