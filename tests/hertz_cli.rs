@@ -188,7 +188,8 @@ fn negative_poisson_ratio_solves_and_the_physical_bound_is_stated() {
 
 #[test]
 fn the_small_friction_limit_is_refused_with_its_asymptotics() {
-    // (ν, μ) = (0, 0.01): c ≈ 4.5·exp(−√3/0.01) ≈ 4e-25, far below the
+    // (ν, μ) = (0, 0.01): c = C₀·exp(−a/μ)(1 + O(μ)) with a = −ln(3/4)/(1/2)
+    // and C₀ = 4(3/4)^(1−2 ln 2) (derived): 4.6e-25, far below the
     // resolved 1e-10. Exit 3 (a refusal), the limit and the asymptotic
     // values in the message; with --json also one object with `limit`.
     lambdamat()
@@ -196,7 +197,8 @@ fn the_small_friction_limit_is_refused_with_its_asymptotics() {
         .assert()
         .code(3)
         .stderr(predicate::str::contains("small-friction limit"))
-        .stderr(predicate::str::contains("c ≈ 3.6e-25–4.0e-25"))
+        .stderr(predicate::str::contains("c ≈ 4.56e-25–4.58e-25"))
+        .stderr(predicate::str::contains("a = −ln(1−γ²)/γ = 0.5754"))
         .stderr(predicate::str::contains(
             "P* = 1 + γμ(1−2/π) + O(μ²) = 1.00181690",
         ))
@@ -211,7 +213,7 @@ fn the_small_friction_limit_is_refused_with_its_asymptotics() {
     assert!(
         v["error"]
             .as_str()
-            .is_some_and(|e| e.contains("below 1e-10"))
+            .is_some_and(|e| e.contains("too small for the solver"))
     );
     let p = v["limit"]["compliance_asymptotic"]
         .as_f64()

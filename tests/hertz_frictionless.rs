@@ -117,8 +117,8 @@ fn bad_parameters_are_errors_not_results() {
     else {
         panic!("not the small-friction limit: {:?}", r.limit);
     };
-    // a = γ/√(1−γ²) with γ = 1/2 is 1/√3; P* = 1 + μ(1−2/π)/2.
-    assert!((exponent - 1.0 / 3f64.sqrt()).abs() < 1e-15);
+    // a = −ln(1−γ²)/γ with γ = 1/2 is 2 ln(4/3); P* = 1 + μ(1−2/π)/2.
+    assert!((exponent - 2.0 * (4.0f64 / 3.0).ln()).abs() < 1e-15);
     assert!(lo < hi && hi < 1e-24 && lo > 1e-26, "{lo:e} {hi:e}");
     let p = 1.0 + 0.005 * (1.0 - 2.0 / std::f64::consts::PI);
     assert!((compliance_asymptotic - p).abs() < 1e-15);

@@ -141,14 +141,33 @@ fn no_convergence(s: String) -> PlanError {
     }
 }
 
-/// The stick radius below which the split solver does not place a root
-/// (it scans to `1e-10` relative of an end; below `c ≈ 1e-9` its discrete
-/// condition is noisy, docs/hertz_asymptotics.md).
+/// The distance `1 − c` below which the split solver does not place a
+/// root (it scans to `1e-10` relative of the upper end).
 pub const RESOLVED: f64 = 1e-10;
 
-/// The prefactor range of `c ≈ C·exp(−a/μ)` measured in
-/// docs/hertz_asymptotics.md (not derived).
-pub const SMALL_FRICTION_PREFACTOR: (f64, f64) = (4.3, 4.7);
+/// The stick radius below which the split solver does not place a root:
+/// it scans to `1e-10` of the lower end (below `c ≈ 1e-9` its discrete
+/// condition carries rounding noise of about `4e-16/c`, and below about
+/// `1e-10` that noise breaks the Coulomb bound beside `c`;
+/// docs/hertz_asymptotics.md).
+pub const RESOLVED_STICK: f64 = 1e-10;
+
+/// The small-μ stick radius derived in docs/hertz_asymptotics.md:
+/// `(a, C₀)` of `c = C₀·exp(−a/μ)·(1 + O(μ))`, `a = −ln(1−γ²)/γ`,
+/// `C₀ = 4(1−γ²)^(1−2 ln 2)`.
+pub fn small_friction_asymptotics(gamma: f64) -> (f64, f64) {
+    let g2 = gamma * gamma;
+    (
+        -(1.0 - g2).ln() / gamma,
+        4.0 * (1.0 - g2).powf(1.0 - 2.0 * std::f64::consts::LN_2),
+    )
+}
+
+/// The measured range of the `O(μ)` correction of the small-μ stick
+/// radius, as a multiple of `γμ`: `ln(c/(C₀e^(−a/μ)))/(γμ)` lies in
+/// `[−1.32, −1.0]` for ν ∈ [−0.9, 0.4] (docs/hertz_asymptotics.md); the
+/// range given is that with a margin.
+pub const SMALL_FRICTION_CORRECTION: (f64, f64) = (-1.5, -0.9);
 
 /// A refusal of [`solve_with_limit`]: the error (exit 3 for a numerical
 /// refusal, 2 for bad input) and, when the refusal is one of the physical
@@ -167,17 +186,20 @@ pub struct Refusal {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
 pub enum Limit {
-    /// μ → 0: the stick radius is below [`RESOLVED`]. `c ≈ C·exp(−a/μ)`
-    /// with `a = γ/√(1−γ²)` and `C ∈ [4.3, 4.7]` (measured), and
-    /// `P* = 1 + γμ(1−2/π) + O(μ²)` (derived).
+    /// μ → 0: the stick radius is below [`RESOLVED_STICK`], or below about
+    /// `1e-9` where the shear-jump check refuses the noisy stick shear.
+    /// `c = C₀·exp(−a/μ)·(1 + O(μ))` with `a = −ln(1−γ²)/γ` and
+    /// `C₀ = 4(1−γ²)^(1−2 ln 2)`, and `P* = 1 + γμ(1−2/π) + O(μ²)` (both
+    /// derived).
     SmallFriction {
-        /// `a = γ/√(1−γ²)`.
+        /// `a = −ln(1−γ²)/γ`.
         exponent: f64,
-        /// `C·exp(−a/μ)` for the low and high measured `C`.
+        /// `C₀·exp(−a/μ + kγμ)` for `k` at the ends of
+        /// [`SMALL_FRICTION_CORRECTION`] (the measured `O(μ)` term).
         c_asymptotic: (f64, f64),
         /// `1 + γμ(1−2/π)` (remainder O(μ²), not estimated).
         compliance_asymptotic: f64,
-        /// The μ at which the asymptotic c reaches [`RESOLVED`] (C = 4.5).
+        /// The μ at which `C₀·exp(−a/μ)` reaches [`RESOLVED_STICK`].
         mu_resolved: f64,
     },
     /// `1 − c` is below [`RESOLVED`]: near-full stick (ν close to 1/2 or
@@ -230,9 +252,10 @@ impl Limit {
                         compliance_full_stick: gamma.atanh() / gamma,
                     });
                 }
-                let a = gamma / (1.0 - gamma * gamma).sqrt();
-                let (lo, hi) = SMALL_FRICTION_PREFACTOR;
-                let c_hi = hi * (-a / mu).exp();
+                let (a, c0) = small_friction_asymptotics(gamma);
+                let (klo, khi) = SMALL_FRICTION_CORRECTION;
+                let c_at = |k: f64| c0 * (-a / mu + k * gamma * mu).exp();
+                let c_hi = c_at(khi);
                 // Refusals of roots near 0: the solver's "closer than … to an
                 // end" and the front's spurious free boundary, where the
                 // asymptotic c is at most 1e-8 (the noisy zone starts near
@@ -243,9 +266,9 @@ impl Limit {
                     || text.contains("spurious free boundary");
                 (near_end && c_hi <= 1e-8).then(|| Limit::SmallFriction {
                     exponent: a,
-                    c_asymptotic: (lo * (-a / mu).exp(), c_hi),
+                    c_asymptotic: (c_at(klo), c_hi),
                     compliance_asymptotic: 1.0 + gamma * mu * (1.0 - FRAC_2_PI),
-                    mu_resolved: a / (4.5 / RESOLVED).ln(),
+                    mu_resolved: a / (c0 / RESOLVED_STICK).ln(),
                 })
             }
             Given::C(_) if text.contains("closer to the end inf") => {
@@ -283,10 +306,10 @@ impl Limit {
                     Given::C(_) => f64::NAN,
                 };
                 format!(
-                    "the stick radius is below {RESOLVED:.0e}, which the solver does not resolve: \
+                    "the stick radius is too small for the solver (it scans to {RESOLVED_STICK:.0e}; below about 1e-9 its condition and the stick shear beside c carry rounding noise of about 4e-16/c and up to 5e-14/c, and the shear-jump check refuses): \
                      (ν, μ) = ({nu}, {mu}) is in the small-friction limit, where \
-                     c ≈ C·exp(−a/μ) with a = γ/√(1−γ²) = {exponent:.4} and C ≈ 4.3–4.7 (measured, not derived), \
-                     so c ≈ {c_lo:.1e}–{c_hi:.1e} (c reaches {RESOLVED:.0e} near μ ≈ {mu_resolved:.3}); \
+                     c = C₀·exp(−a/μ)·(1 + O(μ)) with a = −ln(1−γ²)/γ = {exponent:.4} and C₀ = 4(1−γ²)^(1−2 ln 2) (derived), \
+                     so c ≈ {c_lo:.2e}–{c_hi:.2e} (the range is the measured O(μ) term; c reaches {RESOLVED_STICK:.0e} near μ ≈ {mu_resolved:.3}); \
                      P* = 1 + γμ(1−2/π) + O(μ²) = {compliance_asymptotic:.8} + O(μ²) (derived; the O(μ²) remainder is not estimated). \
                      These asymptotic values are not refined to the tolerance, so no answer is given \
                      (docs/hertz_asymptotics.md)"

@@ -416,18 +416,31 @@ impl ScalarMap {
     }
 }
 
-/// How far the root is sought toward an end in the variable `s`:
-/// `|s| ≤ 23`, a root at least `1e-10` (relative) from the ends of a
-/// finite range. Measured on the Hertz problem: below a stick radius of
-/// about `1e-9` the discrete condition is noisy (amplitude about
-/// `1e-20/c`, measured 2e-7 at `c = 2e-8` and 1e-3 at `c = 1e-12`), so a
-/// root closer to an end is refused rather than returned inaccurate.
+/// How far the root is sought toward the upper end in the variable `s`:
+/// `s ≤ 23`, a root at least `1e-10` (relative) from the upper end of a
+/// finite range (for the Hertz problem `1 − c ≥ 1e-10`; closer to 1 the
+/// mesh floor of `Mesh::graded_to_scale`, `1e3·ε`, is near and that end
+/// was not measured further).
 const S_LIMIT: f64 = 23.0;
+
+/// How far the root is sought toward the lower end: `s ≥ -23`, a root at
+/// least `1e-10` (relative) from the lower end. Measured on the Hertz
+/// problem: below a stick radius of about `1e-9` the discrete condition
+/// `B(c)` carries rounding noise of about `4e-16/c` (the stick zone's `p`
+/// is fixed by `O(c)` variations of `O(1)` rows of E1; see
+/// docs/hertz_asymptotics.md). Its slope is `c·dB/dc ≈ 0.012` there, so
+/// the noise moves the root by only about `3e-14` absolute, and
+/// [`check_not_pole`] widens its probe to see past it. Further down (tried
+/// to `s = -28`, `c ≈ 6.9e-13`) the roots are found where the asymptotics
+/// put them, but the same noise, magnified about 100-fold in the stick
+/// shear at the nodes nearest `c` (about `1e-14/c` to `5e-14/c`), breaks
+/// the Coulomb bound there: they would be refused anyway.
+const S_LIMIT_LO: f64 = 23.0;
 
 /// The largest tolerance of the root in `s`: the distance of a root to the
 /// nearer end of a finite range is resolved to this relative accuracy even
 /// where the absolute tolerance in `x` asks for less. Below it the discrete
-/// condition's own noise (see [`S_LIMIT`]) is reached near the ends:
+/// condition's own noise (see [`S_LIMIT_LO`]) is reached near the ends:
 /// measured on the Hertz problem at `c = 2.06e-8` (μ = 0.03) the root moves
 /// by about `1e-6` in `s` between neighbouring evaluations, and a tighter
 /// tolerance only makes the iterations chase that noise.
@@ -469,7 +482,7 @@ fn find_scalar(
                 step = 1e-12;
             }
             let step = step.clamp(-0.5, 0.5);
-            match secant(&mut f, s0, f0, step, stol, 12, (-S_LIMIT, S_LIMIT))? {
+            match secant(&mut f, s0, f0, step, stol, 12, (-S_LIMIT_LO, S_LIMIT))? {
                 Some(r) => r,
                 None => {
                     let (a, fa, b, fb) = local_bracket(&mut f, s0, f0, &map)?;
@@ -505,10 +518,11 @@ fn find_scalar(
                 return Err(PlanError::Numeric {
                     context: "scalar root".into(),
                     source: NumericError::NoConvergence(format!(
-                        "no admissible root of the condition in ({lo}, {hi}) between {:.3e} and {:.3e}: {}; an admissible root, if any, lies closer than {:.1e} (relative) to an end of the range, which the solver does not resolve",
-                        map.x(-S_LIMIT),
+                        "no admissible root of the condition in ({lo}, {hi}) between {:.3e} and {:.3e}: {}; an admissible root, if any, lies closer than {:.1e} (relative) to the end {lo} or {:.1e} to the end {hi}, which the solver does not resolve",
+                        map.x(-S_LIMIT_LO),
                         map.x(S_LIMIT),
                         rejected.join("; "),
+                        (-S_LIMIT_LO).exp(),
                         (-S_LIMIT).exp()
                     )),
                 });
@@ -529,7 +543,7 @@ fn find_scalar(
 /// The brackets of sign changes of the condition `f(s)` in the map's
 /// variable, lowest first: a grid of seven points `s = -6, -4, …, 6`
 /// (`x` from about `2.5e-3` to `1 - 2.5e-3` of a finite range) and points
-/// toward the lower end with steps 2, 4, 8, … in `s` (to `|s| = S_LIMIT`,
+/// toward the lower end with steps 2, 4, 8, … in `s` (to `s = -S_LIMIT_LO`,
 /// or to the last `s` where the discretisation works) until the sign
 /// changes; only if neither shows a sign change, the same toward the upper
 /// end. The caller takes the lowest admissible root: a contact condition
@@ -583,7 +597,7 @@ where
         let mut step = 2.0;
         loop {
             let s = at.0 + dir * step;
-            let s = s.clamp(-S_LIMIT, S_LIMIT);
+            let s = s.clamp(-S_LIMIT_LO, S_LIMIT);
             if s == at.0 || !map.inside(s) {
                 return (at, None, None);
             }
@@ -639,7 +653,7 @@ where
             map.x(left.0),
             map.x(right.0),
             (end - reached).abs(),
-            (-S_LIMIT).exp(),
+            (-if toward_hi { S_LIMIT } else { S_LIMIT_LO }).exp(),
         )),
     })
 }
@@ -658,7 +672,7 @@ where
     let mut h = 1e-6;
     for _ in 0..40 {
         for s in [s0 - h, s0 + h] {
-            if s.abs() <= S_LIMIT && map.inside(s) {
+            if (-S_LIMIT_LO..=S_LIMIT).contains(&s) && map.inside(s) {
                 let v = f(s)?;
                 if v.signum() != f0.signum() || v == 0.0 {
                     return Ok(if s < s0 {
@@ -682,10 +696,20 @@ where
 
 /// Refuses a "root" `s` (at `x`) that is a sign change across a pole: at
 /// a root `|f|` grows away from `s` (to about `|f'|·δ` at `s ± δ`, with
-/// opposite signs; a root of a slightly noisy discrete condition is
-/// accepted when |f(s)| is below 1% of that); at a pole it falls. The condition's own scale does not
-/// enter (it is tiny when the scalar is: `B ∝ c` for a stick radius
-/// `c → 0`), only its local shape.
+/// opposite signs); at a pole it falls (`|f(s)| ≫ |f(s ± δ)|` for every
+/// `δ` wider than the distance to the pole, which is within the root
+/// tolerance). The first probe, `δ = 1e-3`, accepts a root when `|f(s)|`
+/// is below 1% of both values beside it. If it does not, and the values
+/// beside `s` are not both smaller than `|f(s)|` (a pole's shape), the
+/// probe widens by 4 up to [`POLE_PROBE_MAX`] and accepts once the values
+/// have opposite signs and `|f(s)|` is below 10% of both: near `c → 0` the
+/// Hertz condition carries rounding noise of about `4e-16/c` (the stick
+/// zone's `p` is fixed by `O(c)` variations of `O(1)` rows of E1;
+/// docs/hertz_asymptotics.md), and at `c = 1e-12` the values beside a
+/// root stand out of it only at `δ ≈ 0.3`. A pole is refused at every `δ`
+/// (there `|f(s)|/|f(s ± δ)| ≈ δ/|s − pole| ≫ 10`). The condition's own
+/// scale does not enter (it is tiny when the scalar is: `B ∝ c` for a
+/// stick radius `c → 0`), only its local shape.
 fn check_not_pole<F>(
     f: &mut F,
     x: f64,
@@ -701,24 +725,35 @@ where
     if fx == 0.0 || fx.abs() <= 1e-9 * (fa.abs() + fb.abs()) {
         return Ok(());
     }
-    let delta = 1e-3;
-    let (fl, fr) = (f(s - delta)?, f(s + delta)?);
-    if fl.signum() != fr.signum() && fx.abs() <= 1e-2 * fl.abs().min(fr.abs()) {
-        Ok(())
-    } else {
-        Err(PlanError::Numeric {
-            context: "scalar root".into(),
-            source: NumericError::NoConvergence(format!(
-                "the condition changes sign across a pole near {x:.6e} (value {fx:.3e}, {fl:.3e} and {fr:.3e} at s ∓ {delta}), not a root{}",
-                if near_end {
-                    "; this close to an end of the range the discrete condition is noisy (measured on the Hertz problem below c ≈ 1e-9), so this may be a root the solver cannot place"
-                } else {
-                    ""
-                }
-            )),
-        })
+    let mut delta = 1e-3;
+    let (mut fl, mut fr) = (f(s - delta)?, f(s + delta)?);
+    let mut ratio = 1e-2;
+    loop {
+        if fl.signum() != fr.signum() && fx.abs() <= ratio * fl.abs().min(fr.abs()) {
+            return Ok(());
+        }
+        if fl.abs().max(fr.abs()) < fx.abs() || 4.0 * delta > POLE_PROBE_MAX {
+            break;
+        }
+        delta *= 4.0;
+        ratio = 0.1;
+        (fl, fr) = (f(s - delta)?, f(s + delta)?);
     }
+    Err(PlanError::Numeric {
+        context: "scalar root".into(),
+        source: NumericError::NoConvergence(format!(
+            "the condition changes sign across a pole near {x:.6e} (value {fx:.3e}, {fl:.3e} and {fr:.3e} at s ∓ {delta}), not a root{}",
+            if near_end {
+                "; this close to an end of the range the discrete condition is noisy (measured on the Hertz problem: about 4e-16/c at a stick radius c), so this may be a root the solver cannot place"
+            } else {
+                ""
+            }
+        )),
+    })
 }
+
+/// The widest probe of [`check_not_pole`] in the map's variable `s`.
+const POLE_PROBE_MAX: f64 = 1.1;
 
 #[cfg(test)]
 mod tests {
@@ -763,7 +798,7 @@ mod tests {
         // Near 1 the distance 1 - x is carried to a relative accuracy.
         let s = m.s(1.0 - 1e-9);
         assert!(((1.0 - m.x(s)) / 1e-9 - 1.0).abs() < 1e-6);
-        assert!(m.inside(S_LIMIT) && m.inside(-S_LIMIT) && !m.inside(40.0));
+        assert!(m.inside(S_LIMIT) && m.inside(-S_LIMIT_LO) && !m.inside(40.0));
         let half = ScalarMap {
             lo: 0.0,
             hi: f64::INFINITY,
