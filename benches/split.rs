@@ -60,5 +60,32 @@ fn split(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, split);
+/// The points of the issue-13 sweep (−0.9 ≤ ν ≤ 0.5, 0.01 ≤ μ ≤ 100) that
+/// were slowest (c near 1) beside Spence's and Kalker's mid-range cases and
+/// the smallest stick zone, through the `hertz` front (what `lambdamat
+/// hertz` and `hertz sweep` run per point), at tol 1e-10. The goal is at
+/// most 0.5 s CPU per point. Run alone:
+/// `cargo bench --bench split -- sweep_points --warm-up-time 1 --measurement-time 3`.
+fn sweep_points(c: &mut Criterion) {
+    let opts = SplitOptions::default();
+    let mut g = c.benchmark_group("sweep_points");
+    g.sample_size(10)
+        .warm_up_time(Duration::from_secs(1))
+        .measurement_time(Duration::from_secs(3));
+    for (nu, mu) in [
+        (0.3, 100.0),
+        (0.0, 100.0),
+        (-0.9, 10.0),
+        (0.25, 0.1801),
+        (0.0, 0.2986),
+        (0.0, 0.03),
+    ] {
+        g.bench_function(format!("front (nu,mu)=({nu},{mu})"), |b| {
+            b.iter(|| solve(nu, Given::Mu(mu), &opts))
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, split, sweep_points);
 criterion_main!(benches);

@@ -8,7 +8,7 @@
 //! Owns the rule cache and the splitting; it must not know about bases,
 //! kernels or operators.
 use std::collections::HashMap;
-use std::sync::{Arc, Mutex};
+use std::sync::{Arc, Mutex, OnceLock};
 
 use super::basis::{Factor, pow_fast};
 use super::error::NumericError;
@@ -31,21 +31,60 @@ impl RuleCache {
         RuleCache::default()
     }
 
+    /// The process-wide cache every [`crate::numeric::Assembler`] uses: a
+    /// rule depends only on `(n, a, b)`, and one solve builds dozens of
+    /// assemblers (one per basis per discretisation, several
+    /// discretisations per root iteration) that need the same few rules.
+    /// Cleared when it holds more than [`SHARED_RULES`] rules (a long sweep
+    /// meets new edge exponents at every point).
+    pub fn shared() -> &'static RuleCache {
+        static SHARED: OnceLock<RuleCache> = OnceLock::new();
+        SHARED.get_or_init(RuleCache::new)
+    }
+
     /// The `n`-point rule for `(1-s)^a (1+s)^b`, computed once.
     pub fn get(&self, n: usize, a: f64, b: f64) -> Result<Arc<GaussRule>, NumericError> {
+        type Local = std::cell::RefCell<HashMap<(usize, u64, u64), Arc<GaussRule>>>;
+        thread_local! {
+            // A rule is a function of `(n, a, b)` alone, so one memo per
+            // thread serves every cache without taking its lock (the
+            // assembly asks for a rule once per quadrature piece, from
+            // several threads).
+            static LOCAL: Local = Default::default();
+        }
         let key = (n, a.to_bits(), b.to_bits());
+        let remember = |r: &Arc<GaussRule>| {
+            LOCAL.with(|l| {
+                let mut l = l.borrow_mut();
+                if l.len() >= SHARED_RULES {
+                    l.clear();
+                }
+                l.insert(key, r.clone());
+            })
+        };
+        if let Some(r) = LOCAL.with(|l| l.borrow().get(&key).cloned()) {
+            return Ok(r);
+        }
         if let Ok(m) = self.map.lock()
             && let Some(r) = m.get(&key)
         {
+            remember(r);
             return Ok(r.clone());
         }
         let r = Arc::new(gauss_jacobi(n, a, b)?);
+        remember(&r);
         if let Ok(mut m) = self.map.lock() {
+            if m.len() >= SHARED_RULES {
+                m.clear();
+            }
             m.insert(key, r.clone());
         }
         Ok(r)
     }
 }
+
+/// Most rules a [`RuleCache`] keeps (a few hundred kilobytes).
+const SHARED_RULES: usize = 4096;
 
 fn same_point(z: f64, e: f64) -> bool {
     (z - e).abs() <= 4.0 * f64::EPSILON * e.abs().max(z.abs())
@@ -136,10 +175,12 @@ pub fn composite_rule(
             }
         }
         let rule = cache.get(m, ea, eb)?;
-        let (ts, ws) = rule.mapped(a, b);
+        // `rule.mapped(a, b)` without its two vectors (the same numbers).
         let half = 0.5 * (b - a);
-        for ((t, w), s) in ts.into_iter().zip(ws).zip(&rule.nodes) {
-            let mut v = w;
+        let scale = half.powf(1.0 + rule.a + rule.b);
+        for (s, w) in rule.nodes.iter().zip(&rule.weights) {
+            let t = a + half * (1.0 + s);
+            let mut v = w * scale;
             for f in factors.iter().filter(|f| f.exponent != 0.0) {
                 if same_point(f.at, a) || same_point(f.at, b) {
                     continue;

@@ -16,6 +16,7 @@
 //! The Hertz problem (`examples/hertz.lmx`) gets exactly the
 //! discretisation of the hand-written solver in `crate::hertz::system`.
 use std::f64::consts::PI;
+use std::sync::Arc;
 
 use nalgebra::{DMatrix, DVector};
 
@@ -72,7 +73,7 @@ pub struct SplitProblem {
     ops: Vec<Vec<Option<Operator>>>,
     /// Assembled blocks, by everything that defines them (see
     /// [`SplitProblem::block`]).
-    cache: std::sync::Mutex<std::collections::HashMap<Vec<u64>, DMatrix<f64>>>,
+    cache: std::sync::Mutex<std::collections::HashMap<Vec<u64>, Arc<DMatrix<f64>>>>,
 }
 
 /// How an unknown is represented on one subinterval.
@@ -528,13 +529,13 @@ impl SplitProblem {
                 if let (Some(asm), Some(sup)) = (&asms[j], supports[j]) {
                     let blk = self.block((e, j, 0), asm, op, xs, sup)?;
                     let mut v = mat.view_mut((r0, offsets[j]), (xs.len(), blk.ncols()));
-                    v += &blk;
+                    v += &*blk;
                 }
                 for k in 0..npieces {
                     if let Status::Related { coeff, other } = status[j][k] {
                         let win = (breaks[k], breaks[k + 1]);
                         let asm = self.related_basis(&asms, &status, other, k, j)?;
-                        let blk = self.block((e, j, 1), asm, op, xs, win)? * coeff;
+                        let blk = &*self.block((e, j, 1), asm, op, xs, win)? * coeff;
                         let mut v = mat.view_mut((r0, offsets[other]), (xs.len(), blk.ncols()));
                         v += &blk;
                     }
@@ -542,7 +543,7 @@ impl SplitProblem {
                 for (ti, t) in terms.iter().enumerate().filter(|(_, t)| t.unknown == j) {
                     let sup = t.basis.support();
                     let blk = self.block((e, j, 2 + ti), &term_asms[ti], op, xs, sup)?;
-                    let col = blk * DVector::from_column_slice(&t.phi);
+                    let col = &*blk * DVector::from_column_slice(&t.phi);
                     let mut v = mat.view_mut((r0, dim + ti), (xs.len(), 1));
                     v += &col;
                 }
@@ -646,7 +647,7 @@ impl SplitProblem {
         op: &Operator,
         xs: &[f64],
         window: (f64, f64),
-    ) -> Result<DMatrix<f64>, PlanError> {
+    ) -> Result<Arc<DMatrix<f64>>, PlanError> {
         let basis = asm.basis();
         let mut key: Vec<u64> = vec![
             e as u64,
@@ -669,7 +670,7 @@ impl SplitProblem {
         {
             return Ok(m.clone());
         }
-        let m = asm.matrix_on(op, xs, window).map_err(num("assembly"))?;
+        let m = Arc::new(asm.matrix_on(op, xs, window).map_err(num("assembly"))?);
         if let Ok(mut cache) = self.cache.lock() {
             if cache.len() >= 64 {
                 cache.clear();
