@@ -42,13 +42,7 @@ fn main() {
     };
     println!(
         "ν = {nu}, {given:?}: c = {:.15} ± {:.1e} ({} levels), reference c = {:.15} ± {:.1e} ({} levels, converged {})",
-        s.c,
-        s.error_estimate,
-        s.levels,
-        r.c,
-        r.error_estimate,
-        r.levels,
-        r.converged
+        s.c, s.error_estimate, s.levels, r.c, r.error_estimate, r.levels, r.converged
     );
     let c = s.c;
     let xs = profile_points(c, 200);
@@ -56,7 +50,10 @@ fn main() {
     let ours = s.sample(&xs).expect("samples");
     let t_sample = t1.elapsed().as_secs_f64();
     let refs = r.sample(&xs).expect("reference samples");
-    println!("solve {t_solve:.3} s wall, sampling {} points {t_sample:.3} s wall", xs.len());
+    println!(
+        "solve {t_solve:.3} s wall, sampling {} points {t_sample:.3} s wall",
+        xs.len()
+    );
     let fields: [(&str, fn(&lambdamat::hertz::front::Sample) -> (f64, f64)); 4] = [
         ("p", |s| (s.p, s.p_err)),
         ("q", |s| (s.q, s.q_err)),
@@ -83,7 +80,10 @@ fn main() {
                 viol += 1;
             }
             if a.iter().any(|x| x == "--points") && t > 0.5 * e {
-                println!("  {name} x {:.12}  value {v:.6e}  true {t:.2e}  est {e:.2e}  ref est {te:.1e}", o.x);
+                println!(
+                    "  {name} x {:.12}  value {v:.6e}  true {t:.2e}  est {e:.2e}  ref est {te:.1e}",
+                    o.x
+                );
             }
         }
         println!("{name:5}  {t_max:9.2e}  {e_max:9.2e}  {ratio:12.3e}  {viol:10}  x = {at:.6}");
@@ -106,8 +106,7 @@ fn main() {
         let os = match given {
             Given::Mu(mu) => solve_given_mu(nu, mu, &o),
             Given::C(c) => solve_given_c(nu, c, &o),
-        }
-        ;
+        };
         let os = match os {
             Ok(os) => os,
             Err(e) => {
@@ -120,7 +119,11 @@ fn main() {
         let theirs = os.sample(&xs).expect("oracle samples");
         let (mut worst, mut viol) = (0.0f64, 0);
         for (a, b) in ours.iter().zip(&theirs) {
-            for (v, e, t) in [(a.p, a.p_err, b.p), (a.q, a.q_err, b.q), (a.u, a.u_err, b.u)] {
+            for (v, e, t) in [
+                (a.p, a.p_err, b.p),
+                (a.q, a.q_err, b.q),
+                (a.u, a.u_err, b.u),
+            ] {
                 worst = worst.max((v - t).abs() / e.max(1e-300));
                 if (v - t).abs() > e {
                     viol += 1;

@@ -47,7 +47,11 @@ fn check(nu: f64, given: Given) -> HertzResult {
                 worst_ratio = worst_ratio.max(err / e);
             }
             if a.x <= 0.9 {
-                assert!(e < 1e-4, "ν = {nu}, {given:?}: estimate {e:e} at x = {}", a.x);
+                assert!(
+                    e < 1e-4,
+                    "ν = {nu}, {given:?}: estimate {e:e} at x = {}",
+                    a.x
+                );
             }
         }
     }

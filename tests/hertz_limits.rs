@@ -142,7 +142,10 @@ fn the_ends_are_structured_refusals_naming_the_scalar_the_end_and_the_trend() {
     // ν = 1/2: no sign change; the condition falls toward c = 1 and keeps
     // its sign (levels off at ≈ −0.19).
     let r = root_at_end("1/2", "0.3");
-    assert_eq!((r.scalar.as_str(), r.end, r.end_value), ("c", RangeEnd::Upper, 1.0));
+    assert_eq!(
+        (r.scalar.as_str(), r.end, r.end_value),
+        ("c", RangeEnd::Upper, 1.0)
+    );
     assert!(matches!(r.reason, EndReason::NoSignChange { .. }));
     assert!(r.resolved > 0.0 && r.resolved < 1e-9);
     assert!(1.0 - r.reached <= 2.0 * r.resolved, "{}", r.reached);

@@ -22,8 +22,8 @@ use serde::Serialize;
 use crate::lang::parse_program_with;
 use crate::lang::parser::parse_exact;
 use crate::numeric::{Assembler, NumericError, Operator};
-use crate::plan::split_fields::{Approach, Fields, LevelFields, ResidualField, Valued};
 use crate::plan::error::{EndReason, RangeEnd};
+use crate::plan::split_fields::{Approach, Fields, LevelFields, ResidualField, Valued};
 use crate::plan::{PlanError, SplitOptions, SplitSolution, solve_split_fields};
 use crate::system::Program;
 
@@ -277,7 +277,8 @@ impl Limit {
             Failure::Spurious(_) => None,
             Failure::Plan(_) => return None,
         };
-        let no_sign_change = at_end.is_some_and(|r| matches!(r.reason, EndReason::NoSignChange { .. }));
+        let no_sign_change =
+            at_end.is_some_and(|r| matches!(r.reason, EndReason::NoSignChange { .. }));
         match given {
             Given::Mu(mu) if mu > 0.0 && mu.is_finite() => {
                 if no_sign_change && at_end.is_some_and(|r| r.end == RangeEnd::Upper) {
@@ -576,7 +577,11 @@ fn solve_inner(nu: f64, given: Given, opts: &SplitOptions) -> Result<HertzResult
             // The residual is a sum of terms of the size of the stresses at
             // c, each rounded: a floor of 64 ulps of that size (measured:
             // the levels' values scatter by up to 4e-15 at c ≈ 0.5).
-            let stresses = f.value(p, c, Approach::Above)?.abs().max(mu_p.abs()).max(1.0);
+            let stresses = f
+                .value(p, c, Approach::Above)?
+                .abs()
+                .max(mu_p.abs())
+                .max(1.0);
             residual_c.error = residual_c.error.max(64.0 * f64::EPSILON * stresses / c);
             // A root of the bounded-shear condition whose shear still jumps
             // at c is not the physical free boundary (measured at ν = 0:
@@ -592,12 +597,18 @@ fn solve_inner(nu: f64, given: Given, opts: &SplitOptions) -> Result<HertzResult
         }
         (slip, (p, q), residual_c, jump)
     };
-    let field_error_estimates = [
-        ("residual_c".to_string(), residual_c.error),
-        ("shear_jump_at_c".to_string(), shear_jump_at_c.error),
-    ]
-    .into_iter()
-    .collect();
+    // Without a free boundary (no shear: c = 0 or 1) both are zero by
+    // definition, not computed, and carry no estimate.
+    let field_error_estimates = if c > 0.0 && c < 1.0 {
+        [
+            ("residual_c".to_string(), residual_c.error),
+            ("shear_jump_at_c".to_string(), shear_jump_at_c.error),
+        ]
+        .into_iter()
+        .collect()
+    } else {
+        BTreeMap::new()
+    };
     let mut s = HertzResult {
         nu,
         gamma,

@@ -168,12 +168,7 @@ impl<'a> LevelFields<'a> {
                 .as_ref()
                 .map(|d| Fields::new(&s.problem, d))
                 .transpose()?,
-            scalar_error: s
-                .report
-                .scalars
-                .iter()
-                .map(|e| e.error)
-                .fold(0.0, f64::max),
+            scalar_error: s.report.scalars.iter().map(|e| e.error).fold(0.0, f64::max),
         })
     }
 
@@ -232,8 +227,7 @@ impl<'a> LevelFields<'a> {
         let Some(prev) = &self.previous else {
             return out;
         };
-        let Some((mut a, mut b)) = prev.panel(x, side).or_else(|| self.last.panel(x, side))
-        else {
+        let Some((mut a, mut b)) = prev.panel(x, side).or_else(|| self.last.panel(x, side)) else {
             return out;
         };
         for f in [&self.last, prev] {

@@ -718,13 +718,7 @@ where
 /// accepted when |f(s)| is below 1% of that); at a pole it falls. The condition's own scale does not
 /// enter (it is tiny when the scalar is: `B ∝ c` for a stick radius
 /// `c → 0`), only its local shape.
-fn check_not_pole<F>(
-    f: &mut F,
-    s: f64,
-    fa: f64,
-    fb: f64,
-    map: &ScalarMap,
-) -> Result<(), PlanError>
+fn check_not_pole<F>(f: &mut F, s: f64, fa: f64, fb: f64, map: &ScalarMap) -> Result<(), PlanError>
 where
     F: FnMut(f64) -> Result<f64, PlanError>,
 {
