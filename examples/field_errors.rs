@@ -8,11 +8,21 @@
 //! ```
 //! Prints, per field, the largest true error, the largest estimate, the
 //! largest ratio true/estimate and how many points have true > estimate.
-use lambdamat::hertz::front::{Given, profile_points, solve};
+use lambdamat::hertz::front::{Given, Sample, profile_points, solve};
 use lambdamat::hertz::{HertzOptions, solve_given_c, solve_given_mu};
 use lambdamat::plan::SplitOptions;
 
+/// A field of a sample and its estimate.
+type Field = fn(&Sample) -> (f64, f64);
+
 fn main() {
+    if let Err(e) = run() {
+        eprintln!("field_errors: {e}");
+        std::process::exit(3);
+    }
+}
+
+fn run() -> Result<(), String> {
     let a: Vec<String> = std::env::args().skip(1).collect();
     let num = |i: usize, d: f64| a.get(i).and_then(|s| s.parse().ok()).unwrap_or(d);
     let nu = num(0, 0.25);
@@ -26,7 +36,7 @@ fn main() {
     let ref_tol = num(4, 1e-13);
     let ref_level = num(5, 10.0) as usize;
     let t0 = std::time::Instant::now();
-    let s = solve(nu, given, &SplitOptions { tol, max_level: 7 }).expect("solves");
+    let s = solve(nu, given, &SplitOptions { tol, max_level: 7 }).map_err(|e| e.to_string())?;
     let t_solve = t0.elapsed().as_secs_f64();
     let r = solve(
         nu,
@@ -36,10 +46,7 @@ fn main() {
             max_level: ref_level,
         },
     );
-    let r = match r {
-        Ok(r) => r,
-        Err(e) => panic!("reference: {e}"),
-    };
+    let r = r.map_err(|e| format!("reference: {e}"))?;
     println!(
         "ν = {nu}, {given:?}: c = {:.15} ± {:.1e} ({} levels), reference c = {:.15} ± {:.1e} ({} levels, converged {})",
         s.c, s.error_estimate, s.levels, r.c, r.error_estimate, r.levels, r.converged
@@ -47,14 +54,14 @@ fn main() {
     let c = s.c;
     let xs = profile_points(c, 200);
     let t1 = std::time::Instant::now();
-    let ours = s.sample(&xs).expect("samples");
+    let ours = s.sample(&xs).map_err(|e| e.to_string())?;
     let t_sample = t1.elapsed().as_secs_f64();
-    let refs = r.sample(&xs).expect("reference samples");
+    let refs = r.sample(&xs).map_err(|e| e.to_string())?;
     println!(
         "solve {t_solve:.3} s wall, sampling {} points {t_sample:.3} s wall",
         xs.len()
     );
-    let fields: [(&str, fn(&lambdamat::hertz::front::Sample) -> (f64, f64)); 4] = [
+    let fields: [(&str, Field); 4] = [
         ("p", |s| (s.p, s.p_err)),
         ("q", |s| (s.q, s.q_err)),
         ("mu_p", |s| (s.mu_p, s.mu_p_err)),
@@ -111,12 +118,12 @@ fn main() {
             Ok(os) => os,
             Err(e) => {
                 println!("oracle refused: {e}");
-                return;
+                return Ok(());
             }
         };
         let xs: Vec<f64> = xs.into_iter().filter(|&x| x <= 0.99).collect();
-        let ours = s.sample(&xs).expect("samples");
-        let theirs = os.sample(&xs).expect("oracle samples");
+        let ours = s.sample(&xs).map_err(|e| e.to_string())?;
+        let theirs = os.sample(&xs).map_err(|e| e.to_string())?;
         let (mut worst, mut viol) = (0.0f64, 0);
         for (a, b) in ours.iter().zip(&theirs) {
             for (v, e, t) in [
@@ -135,4 +142,5 @@ fn main() {
             os.c
         );
     }
+    Ok(())
 }

@@ -236,7 +236,7 @@ impl<'a> LevelFields<'a> {
                 b = b.min(hi);
             }
         }
-        if !(a < b) {
+        if a.is_nan() || b.is_nan() || a >= b {
             return out;
         }
         // Interior (Chebyshev–Gauss) points: never a panel end, where a
