@@ -347,6 +347,8 @@ impl<'a> Fields<'a> {
         for s in &c.singulars {
             check(s.at.eval(vars, 0.0), s.at.eval(&moved, 0.0));
         }
+        out.sort_by(f64::total_cmp);
+        out.dedup();
         out
     }
 
@@ -659,5 +661,52 @@ mod tests {
         // Measured 2.3e-13 (the exact solution is polynomial).
         // An interval that is not a union of panels is refused.
         assert!(f.residual_field(1, (0.3, 0.7)).is_err());
+    }
+
+    /// The estimates of [`LevelFields`] on the manufactured problem: `c`
+    /// is the one end that moves with the scalar, every window lies in the
+    /// point's panel and subinterval, and every estimate bounds the true
+    /// error of the exact polynomial solution.
+    #[test]
+    fn level_fields_estimates_on_the_manufactured_problem() {
+        let src = include_str!("../../examples/hertz_split_mms.lmx");
+        let prog = crate::lang::parse_program(src, "hertz_split_mms.lmx").expect("valid");
+        let s = solve_split_fields(&prog, &SplitOptions::default()).expect("solves");
+        let c = s.report.scalars[0].value;
+        let lf = LevelFields::new(&s).expect("fields");
+        assert!(lf.previous.is_some());
+        assert_eq!(lf.last.scalar_ends(), vec![c]);
+        assert_eq!(lf.scalar_error, s.report.scalars[0].error);
+        let (p, q) = (
+            lf.last.unknown_index("p").expect("p"),
+            lf.last.unknown_index("q").expect("q"),
+        );
+        let mut checked = 0;
+        for i in 1..60 {
+            let x = (f64::from(i) + 0.3) / 61.0;
+            assert_eq!(lf.moving_end(x, Approach::Above).map(|e| e.0), Some(c));
+            let w = lf.window(x, Approach::Above);
+            assert_eq!(w[0].0, x);
+            let (lo, hi) = lf.last.piece_ends(x, Approach::Above).expect("piece");
+            assert!(w.iter().all(|&(y, _)| y >= lo && y <= hi), "{w:?}");
+            assert_eq!(w.len(), 1 + WINDOW_POINTS);
+            let q_exact = if x < c { 4.0 * x * x * x } else { x };
+            for (u, exact) in [(p, x), (q, q_exact)] {
+                let v = lf.value(u, x, Approach::Above).expect("value");
+                assert!(v.error.is_finite());
+                assert!(
+                    (v.value - exact).abs() <= v.error,
+                    "x = {x}: {v:?} vs {exact}"
+                );
+                checked += 1;
+            }
+        }
+        assert_eq!(checked, 118);
+        // The shift term: zero at a flat field, δ-proportional elsewhere,
+        // and bounded by the jump itself within δ of the end.
+        assert_eq!(LevelFields::shift_term(0.7, (0.5, 1e-10), 3.0, 3.0), 0.0);
+        let t = LevelFields::shift_term(0.7, (0.5, 1e-10), 3.0, 1.0);
+        assert!((t - 2.0 * 2.0 * 1e-10 / 0.2).abs() < 1e-22);
+        assert_eq!(LevelFields::shift_term(0.5, (0.5, 1e-10), 3.0, 1.0), 4.0);
     }
 }
