@@ -84,13 +84,29 @@ fn csv_and_svg_files_are_written() {
         .stdout(predicate::str::contains("compliance P*"));
     let text = std::fs::read_to_string(&csv).expect("csv");
     let mut lines = text.lines();
-    assert_eq!(lines.next(), Some("x,p,q,mu_p,u"));
+    assert_eq!(
+        lines.next(),
+        Some("x,p,p_err,q,q_err,mu_p,mu_p_err,u,u_err")
+    );
     let rows: Vec<Vec<f64>> = lines
         .map(|l| l.split(',').map(|x| x.parse().expect("number")).collect())
         .collect();
     assert!(rows.len() > 300);
     // u = 0 in the stick zone, u < 0 in the slip zone near the edge.
-    assert!(rows.iter().any(|r| r[4] < 0.0));
+    assert!(rows.iter().any(|r| r[7] < 0.0));
+    // Every field carries a finite, non-negative estimate, and away from
+    // the edge singularity the fields are good to better than 1e-4.
+    for r in &rows {
+        for e in [r[2], r[4], r[6], r[8]] {
+            assert!(e.is_finite() && e >= 0.0, "{r:?}");
+        }
+        if r[0] <= 0.9 {
+            assert!(r[2] < 1e-4 && r[4] < 1e-4, "{r:?}");
+        }
+    }
+    // The plot's caption states the fields' estimate.
+    let svg_text = std::fs::read_to_string(&svg).expect("svg");
+    assert!(svg_text.contains("fields ±"), "caption");
     let svg = std::fs::read_to_string(&svg).expect("svg");
     assert!(svg.starts_with("<svg") && svg.contains("stick | slip"));
 }

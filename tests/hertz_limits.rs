@@ -8,7 +8,8 @@
 //! (the spurious roots accumulating at c → 1 are not returned).
 use lambdamat::lang::parse_program_with;
 use lambdamat::lang::parser::parse_exact;
-use lambdamat::plan::{SplitOptions, solve_split};
+use lambdamat::plan::error::{EndReason, RangeEnd, RootAtEnd};
+use lambdamat::plan::{PlanError, SplitOptions, solve_split};
 
 /// `(c, P*)` at tol 1e-10, or the refusal.
 fn solve(nu: &str, mu: &str) -> Result<(f64, f64), String> {
@@ -224,4 +225,88 @@ fn the_ends_are_refused_with_their_limit() {
     // ν = 1/2 (γ = 0): no coupling; the stick zone fills the contact.
     let e = solve("1/2", "0.3").expect_err("refused");
     assert!(e.contains("closer to the end 1"), "{e}");
+}
+
+/// The split solver's refusal at an end as data: `(nu, mu)` through
+/// `examples/hertz.lmx`.
+fn root_at_end(nu: &str, mu: &str) -> RootAtEnd {
+    let path = "examples/hertz.lmx";
+    let src = std::fs::read_to_string(path).expect("example exists");
+    let sets = vec![
+        ("nu".to_string(), parse_exact(nu).expect("exact")),
+        ("mu".to_string(), parse_exact(mu).expect("exact")),
+    ];
+    let prog = parse_program_with(&src, path, &sets).expect("valid");
+    match solve_split(&prog, &SplitOptions::default()) {
+        Err(PlanError::RootAtEnd(r)) => *r,
+        other => panic!("ν={nu} μ={mu}: not a root at an end: {other:?}"),
+    }
+}
+
+#[test]
+fn the_ends_are_structured_refusals_naming_the_scalar_the_end_and_the_trend() {
+    // ν = 1/2: no sign change; the condition falls toward c = 1 and keeps
+    // its sign (levels off at ≈ −0.19).
+    let r = root_at_end("1/2", "0.3");
+    assert_eq!(
+        (r.scalar.as_str(), r.end, r.end_value),
+        ("c", RangeEnd::Upper, 1.0)
+    );
+    assert!(matches!(r.reason, EndReason::NoSignChange { .. }));
+    assert!(r.resolved > 0.0 && r.resolved < 1e-9);
+    assert!(1.0 - r.reached <= 2.0 * r.resolved, "{}", r.reached);
+    assert!(r.trend.len() >= 7 && r.trend.windows(2).all(|w| w[0].0 < w[1].0));
+    assert!(r.trend.iter().all(|t| t.1 < 0.0));
+    // ν = 0.4, μ = 10: thin slip, |condition| falls steadily toward c = 1.
+    let r = root_at_end("2/5", "10");
+    assert_eq!((r.end, r.end_value), (RangeEnd::Upper, 1.0));
+    assert!(r.shrinks_toward(RangeEnd::Upper, 4));
+    // ν = 0, μ = 0.02: the only sign change is a root near c = 1 that
+    // violates the Coulomb bound; the condition shrinks toward c = 0
+    // (B ∝ c), the end where the physical root lies (c ≈ 1e-12).
+    let r = root_at_end("0", "0.02");
+    assert_eq!((r.end, r.end_value), (RangeEnd::Lower, 0.0));
+    assert!(r.shrinks_toward(RangeEnd::Lower, 2));
+    let EndReason::NoneAdmissible { rejected } = &r.reason else {
+        panic!("{:?}", r.reason);
+    };
+    assert!(
+        rejected
+            .iter()
+            .any(|(x, why)| *x > 0.99 && why.contains("violates the bound"))
+    );
+    // The message is the user's text, unchanged.
+    let text = PlanError::RootAtEnd(Box::new(r)).to_string();
+    assert!(text.starts_with("scalar root: no convergence: no admissible root"));
+}
+
+#[test]
+fn the_front_names_every_physical_limit_from_the_structured_refusal() {
+    use lambdamat::hertz::front::{Given, Limit, solve_with_limit};
+    let o = SplitOptions::default();
+    let limit = |nu: f64, given: Given| {
+        let r = solve_with_limit(nu, given, &o).err().expect("refused");
+        assert!(!r.error.is_input_error());
+        (r.limit, r.error.to_string())
+    };
+    // Small friction (c ≈ 1e-12 at ν = 0, μ = 0.02).
+    let (l, text) = limit(0.0, Given::Mu(0.02));
+    assert!(matches!(l, Some(Limit::SmallFriction { .. })), "{l:?}");
+    assert!(text.contains("small-friction limit"), "{text}");
+    // Thin slip: ν = 0.4, μ = 10 (1 − c below 1e-10).
+    let (l, text) = limit(0.4, Given::Mu(10.0));
+    assert!(matches!(l, Some(Limit::ThinSlip { .. })), "{l:?}");
+    assert!(text.contains("1 − c is below 1e-10"), "{text}");
+    // A given c beyond c∞(ν): at ν = 0 the condition in μ levels off toward
+    // μ → ∞; at ν = −0.9 (c∞ ≈ 0.957) and ν = 0.3 (1 − c∞ ≈ 4e-7) it
+    // levels off at both ends and is smaller toward μ → 0, which the text
+    // of the message could not tell apart from a root at μ → 0.
+    for (nu, c) in [(0.0, 0.999), (-0.9, 0.99), (0.3, 0.99999999)] {
+        let (l, text) = limit(nu, Given::C(c));
+        assert!(
+            matches!(l, Some(Limit::BeyondLargeFriction { .. })),
+            "ν = {nu}, c = {c}: {l:?} {text}"
+        );
+        assert!(text.contains("beyond c∞(ν)"), "{text}");
+    }
 }

@@ -42,7 +42,7 @@ pub struct HertzArgs {
     /// Print one JSON object instead of text.
     #[arg(long)]
     json: bool,
-    /// Write x, p, q, mu_p, u on a fine grid to this CSV file.
+    /// Write x, p, q, mu_p, u on a fine grid to this CSV file, each with its error estimate.
     #[arg(long, value_name = "FILE")]
     csv: Option<PathBuf>,
     /// Draw p, q, μp and u against x (c marked) into this SVG file.
@@ -248,24 +248,36 @@ fn text(s: &HertzResult, given_c: bool) -> String {
         ok(s.stick_ok),
         ok(s.slip_ok)
     );
+    // Pointwise values carry their own estimates (the two levels' values,
+    // each at its own c); none in the limits without shear.
+    let fe = |name: &str| {
+        s.field_error_estimates
+            .get(name)
+            .map_or(String::new(), |e| format!(" ± {e:.1e}"))
+    };
     let _ = writeln!(
         o,
-        "          shear jump q(c⁻) - μp(c) = {:.1e}, E2 residual at c (÷c) = {:.1e}",
-        s.shear_jump_at_c, s.residual_c
+        "          shear jump q(c⁻) - μp(c) = {:.1e}{}, E2 residual at c (÷c) = {:.1e}{}",
+        s.shear_jump_at_c,
+        fe("shear_jump_at_c"),
+        s.residual_c,
+        fe("residual_c")
     );
     let _ = writeln!(o, "  solved through the language: {}", s.command);
     o
 }
 
-/// `x, p, q, mu_p, u` on a fine grid, as CSV.
+/// `x, p, q, mu_p, u` on a fine grid, each field followed by its error
+/// estimate (`*_err`, see [`crate::plan::split_fields::LevelFields`]), as
+/// CSV.
 fn profile_csv(s: &HertzResult) -> Result<String, CliError> {
     let samples = s.profile(400)?;
-    let mut out = String::from("x,p,q,mu_p,u\n");
+    let mut out = String::from("x,p,p_err,q,q_err,mu_p,mu_p_err,u,u_err\n");
     for p in samples {
         let _ = writeln!(
             out,
-            "{:.16e},{:.16e},{:.16e},{:.16e},{:.16e}",
-            p.x, p.p, p.q, p.mu_p, p.u
+            "{:.16e},{:.16e},{:.2e},{:.16e},{:.2e},{:.16e},{:.2e},{:.16e},{:.2e}",
+            p.x, p.p, p.p_err, p.q, p.q_err, p.mu_p, p.mu_p_err, p.u, p.u_err
         );
     }
     Ok(out)

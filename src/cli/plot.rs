@@ -37,9 +37,14 @@ fn draw(s: &HertzResult, out: &mut String) -> Result<(), CliError> {
     let (lo, hi) = (lo - pad, hi + pad);
     let root = SVGBackend::with_string(out, (900, 560)).into_drawing_area();
     root.fill(&WHITE).map_err(plot_err)?;
+    // The fields' own estimates, at most this over the plotted range.
+    let worst = shown
+        .iter()
+        .flat_map(|p| [p.p_err, p.q_err, p.mu_p_err, p.u_err])
+        .fold(0.0f64, f64::max);
     let title = format!(
-        "Hertz contact: ν = {}, μ = {:.6}, c = {:.6}",
-        s.nu, s.mu, s.c
+        "Hertz contact: ν = {}, μ = {:.6}, c = {:.6}; fields ± {:.0e} or better",
+        s.nu, s.mu, s.c, worst
     );
     let mut chart = ChartBuilder::on(&root)
         .caption(title, ("sans-serif", 22))

@@ -22,7 +22,8 @@ use serde::Serialize;
 use crate::lang::parse_program_with;
 use crate::lang::parser::parse_exact;
 use crate::numeric::{Assembler, NumericError, Operator};
-use crate::plan::split_fields::{Approach, Fields, ResidualField};
+use crate::plan::error::{EndReason, RangeEnd};
+use crate::plan::split_fields::{Approach, Fields, LevelFields, ResidualField, Valued};
 use crate::plan::{PlanError, SplitOptions, SplitSolution, solve_split_fields};
 use crate::system::Program;
 
@@ -58,19 +59,30 @@ pub enum Given {
     Mu(f64),
 }
 
-/// `p`, `q`, `μp` and `u` at one point.
+/// `p`, `q`, `μp` and `u` at one point, each with its error estimate
+/// (`*_err`: the distance between the last two refinement levels' values
+/// at this point, [`crate::plan::split_fields::LevelFields`]; infinite
+/// after a single level).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Sample {
     /// Radius.
     pub x: f64,
     /// Normal stress.
     pub p: f64,
+    /// Its estimate.
+    pub p_err: f64,
     /// Shear stress.
     pub q: f64,
+    /// Its estimate.
+    pub q_err: f64,
     /// `μ p`.
     pub mu_p: f64,
+    /// Its estimate.
+    pub mu_p_err: f64,
     /// Slip (zero in the stick zone).
     pub u: f64,
+    /// Its estimate.
+    pub u_err: f64,
 }
 
 /// A solved Hertz problem, read off the language file's solution.
@@ -110,6 +122,10 @@ pub struct HertzResult {
     /// `q(c⁻) - μ p(c)` (regular part of the stick shear): continuity of
     /// the shear at the stick/slip point.
     pub shear_jump_at_c: f64,
+    /// Estimates of the pointwise values above (`residual_c`,
+    /// `shear_jump_at_c`): the distance between the last two levels' values,
+    /// each level at its own c.
+    pub field_error_estimates: BTreeMap<String, f64>,
     /// Number of unknowns of the final discretisation.
     pub unknowns: usize,
     /// Number of refinement levels used.
@@ -128,6 +144,31 @@ pub struct HertzResult {
     slip: Option<ResidualField>,
     #[serde(skip)]
     pq: (usize, usize),
+    #[serde(skip)]
+    found: Found,
+}
+
+/// Which of μ and c the file's scalar is (its first slot).
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Found {
+    /// The stick radius (given μ).
+    C,
+    /// The friction coefficient (given c).
+    Mu,
+    /// No scalar (no shear).
+    Nothing,
+}
+
+impl Found {
+    /// `(μ, c)` of a level whose first slot is `scalar`, the other one
+    /// being the given `(mu, c)`.
+    fn mu_c(self, scalar: Option<f64>, mu: f64, c: f64) -> (f64, f64) {
+        match self {
+            Found::C => (mu, scalar.unwrap_or(c)),
+            Found::Mu => (scalar.unwrap_or(mu), c),
+            Found::Nothing => (mu, c),
+        }
+    }
 }
 
 fn invalid(s: String) -> PlanError {
@@ -232,21 +273,37 @@ fn thin_slip_heuristic(gamma: f64) -> (f64, f64) {
 }
 
 impl Limit {
-    /// The limit a refusal `err` of `(nu, given)` lies in, if any: only
-    /// the split solver's root refusals (and the front's own spurious-root
-    /// refusal) are read, never bad input.
-    pub fn classify(nu: f64, given: Given, err: &PlanError) -> Option<Limit> {
-        let PlanError::Numeric { .. } = err else {
-            return None;
-        };
+    /// The limit a refusal of `(nu, given)` lies in, if any: only the
+    /// split solver's structured "root at an end" refusals
+    /// ([`PlanError::RootAtEnd`]) and the front's own spurious-root refusal
+    /// are read, never bad input and never the message text.
+    ///
+    /// - Given μ, the stick radius c: no sign change with the condition
+    ///   smallest toward `c = 1` is thin slip; any other refusal at an end
+    ///   (toward 0, or all roots rejected, or noise near an end) and the
+    ///   spurious free boundary are small friction when the asymptotic
+    ///   `c ≈ C·exp(−a/μ)` is at most `1e-8` (the noisy zone starts near
+    ///   `1e-9`, the scan stops at `1e-10`).
+    /// - Given c, the friction μ: no sign change over `μ ∈ (1e-10, 1e10)`
+    ///   toward `∞`, or with the condition levelling off at a non-zero
+    ///   value toward `μ → 0` (measured: ν = 0.3, c = 1 − 1e-8 and ν = −0.9,
+    ///   c = 0.99 level off at both ends), means no μ has that c: c is
+    ///   beyond `c∞(ν)`.
+    fn classify(nu: f64, given: Given, failure: &Failure) -> Option<Limit> {
         if !(nu > -1.0 && nu < 0.5) {
             return None;
         }
-        let text = err.to_string();
         let gamma = gamma_of(nu);
+        let at_end = match failure {
+            Failure::Plan(PlanError::RootAtEnd(r)) => Some(r.as_ref()),
+            Failure::Spurious(_) => None,
+            Failure::Plan(_) => return None,
+        };
+        let no_sign_change =
+            at_end.is_some_and(|r| matches!(r.reason, EndReason::NoSignChange { .. }));
         match given {
             Given::Mu(mu) if mu > 0.0 && mu.is_finite() => {
-                if text.contains("closer to the end 1 ") {
+                if no_sign_change && at_end.is_some_and(|r| r.end == RangeEnd::Upper) {
                     return Some(Limit::ThinSlip {
                         one_minus_c_infinity_heuristic: thin_slip_heuristic(gamma),
                         compliance_full_stick: gamma.atanh() / gamma,
@@ -256,24 +313,19 @@ impl Limit {
                 let (klo, khi) = SMALL_FRICTION_CORRECTION;
                 let c_at = |k: f64| c0 * (-a / mu + k * gamma * mu).exp();
                 let c_hi = c_at(khi);
-                // Refusals of roots near 0: the solver's "closer than … to an
-                // end" and the front's spurious free boundary, where the
-                // asymptotic c is at most 1e-8 (the noisy zone starts near
-                // 1e-9, the scan stops at 1e-10).
-                let near_end = text.contains("closer than")
-                    || text.contains("closer to the end 0 ")
-                    || text.contains("noisy")
-                    || text.contains("spurious free boundary");
-                (near_end && c_hi <= 1e-8).then(|| Limit::SmallFriction {
+                (c_hi <= 1e-8).then(|| Limit::SmallFriction {
                     exponent: a,
                     c_asymptotic: (c_at(klo), c_hi),
                     compliance_asymptotic: 1.0 + gamma * mu * (1.0 - FRAC_2_PI),
                     mu_resolved: a / (c0 / RESOLVED_STICK).ln(),
                 })
             }
-            Given::C(_) if text.contains("closer to the end inf") => {
-                Some(Limit::BeyondLargeFriction {
-                    one_minus_c_infinity_heuristic: thin_slip_heuristic(gamma),
+            Given::C(_) => {
+                let r = at_end.filter(|_| no_sign_change)?;
+                (r.end == RangeEnd::Upper || r.levels_off(RangeEnd::Lower, 1e-6)).then(|| {
+                    Limit::BeyondLargeFriction {
+                        one_minus_c_infinity_heuristic: thin_slip_heuristic(gamma),
+                    }
                 })
             }
             _ => None,
@@ -441,21 +493,42 @@ pub fn solve_with_limit(
     given: Given,
     opts: &SplitOptions,
 ) -> Result<HertzResult, Refusal> {
-    solve_inner(nu, given, opts).map_err(|error| match Limit::classify(nu, given, &error) {
-        Some(limit) => Refusal {
-            error: no_convergence(limit.message(nu, given, &error)),
-            limit: Some(limit),
-        },
-        None => Refusal { error, limit: None },
+    solve_inner(nu, given, opts).map_err(|failure| {
+        let limit = Limit::classify(nu, given, &failure);
+        let error = match failure {
+            Failure::Plan(e) | Failure::Spurious(e) => e,
+        };
+        match limit {
+            Some(limit) => Refusal {
+                error: no_convergence(limit.message(nu, given, &error)),
+                limit: Some(limit),
+            },
+            None => Refusal { error, limit: None },
+        }
     })
 }
 
-fn solve_inner(nu: f64, given: Given, opts: &SplitOptions) -> Result<HertzResult, PlanError> {
+/// Why [`solve_inner`] gave no result: the split solver's (or the input's)
+/// error, or the front's own refusal of a spurious free boundary (a root
+/// of the condition at which the shear still jumps).
+enum Failure {
+    Plan(PlanError),
+    Spurious(PlanError),
+}
+
+impl From<PlanError> for Failure {
+    fn from(e: PlanError) -> Failure {
+        Failure::Plan(e)
+    }
+}
+
+fn solve_inner(nu: f64, given: Given, opts: &SplitOptions) -> Result<HertzResult, Failure> {
     if !(opts.tol > 0.0 && opts.tol.is_finite()) {
         return Err(invalid(format!(
             "--tol {}: the tolerance must be a finite number > 0, e.g. 1e-10",
             opts.tol
-        )));
+        ))
+        .into());
     }
     let (src, sets) = plan(nu, given)?;
     let prog = program(src, &sets)?;
@@ -494,35 +567,70 @@ fn solve_inner(nu: f64, given: Given, opts: &SplitOptions) -> Result<HertzResult
         r.levels,
         r.cond,
     );
+    // Each level's (μ, c): the scalar of the file is the one not given.
+    // (the first slot; none without shear).
+    let found = match given {
+        Given::C(_) => Found::Mu,
+        Given::Mu(_) if src == GIVEN_MU => Found::C,
+        Given::Mu(_) => Found::Nothing,
+    };
+    let level_mu_c = |scalar: Option<f64>| found.mu_c(scalar, mu, c);
     let (slip, pq, residual_c, shear_jump_at_c) = {
-        let f = Fields::new(&solution.problem, &solution.discrete)?;
+        let lf = LevelFields::new(&solution)?;
+        let f = &lf.last;
         let (Some(p), Some(q)) = (f.unknown_index("p"), f.unknown_index("q")) else {
-            return Err(invalid("the Hertz file must have unknowns p and q".into()));
+            return Err(invalid("the Hertz file must have unknowns p and q".into()).into());
         };
         // E2 (κ3 p + κ4 q = 0 on the stick zone) is the file's second equation.
         let e2 = 1;
-        let slip = if c < 1.0 {
-            Some(f.residual_field(e2, (c, 1.0))?)
-        } else {
-            None
-        };
-        let (mut residual_c, mut jump) = (0.0, 0.0);
+        let slip = slip_field(f, c)?;
+        let (mut residual_c, mut jump) = (Valued::ZERO, Valued::ZERO);
         if c > 0.0 && c < 1.0 {
-            residual_c = f.residual(e2, c)? / c;
+            // Each level at its own c, as its scalars are compared.
+            let own_c = |f: &Fields| level_mu_c(f.slot(0)).1;
+            residual_c = lf.estimate(|f| {
+                let c = own_c(f);
+                Ok(f.residual(e2, c)? / c)
+            })?;
+            jump = lf.estimate(|f| {
+                let c = own_c(f);
+                Ok(f.regular_value(q, c, Approach::Below)? - f.value(q, c, Approach::Above)?)
+            })?;
             let mu_p = mu * f.value(p, c, Approach::Above)?;
-            jump = f.regular_value(q, c, Approach::Below)? - f.value(q, c, Approach::Above)?;
+            // The residual is a sum of terms of the size of the stresses at
+            // c, each rounded: a floor of 64 ulps of that size (measured:
+            // the levels' values scatter by up to 4e-15 at c ≈ 0.5).
+            let stresses = f
+                .value(p, c, Approach::Above)?
+                .abs()
+                .max(mu_p.abs())
+                .max(1.0);
+            residual_c.error = residual_c.error.max(64.0 * f64::EPSILON * stresses / c);
             // A root of the bounded-shear condition whose shear still jumps
             // at c is not the physical free boundary (measured at ν = 0:
             // c ≲ 4e-4, μ ≲ 0.065, where the condition degenerates).
-            if jump.is_nan() || jump.abs() > 0.1 * mu_p.abs() {
-                return Err(no_convergence(format!(
-                    "spurious free boundary at c = {c:.4e}, μ = {mu:.4e}: q(c⁻) - μp(c) = {jump:.3e} (μp(c) = {:.3e}); \
+            if jump.value.is_nan() || jump.value.abs() > 0.1 * mu_p.abs() {
+                return Err(Failure::Spurious(no_convergence(format!(
+                    "spurious free boundary at c = {c:.4e}, μ = {mu:.4e}: q(c⁻) - μp(c) = {:.3e} (μp(c) = {:.3e}); \
                      c this close to 0 or 1 is outside the solver's reliable range",
+                    jump.value,
                     mu_p.abs()
-                )));
+                ))));
             }
         }
         (slip, (p, q), residual_c, jump)
+    };
+    // Without a free boundary (no shear: c = 0 or 1) both are zero by
+    // definition, not computed, and carry no estimate.
+    let field_error_estimates = if c > 0.0 && c < 1.0 {
+        [
+            ("residual_c".to_string(), residual_c.error),
+            ("shear_jump_at_c".to_string(), shear_jump_at_c.error),
+        ]
+        .into_iter()
+        .collect()
+    } else {
+        BTreeMap::new()
     };
     let mut s = HertzResult {
         nu,
@@ -538,8 +646,9 @@ fn solve_inner(nu: f64, given: Given, opts: &SplitOptions) -> Result<HertzResult
         tol,
         stick_ok: false,
         slip_ok: false,
-        residual_c,
-        shear_jump_at_c,
+        residual_c: residual_c.value,
+        shear_jump_at_c: shear_jump_at_c.value,
+        field_error_estimates,
         unknowns,
         levels,
         condition,
@@ -549,8 +658,9 @@ fn solve_inner(nu: f64, given: Given, opts: &SplitOptions) -> Result<HertzResult
         solution,
         slip,
         pq,
+        found,
     };
-    let samples = s.sample(&profile_points(c, 200))?;
+    let samples = s.sample_last(&profile_points(c, 200))?;
     // A point closer to c than c's own uncertainty is in neither zone: at
     // x = c + 6e-16 the slip is a rounding-level ±1e-19.
     let blur = if error_estimate.is_finite() {
@@ -593,35 +703,12 @@ impl HertzResult {
         self.fields()?.value(self.pq.1, x, Approach::Above)
     }
 
-    /// Slip `u(x) = -(2/(πx)) ∫_c^x s r(s)/√(x²-s²) ds` on `(c, 1]` with
-    /// `r` E2's residual on the slip zone; zero in the stick zone.
-    fn slip_at(&self, xs: &[f64]) -> Result<Vec<f64>, PlanError> {
-        let Some(r) = &self.slip else {
-            return Ok(vec![0.0; xs.len()]);
-        };
-        let op = Operator::abel_lower(self.c, |_x, s| s);
-        let asm = Assembler::new(&r.basis).map_err(PlanError::numeric("slip"))?;
-        xs.iter()
-            .map(|&x| {
-                if x <= self.c {
-                    return Ok(0.0);
-                }
-                let mut row = vec![0.0; r.basis.dim()];
-                asm.row_into(&op, x.min(1.0), r.basis.support(), &mut row)
-                    .map_err(PlanError::numeric("slip"))?;
-                let v: f64 = row.iter().zip(&r.values).map(|(a, b)| a * b).sum();
-                Ok(-FRAC_2_PI / x * v)
-            })
-            .collect()
-    }
-
-    /// `p, q, μp, u` at the points `xs` (each in `[0, 1)`).
-    pub fn sample(&self, xs: &[f64]) -> Result<Vec<Sample>, PlanError> {
-        if let Some(x) = xs.iter().find(|x| !(0.0..1.0).contains(*x)) {
-            return Err(invalid(format!("sample point {x} not in [0,1)")));
-        }
+    /// `p, q, μp, u` at the points `xs` (each in `[0, 1)`) on the last
+    /// level only (no estimates: `*_err` are NaN); for the checks.
+    fn sample_last(&self, xs: &[f64]) -> Result<Vec<Sample>, PlanError> {
+        check_points(xs)?;
         let f = self.fields()?;
-        let u = self.slip_at(xs)?;
+        let u = slip_at(&self.slip, self.c, xs)?;
         xs.iter()
             .zip(u)
             .map(|(&x, u)| {
@@ -629,9 +716,75 @@ impl HertzResult {
                 Ok(Sample {
                     x,
                     p,
+                    p_err: f64::NAN,
                     q: f.value(self.pq.1, x, Approach::Above)?,
+                    q_err: f64::NAN,
                     mu_p: self.mu * p,
+                    mu_p_err: f64::NAN,
                     u,
+                    u_err: f64::NAN,
+                })
+            })
+            .collect()
+    }
+
+    /// `p, q, μp, u` at the points `xs` (each in `[0, 1)`), each with its
+    /// estimate ([`LevelFields`]): the largest distance to the previous
+    /// level's value over a window around the point (that level at its own
+    /// c and μ), plus what c's own estimate makes uncertain near c
+    /// ([`LevelFields::shift_term`]).
+    pub fn sample(&self, xs: &[f64]) -> Result<Vec<Sample>, PlanError> {
+        check_points(xs)?;
+        let lf = LevelFields::new(&self.solution)?;
+        let own = |f: &Fields| self.found.mu_c(f.slot(0), self.mu, self.c);
+        let windows: Vec<Vec<(f64, Approach)>> =
+            xs.iter().map(|&x| lf.window(x, Approach::Above)).collect();
+        // The slip of each level at every window point at once (one
+        // assembly row per point), each level at its own c.
+        let flat: Vec<f64> = windows.iter().flatten().map(|w| w.0).collect();
+        let u_last = slip_at(&self.slip, self.c, &flat)?;
+        let other = |f: &Option<Fields>, pts: &[f64]| -> Result<Option<Vec<f64>>, PlanError> {
+            match f {
+                Some(f) => {
+                    let c = own(f).1;
+                    Ok(Some(slip_at(&slip_field(f, c)?, c, pts)?))
+                }
+                None => Ok(None),
+            }
+        };
+        let u_prev = other(&lf.previous, &flat)?;
+        let mut at = 0;
+        xs.iter()
+            .zip(&windows)
+            .map(|(&x, w)| {
+                let p = lf.value(self.pq.0, x, Approach::Above)?;
+                let q = lf.value(self.pq.1, x, Approach::Above)?;
+                let mu_p = lf.windowed(x, Approach::Above, |f, y, s| {
+                    Ok(own(f).0 * f.value(self.pq.0, y, s)?)
+                })?;
+                let range = at..at + w.len();
+                at += w.len();
+                let finite = |d: f64| if d.is_nan() { f64::INFINITY } else { d };
+                let mut u_err = match &u_prev {
+                    Some(up) => range
+                        .clone()
+                        .fold(0.0f64, |m, j| m.max(finite((u_last[j] - up[j]).abs()))),
+                    None => f64::INFINITY,
+                };
+                // u vanishes at c (continuously): its shift term uses u(c) = 0.
+                if let Some(end) = lf.moving_end(x, Approach::Above) {
+                    u_err += LevelFields::shift_term(x, end, u_last[range.start], 0.0);
+                }
+                Ok(Sample {
+                    x,
+                    p: p.value,
+                    p_err: p.error,
+                    q: q.value,
+                    q_err: q.error,
+                    mu_p: mu_p.value,
+                    mu_p_err: mu_p.error,
+                    u: u_last[range.start],
+                    u_err,
                 })
             })
             .collect()
@@ -656,6 +809,48 @@ impl HertzResult {
         let stick: Vec<f64> = inner.iter().copied().filter(|&x| x < self.c).collect();
         Ok((worst(0, inner)?, worst(1, stick)?))
     }
+}
+
+/// Refuses sample points outside `[0, 1)`.
+fn check_points(xs: &[f64]) -> Result<(), PlanError> {
+    match xs.iter().find(|x| !(0.0..1.0).contains(*x)) {
+        Some(x) => Err(invalid(format!("sample point {x} not in [0,1)"))),
+        None => Ok(()),
+    }
+}
+
+/// E2's residual interpolated on the slip zone `[c, 1]` of one level
+/// (`None` when there is no slip zone). E2 (κ3 p + κ4 q = 0 on the stick
+/// zone) is the file's second equation.
+fn slip_field(f: &Fields, c: f64) -> Result<Option<ResidualField>, PlanError> {
+    if c < 1.0 {
+        Ok(Some(f.residual_field(1, (c, 1.0))?))
+    } else {
+        Ok(None)
+    }
+}
+
+/// Slip `u(x) = -(2/(πx)) ∫_c^x s r(s)/√(x²-s²) ds` on `(c, 1]` with `r`
+/// E2's residual on the slip zone (`slip`, of a level whose stick radius
+/// is `c`); zero in the stick zone.
+fn slip_at(slip: &Option<ResidualField>, c: f64, xs: &[f64]) -> Result<Vec<f64>, PlanError> {
+    let Some(r) = slip else {
+        return Ok(vec![0.0; xs.len()]);
+    };
+    let op = Operator::abel_lower(c, |_x, s| s);
+    let asm = Assembler::new(&r.basis).map_err(PlanError::numeric("slip"))?;
+    xs.iter()
+        .map(|&x| {
+            if x <= c {
+                return Ok(0.0);
+            }
+            let mut row = vec![0.0; r.basis.dim()];
+            asm.row_into(&op, x.min(1.0), r.basis.support(), &mut row)
+                .map_err(PlanError::numeric("slip"))?;
+            let v: f64 = row.iter().zip(&r.values).map(|(a, b)| a * b).sum();
+            Ok(-FRAC_2_PI / x * v)
+        })
+        .collect()
 }
 
 /// `n` equal steps of `[0,1)` plus points geometrically clustered toward

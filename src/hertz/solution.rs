@@ -234,12 +234,18 @@ impl HertzSolution {
                 }
                 _ => 0.0,
             };
+            // The oracle has no pointwise estimate of its own.
+            let none = f64::INFINITY;
             out.push(Sample {
                 x,
                 p,
+                p_err: none,
                 q: self.q(x),
+                q_err: none,
                 mu_p: self.mu * p,
+                mu_p_err: none,
                 u,
+                u_err: none,
             });
         }
         Ok(out)

@@ -28,27 +28,6 @@ use super::product::{ETA, RuleCache, composite_rule};
 /// Extra quadrature nodes per panel beyond its interpolation nodes.
 pub const DEFAULT_EXTRA_NODES: usize = 10;
 
-/// Distance (in panel lengths) from a diagonal singular point beyond which
-/// a panel that counts as near (closer than [`ETA`] lengths) is still
-/// integrated by a rule prepared once per panel, with
-/// [`MID_EXTRA_NODES`] more nodes than the far rule, instead of a product
-/// rule split toward the point. At a distance `δ·h` the integrand is
-/// analytic inside the Bernstein ellipse of parameter
-/// `ρ = 1 + 2δ + 2√(δ² + δ) ≥ 2.62` (δ = 1/4), so the prepared rule's
-/// error falls like `ρ^(-2·extra)`: `2.62^(-40) ≈ 2e-17` with
-/// `extra = 20` (the far rule: `ρ ≥ 5.83`, `5.83^(-20) ≈ 5e-16`; the
-/// unit test finds the two equally accurate for 3 to 15 nodes, and the
-/// test fails with 2 extra nodes instead of 10). On the
-/// geometric meshes of the split solver most near panels are of this kind
-/// (every panel of a grading but the two next to the collocation point's
-/// own), and the split rule cost a Lagrange evaluation and a power per
-/// node (measured: about half of the assembly time).
-pub const MID_DISTANCE: f64 = 0.25;
-
-/// Extra nodes of the prepared rule for panels between [`MID_DISTANCE`]
-/// and [`ETA`] lengths from the singular point, beyond the far rule's.
-pub const MID_EXTRA_NODES: usize = 10;
-
 struct FarRule {
     t: Vec<f64>,
     w: Vec<f64>,
@@ -60,9 +39,6 @@ struct FarRule {
 pub struct Assembler<'b> {
     basis: &'b PanelBasis,
     far: Vec<FarRule>,
-    /// Per panel, the rule for panels [`MID_DISTANCE`] to [`ETA`] lengths
-    /// from the singular point.
-    mid: Vec<FarRule>,
     cache: &'static RuleCache,
     extra: usize,
 }
@@ -81,26 +57,27 @@ impl<'b> Assembler<'b> {
     ) -> Result<Assembler<'b>, NumericError> {
         let cache = RuleCache::shared();
         let mut far = Vec::with_capacity(basis.panels.len());
-        let mut mid = Vec::with_capacity(basis.panels.len());
         for p in &basis.panels {
             let n = p.nodes.len();
-            for (rules, m) in [
-                (&mut far, n.div_ceil(2) + extra),
-                (&mut mid, n.div_ceil(2) + extra + MID_EXTRA_NODES),
-            ] {
-                let (mut t, mut w) = (Vec::new(), Vec::new());
-                composite_rule(p.a, p.b, &basis.weight, m, cache, &mut t, &mut w)?;
-                let mut lag = vec![0.0; t.len() * n];
-                for (q, &tq) in t.iter().enumerate() {
-                    p.lagrange(tq, &mut lag[q * n..(q + 1) * n]);
-                }
-                rules.push(FarRule { t, w, lag });
+            let (mut t, mut w) = (Vec::new(), Vec::new());
+            composite_rule(
+                p.a,
+                p.b,
+                &basis.weight,
+                n.div_ceil(2) + extra,
+                cache,
+                &mut t,
+                &mut w,
+            )?;
+            let mut lag = vec![0.0; t.len() * n];
+            for (q, &tq) in t.iter().enumerate() {
+                p.lagrange(tq, &mut lag[q * n..(q + 1) * n]);
             }
+            far.push(FarRule { t, w, lag });
         }
         Ok(Assembler {
             basis,
             far,
-            mid,
             cache,
             extra,
         })
@@ -273,19 +250,8 @@ impl<'b> Assembler<'b> {
             };
             let clipped = seg.0 > p.a || seg.1 < p.b;
             let out = &mut row[p.offset..p.offset + n];
-            let prepared = if clipped {
-                None
-            } else if !near {
-                Some(&self.far[k])
-            } else {
-                let apart = |z: f64| dist(z) >= MID_DISTANCE * h;
-                match sing {
-                    Singularity::AbelSqrt if apart(x) && apart(-x) => Some(&self.mid[k]),
-                    Singularity::Power { .. } if apart(x) => Some(&self.mid[k]),
-                    _ => None,
-                }
-            };
-            if let Some(f) = prepared {
+            if !clipped && !near {
+                let f = &self.far[k];
                 for (q, (&t, &w)) in f.t.iter().zip(&f.w).enumerate() {
                     let mut v = c * w * a(x, t);
                     match sing {
@@ -343,75 +309,5 @@ impl<'b> Assembler<'b> {
         let (l, h) = self.basis.support();
         self.row_into(&op, 0.0, (l, h), &mut row)?;
         Ok(row)
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::numeric::Mesh;
-
-    /// The largest difference, relative to the largest entry, between the
-    /// row of `∫_0.5^1 (t + x²) φ_j(t) (1-t)^(-0.3) / √|t² - x²| dt` at
-    /// `x = 0.5 - δ·h` as assembled and by the product rule split toward
-    /// `±x` with 40 nodes per piece.
-    fn row_error(n: usize, delta: f64) -> f64 {
-        let weight = vec![Factor {
-            at: 1.0,
-            exponent: -0.3,
-        }];
-        let mesh = Mesh::from_breaks(vec![0.5, 1.0]).unwrap();
-        let basis = PanelBasis::new(&mesh, &[n], weight.clone()).unwrap();
-        let asm = Assembler::new(&basis).unwrap();
-        let p = &basis.panels[0];
-        let x = p.a - delta * (p.b - p.a);
-        let op = Operator::abel_fixed(0.5, 1.0, |x, t| t + x * x);
-        let mut row = vec![0.0; n];
-        asm.row_into(&op, x, (0.5, 1.0), &mut row).unwrap();
-        let mut factors = weight;
-        factors.push(Factor {
-            at: x,
-            exponent: -0.5,
-        });
-        factors.push(Factor {
-            at: -x,
-            exponent: -0.5,
-        });
-        let (mut ts, mut ws) = (Vec::new(), Vec::new());
-        let cache = RuleCache::new();
-        composite_rule(p.a, p.b, &factors, 40, &cache, &mut ts, &mut ws).unwrap();
-        let mut exact = vec![0.0; n];
-        let mut lag = vec![0.0; n];
-        for (&t, &w) in ts.iter().zip(&ws) {
-            p.lagrange(t, &mut lag);
-            for (e, l) in exact.iter_mut().zip(&lag) {
-                *e += w * (t + x * x) * l;
-            }
-        }
-        let scale = exact.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-        row.iter()
-            .zip(&exact)
-            .map(|(a, b)| (a - b).abs() / scale)
-            .fold(0.0, f64::max)
-    }
-
-    /// Panels between [`MID_DISTANCE`] and [`ETA`] lengths from the
-    /// collocation point (the prepared mid rule) are as accurate as far
-    /// panels (the prepared far rule, whose difference from the reference
-    /// is the rules' own rounding, a few 1e-14 at 15 nodes), for every node
-    /// count the split solver uses, with an edge weight like the Hertz
-    /// pressure's.
-    #[test]
-    fn the_prepared_near_rule_is_as_accurate_as_the_far_rule() {
-        for n in 3..=15 {
-            let far = [1.5, 3.0].map(|d| row_error(n, d));
-            let far = far[0].max(far[1]);
-            let mid = [MID_DISTANCE, 0.3, 0.5, 0.75, 0.99].map(|d| row_error(n, d));
-            let mid = mid.iter().fold(0.0f64, |m, v| m.max(*v));
-            assert!(
-                mid <= (2.0 * far).max(1e-14) && mid < 1e-13,
-                "{n} nodes: near {mid:e}, far {far:e}"
-            );
-        }
     }
 }

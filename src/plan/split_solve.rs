@@ -21,7 +21,7 @@
 //! the discretisation is `split.rs`'s.
 use serde::Serialize;
 
-use super::error::PlanError;
+use super::error::{EndReason, PlanError, RangeEnd, RootAtEnd};
 use super::split::{Discrete, SplitLevel, SplitProblem};
 use super::split_input::SplitInput;
 use crate::numeric::NumericError;
@@ -105,6 +105,14 @@ pub struct SplitSolution {
     pub problem: SplitProblem,
     /// The discrete solution on the last level, at the scalars reported.
     pub discrete: Discrete,
+    /// The discrete solution on the level before (at that level's
+    /// scalars), when more than one level was climbed: the fields of the
+    /// two levels at the same points give the fields' own error estimate
+    /// (`split_fields::LevelFields`), as the two levels' scalars and
+    /// outputs give theirs.
+    pub previous: Option<Discrete>,
+    /// The last level's index in the ladder of [`SplitLevel::level`].
+    pub level: usize,
 }
 
 /// Solves `prog` (a file with split-domain declarations).
@@ -150,6 +158,7 @@ pub fn solve_split_input_fields(
         )));
     }
     let mut levels: Vec<Level> = Vec::new();
+    let mut previous: Option<Discrete> = None;
     for k in 0..=opts.max_level {
         let lvl = SplitLevel::level(k);
         let (d, scalars, slope) = if ns == 0 {
@@ -194,9 +203,12 @@ pub fn solve_split_input_fields(
                 report,
                 problem,
                 discrete: d,
+                previous,
+                level: k,
             });
         }
         levels.push(this);
+        previous = Some(d);
     }
     Err(PlanError::Invalid("empty level ladder".into()))
 }
@@ -482,6 +494,7 @@ fn find_scalar(
     tol: f64,
 ) -> Result<(f64, f64, Discrete), PlanError> {
     let (lo, hi) = problem.contact.scalars[0].range;
+    let name = problem.contact.scalars[0].name.as_str();
     let map = ScalarMap { lo, hi };
     // Every discretisation of this level, by the scalar's value: the
     // condition at a value already seen (the pole check and the slope
@@ -531,20 +544,25 @@ fn find_scalar(
                 None => {
                     let (a, fa, b, fb) = local_bracket(&mut f, s0, f0, &map)?;
                     let s = brent(&mut f, a, fa, b, fb, stol)?;
-                    check_not_pole(&mut f, map.x(s), s, fa, fb, map.near_end(s))?;
+                    if let Err(e) = check_not_pole(&mut f, s, fa, fb, &map) {
+                        return Err(at_end(e, name, &evals.borrow()));
+                    }
                     (s, l.slope)
                 }
             }
         }
         None => {
-            let brackets = scan(&mut f, &map)?;
-            let mut rejected: Vec<String> = Vec::new();
+            let scanned = match scan(&mut f, &map) {
+                Ok(b) => b,
+                Err(e) => return Err(at_end(e, name, &evals.borrow())),
+            };
+            let mut rejected: Vec<(f64, String)> = Vec::new();
             let mut found = None;
-            for (a, fa, b, fb) in brackets {
+            for &(a, fa, b, fb) in &scanned.brackets {
                 let stol = map.s_tolerance(a, xtol).min(map.s_tolerance(b, xtol));
                 let s = brent(&mut f, a, fa, b, fb, stol)?;
-                if let Err(e) = check_not_pole(&mut f, map.x(s), s, fa, fb, map.near_end(s)) {
-                    rejected.push(e.to_string());
+                if let Err(e) = check_not_pole(&mut f, s, fa, fb, &map) {
+                    rejected.push((map.x(s), e.to_string()));
                     continue;
                 }
                 let x = map.x(s);
@@ -558,9 +576,12 @@ fn find_scalar(
                     }
                 };
                 if let Some((u, x, v, w)) = problem.relation_violation(d) {
-                    rejected.push(format!(
-                        "the root {:.6e} violates the bound of its relation: |{u}| = {v:.3e} > {w:.3e} at x = {x:.4e}, where {u} is free",
-                        map.x(s)
+                    rejected.push((
+                        map.x(s),
+                        format!(
+                            "the root {:.6e} violates the bound of its relation: |{u}| = {v:.3e} > {w:.3e} at x = {x:.4e}, where {u} is free",
+                            map.x(s)
+                        ),
                     ));
                     continue;
                 }
@@ -568,17 +589,38 @@ fn find_scalar(
                 break;
             }
             let Some(s) = found else {
-                return Err(PlanError::Numeric {
-                    context: "scalar root".into(),
-                    source: NumericError::NoConvergence(format!(
-                        "no admissible root of the condition in ({lo}, {hi}) between {:.3e} and {:.3e}: {}; an admissible root, if any, lies closer than {:.1e} (relative) to the end {lo} or {:.1e} to the end {hi}, which the solver does not resolve",
-                        map.x(-S_LIMIT_LO),
-                        map.x(S_LIMIT),
-                        rejected.join("; "),
-                        (-S_LIMIT_LO).exp(),
-                        (-S_LIMIT).exp()
-                    )),
-                });
+                // The admissible root, if any, is beyond the resolved range
+                // at the end where the condition is smaller in size.
+                let (left, right) = (scanned.left, scanned.right);
+                let toward_hi = right.1.abs() < left.1.abs();
+                let (end, end_value, reached, resolved) = if toward_hi {
+                    (RangeEnd::Upper, hi, map.x(right.0), (-S_LIMIT).exp())
+                } else {
+                    (RangeEnd::Lower, lo, map.x(left.0), (-S_LIMIT_LO).exp())
+                };
+                let message = format!(
+                    "no admissible root of the condition in ({lo}, {hi}) between {:.3e} and {:.3e}: {}; an admissible root, if any, lies closer than {:.1e} (relative) to the end {lo} or {:.1e} to the end {hi}, which the solver does not resolve",
+                    map.x(-S_LIMIT_LO),
+                    map.x(S_LIMIT),
+                    rejected
+                        .iter()
+                        .map(|r| r.1.as_str())
+                        .collect::<Vec<_>>()
+                        .join("; "),
+                    (-S_LIMIT_LO).exp(),
+                    (-S_LIMIT).exp()
+                );
+                let e = PlanError::RootAtEnd(Box::new(RootAtEnd {
+                    scalar: String::new(),
+                    end,
+                    end_value,
+                    resolved,
+                    reached,
+                    trend: Vec::new(),
+                    reason: EndReason::NoneAdmissible { rejected },
+                    message,
+                }));
+                return Err(at_end(e, name, &evals.borrow()));
             };
             let h = 1e-6;
             let slope = (f(s + h)? - f(s)?) / h;
@@ -605,7 +647,7 @@ fn find_scalar(
 /// the Coulomb bound. No sign change at all is refused, naming the end
 /// toward which the condition kept its sign.
 #[allow(clippy::type_complexity)]
-fn scan<F>(f: &mut F, map: &ScalarMap) -> Result<Vec<(f64, f64, f64, f64)>, PlanError>
+fn scan<F>(f: &mut F, map: &ScalarMap) -> Result<Scan, PlanError>
 where
     F: FnMut(f64) -> Result<f64, PlanError>,
 {
@@ -680,12 +722,20 @@ where
         }
     }
     if !out.is_empty() {
-        return Ok(out);
+        return Ok(Scan {
+            brackets: out,
+            left,
+            right: last,
+        });
     }
     let (right, rb, r_err) = extend(f, last, 1.0);
     out.extend(rb);
     if !out.is_empty() {
-        return Ok(out);
+        return Ok(Scan {
+            brackets: out,
+            left,
+            right,
+        });
     }
     // It keeps one sign; the root, if any, lies beyond the end where |f|
     // is smaller.
@@ -695,20 +745,61 @@ where
     } else {
         (lo, map.x(left.0), l_err)
     };
-    let why = match err {
+    let why = match &err {
         Some(e) => format!(" (beyond it the discretisation fails: {e})"),
         None => String::new(),
     };
-    Err(PlanError::Numeric {
-        context: "scalar root".into(),
-        source: NumericError::NoConvergence(format!(
+    Err(PlanError::RootAtEnd(Box::new(RootAtEnd {
+        scalar: String::new(),
+        end: if toward_hi {
+            RangeEnd::Upper
+        } else {
+            RangeEnd::Lower
+        },
+        end_value: end,
+        resolved: (-if toward_hi { S_LIMIT } else { S_LIMIT_LO }).exp(),
+        reached,
+        trend: Vec::new(),
+        reason: EndReason::NoSignChange {
+            failed_beyond: err.map(|e| e.to_string()),
+        },
+        message: format!(
             "no sign change of the condition in ({lo}, {hi}): it keeps one sign from {:.6e} to {:.6e} and is smallest in size toward {end} (reached {reached:.6e}, {:.3e} from it){why}; the root, if any, lies closer to the end {end} than the solver resolves ({:.1e} relative)",
             map.x(left.0),
             map.x(right.0),
             (end - reached).abs(),
             (-if toward_hi { S_LIMIT } else { S_LIMIT_LO }).exp(),
-        )),
-    })
+        ),
+    })))
+}
+
+/// What [`scan`] found: the brackets of sign changes, lowest first, and
+/// the points `(s, condition)` it reached toward the lower and the upper
+/// end.
+struct Scan {
+    brackets: Vec<(f64, f64, f64, f64)>,
+    left: (f64, f64),
+    right: (f64, f64),
+}
+
+/// `e` with the scalar's name and the condition's measured trend (every
+/// evaluation of the level, ascending in the scalar) filled in, if it is a
+/// [`PlanError::RootAtEnd`].
+fn at_end(e: PlanError, scalar: &str, evals: &[(f64, Discrete)]) -> PlanError {
+    match e {
+        PlanError::RootAtEnd(mut r) => {
+            r.scalar = scalar.to_string();
+            let mut trend: Vec<(f64, f64)> = evals
+                .iter()
+                .filter_map(|(x, d)| d.residuals.first().map(|&v| (*x, v)))
+                .collect();
+            trend.sort_by(|a, b| a.0.total_cmp(&b.0));
+            trend.dedup_by(|a, b| a.0 == b.0);
+            r.trend = trend;
+            PlanError::RootAtEnd(r)
+        }
+        e => e,
+    }
 }
 
 /// A bracket around `s0` (the map's variable) by steps growing outward on
@@ -763,17 +854,14 @@ where
 /// (there `|f(s)|/|f(s ± δ)| ≈ δ/|s − pole| ≫ 10`). The condition's own
 /// scale does not enter (it is tiny when the scalar is: `B ∝ c` for a
 /// stick radius `c → 0`), only its local shape.
-fn check_not_pole<F>(
-    f: &mut F,
-    x: f64,
-    s: f64,
-    fa: f64,
-    fb: f64,
-    near_end: bool,
-) -> Result<(), PlanError>
+///
+/// Near an end of the range a refusal is a [`PlanError::RootAtEnd`] (the
+/// root may be one the solver cannot place).
+fn check_not_pole<F>(f: &mut F, s: f64, fa: f64, fb: f64, map: &ScalarMap) -> Result<(), PlanError>
 where
     F: FnMut(f64) -> Result<f64, PlanError>,
 {
+    let x = map.x(s);
     let fx = f(s)?;
     if fx == 0.0 || fx.abs() <= 1e-9 * (fa.abs() + fb.abs()) {
         return Ok(());
@@ -792,17 +880,35 @@ where
         ratio = 0.1;
         (fl, fr) = (f(s - delta)?, f(s + delta)?);
     }
-    Err(PlanError::Numeric {
-        context: "scalar root".into(),
-        source: NumericError::NoConvergence(format!(
-            "the condition changes sign across a pole near {x:.6e} (value {fx:.3e}, {fl:.3e} and {fr:.3e} at s ∓ {delta}), not a root{}",
-            if near_end {
-                "; this close to an end of the range the discrete condition is noisy (measured on the Hertz problem: about 4e-16/c at a stick radius c), so this may be a root the solver cannot place"
-            } else {
-                ""
-            }
-        )),
-    })
+    let base = format!(
+        "the condition changes sign across a pole near {x:.6e} (value {fx:.3e}, {fl:.3e} and {fr:.3e} at s ∓ {delta}), not a root"
+    );
+    if !map.near_end(s) {
+        return Err(PlanError::Numeric {
+            context: "scalar root".into(),
+            source: NumericError::NoConvergence(base),
+        });
+    }
+    let (end, end_value, resolved) = if s < 0.0 {
+        (RangeEnd::Lower, map.lo, (-S_LIMIT_LO).exp())
+    } else {
+        (RangeEnd::Upper, map.hi, (-S_LIMIT).exp())
+    };
+    Err(PlanError::RootAtEnd(Box::new(RootAtEnd {
+        scalar: String::new(),
+        end,
+        end_value,
+        resolved,
+        reached: x,
+        trend: Vec::new(),
+        reason: EndReason::Noisy {
+            at: x,
+            values: (fl, fx, fr),
+        },
+        message: format!(
+            "{base}; this close to an end of the range the discrete condition is noisy (measured on the Hertz problem: about 4e-16/c at a stick radius c), so this may be a root the solver cannot place"
+        ),
+    })))
 }
 
 /// The widest probe of [`check_not_pole`] in the map's variable `s`.
