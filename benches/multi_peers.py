@@ -13,6 +13,8 @@ most DEG, integer coefficients in [-9, 9]; about one entry in six is zero.
                    Q(others)[s_K] (the symbol renamed to PARI's highest-
                    priority variable);
   --pari           time PARI/GP (principal mode; needs --principal);
+  --pari-flag F    matsnf's flag: 3 (U, V, D; default) or 2 (D only);
+  --timeout S      give each peer S seconds (default 120);
   --singular       time Singular's determinantal divisors (gcd of the k×k
                    minors for every k).
 Prints one line per peer: peer seconds (CPU, measured inside the peer) and
@@ -22,6 +24,7 @@ import subprocess
 import sys
 
 NAMES = ["x", "y", "z", "w"]
+TIMEOUT = 120
 
 
 def gen(n, nv, deg, seed, terms):
@@ -60,18 +63,18 @@ def lmx(m, names):
     return f"var {', '.join(names)}\nmatrix A = [\n  {rows}\n]\nsmith A\n"
 
 
-def run_pari(m, nv, principal):
+def run_pari(m, nv, principal, flag):
     # PARI's x has the highest priority: the principal symbol becomes x.
     names = [f"a{i}" for i in range(nv)]
     names[principal] = "x"
     rows = ";".join(",".join(poly_str(e, names) for e in row) for row in m)
     prog = (
-        f"M=[{rows}];t=getabstime();r=matsnf(M,3);t=getabstime()-t;"
-        "D=r[3];print(t);print(vector(#D,i,poldegree(D[i,i],x)));"
+        f"M=[{rows}];t=getabstime();r=matsnf(M,{flag});t=getabstime()-t;"
+        "D=if({flag}==3,r[3],matdiagonal(r));print(t);print(vector(#D,i,poldegree(D[i,i],x)));"
     )
     out = subprocess.run(
         ["gp", "-q", "-s", "1G"], input=prog, capture_output=True, text=True,
-        timeout=600,
+        timeout=TIMEOUT,
     ).stdout.splitlines()
     return int(out[0]) / 1000.0, out[1]
 
@@ -96,17 +99,19 @@ for (k=1;k<=size(d);k++) {{ print(deg(d[k])); }}
 quit;
 """
     out = subprocess.run(
-        ["Singular", "-q"], input=prog, capture_output=True, text=True, timeout=600
+        ["Singular", "-q"], input=prog, capture_output=True, text=True, timeout=TIMEOUT
     ).stdout.split()
     return int(out[0]) / 1000.0, "[" + ",".join(out[1:]) + "]"
 
 
 def main():
     a = sys.argv[1:]
-    pos = [x for i, x in enumerate(a) if not x.startswith("--") and (i == 0 or a[i - 1] not in ("--terms", "--principal", "--emit-lmx"))]
+    pos = [x for i, x in enumerate(a) if not x.startswith("--") and (i == 0 or a[i - 1] not in ("--terms", "--principal", "--emit-lmx", "--pari-flag", "--timeout"))]
     n, nv, deg = int(pos[0]), int(pos[1]), int(pos[2])
     seed = int(pos[3]) if len(pos) > 3 else 1
     terms = int(a[a.index("--terms") + 1]) if "--terms" in a else 3
+    global TIMEOUT
+    TIMEOUT = int(a[a.index("--timeout") + 1]) if "--timeout" in a else 120
     names = NAMES[:nv] if nv <= len(NAMES) else [f"s{i + 1}" for i in range(nv)]
     m = gen(n, nv, deg, seed, terms)
     if "--emit-lmx" in a:
@@ -115,8 +120,9 @@ def main():
     if "--pari" in a:
         k = int(a[a.index("--principal") + 1]) - 1
         try:
-            t, degs = run_pari(m, nv, k)
-            print(f"pari n={n} nv={nv} deg={deg} seed={seed} seconds={t:.3f} degs={degs}", flush=True)
+            flag = int(a[a.index("--pari-flag") + 1]) if "--pari-flag" in a else 3
+            t, degs = run_pari(m, nv, k, flag)
+            print(f"pari flag={flag} n={n} nv={nv} deg={deg} seed={seed} seconds={t:.3f} degs={degs}", flush=True)
         except Exception as e:  # noqa: BLE001
             print(f"pari n={n} nv={nv} deg={deg} seed={seed} error={type(e).__name__}", flush=True)
     if "--singular" in a:

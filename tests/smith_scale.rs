@@ -245,3 +245,42 @@ fn two_nontrivial_factors_are_certified_without_elimination() {
             .contains("transforms omitted")
     );
 }
+
+#[test]
+fn ten_by_ten_in_two_symbols_in_both_several_symbol_modes() {
+    // Used to run for minutes in either mode (elimination over Q(x)[y],
+    // and over Q(y)[x] and Q(x)[y] for the divisors); now det and adj by
+    // Kronecker packing, certified from A·B = c·I.
+    let file = "tests/data/issue15_xy_10x10.lmx";
+    let det = json(&["smith", file]);
+    assert_eq!(det["mode"], "determinantal-divisors");
+    assert_eq!(det["verified"], true);
+    let inv = strings(&det["invariant_factors"]);
+    assert_eq!(inv.len(), 10);
+    assert!(inv[..9].iter().all(|f| f == "1"));
+    // Each symbol was certified (degree and coprimality checks).
+    let props: Vec<String> = det["certificate"]
+        .as_array()
+        .expect("checks")
+        .iter()
+        .map(|c| c["property"].as_str().expect("text").to_string())
+        .collect();
+    for s in ["x", "y"] {
+        assert!(props.contains(&format!("deg_{s} c = degree bound of det A")));
+        assert!(props.contains(&format!("gcd of B's entries over Q(others)[{s}] is 1")));
+    }
+    for p in ["x", "y"] {
+        let v = json(&["smith", file, "--principal", p]);
+        assert_eq!(v["mode"], "principal");
+        assert_eq!(v["verified"], true);
+        assert!(v["U"].is_null() && v["denominator_free"].is_null());
+        let pinv = strings(&v["invariant_factors"]);
+        assert_eq!(pinv.len(), 10);
+        assert!(pinv[..9].iter().all(|f| f == "1"));
+        // Monic of degree 10 in the principal symbol.
+        assert!(pinv[9].starts_with(&format!("{p}^10")), "{}", pinv[9]);
+        // Cleared of denominators it is the last determinantal divisor.
+        let note = v["mode_note"].as_str().expect("text");
+        assert!(note.ends_with(&format!("is {}", inv[9])), "{note}");
+    }
+}

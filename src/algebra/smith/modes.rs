@@ -1216,6 +1216,63 @@ mod tests {
         assert_eq!(shown, vec!["1", "x + y", "x^2*y + x^2 + x*y^2 + x*y"]);
     }
 
+    /// A seeded dense n×n over Q[x, y] with entries a + b·x + c·y + d·x·y.
+    fn random_xy(n: usize, seed: u64) -> Matrix<PolyRing> {
+        let mut s = seed;
+        let mut next = || {
+            s = s
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            ((s >> 33) % 19) as i64 - 9
+        };
+        let (x, y) = (MPoly::var(0, 2), MPoly::var(1, 2));
+        let c = |v: i64| MPoly::constant(crate::algebra::rational::qi(v), 2);
+        let data = (0..n * n)
+            .map(|_| c(next()) + &x * &c(next()) + &y * &c(next()) + &(&x * &y) * &c(next()))
+            .collect();
+        Matrix::new(PolyRing::new(vec!["x".into(), "y".into()]), n, n, data)
+    }
+
+    #[test]
+    fn principal_form_only_route_agrees_with_the_elimination() {
+        let a = random_xy(4, 11);
+        let ap = to_principal(&a, 1);
+        let opts = SmithOptions::default();
+        let fast = principal_form_only("A", &a, &ap, 1, "note", &opts).expect("generic input");
+        let full = smith_report(
+            "A",
+            &a,
+            &SmithOptions {
+                principal: Some(1),
+                ..SmithOptions::default()
+            },
+        )
+        .expect("certified");
+        assert!(full.u.is_some(), "4×4 takes the elimination");
+        assert_eq!(fast.invariant_factors, full.invariant_factors);
+        assert_eq!(
+            fast.invariant_factor_coefficients,
+            full.invariant_factor_coefficients
+        );
+    }
+
+    #[test]
+    fn determinantal_form_only_route_agrees_with_the_minors() {
+        for seed in [3, 4] {
+            let a = random_xy(4, seed);
+            let fast = divisors_generic("A", &a, &SmithOptions::default()).expect("generic");
+            let dv = determinantal_divisors(&a, MINOR_LIMIT).expect("few minors");
+            let minors: Vec<String> = dv.invariant.iter().map(|f| a.ring.lmx(f)).collect();
+            assert_eq!(fast.invariant_factors, minors);
+        }
+        // diag(x, x·y): d_1 = x, not generic; the route declines.
+        let r = PolyRing::new(vec!["x".into(), "y".into()]);
+        let (x, y) = (MPoly::var(0, 2), MPoly::var(1, 2));
+        let z = MPoly::zero(2);
+        let a = Matrix::new(r, 2, 2, vec![x.clone(), z.clone(), z, &x * &y]);
+        assert!(divisors_generic("A", &a, &SmithOptions::default()).is_none());
+    }
+
     #[test]
     fn seed_matrix_with_principal_k4() {
         let opts = SmithOptions {
