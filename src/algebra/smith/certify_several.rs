@@ -28,9 +28,13 @@ use super::certify::{Certificate, Check};
 use super::several::degree_bound;
 use crate::algebra::matrix::Matrix;
 use crate::algebra::modular::{self, Fp, Points, UP};
-use crate::algebra::mpoly::MPoly;
+use crate::algebra::mpoly::{MPoly, Monomial};
 use crate::algebra::polyring::PolyRing;
 use crate::algebra::ring::Ring;
+use num_bigint::BigInt;
+use num_integer::Integer;
+use num_traits::{One, Zero};
+use std::collections::BTreeMap;
 
 /// The image of `e` in Z_p[s] with the other symbols set to `point`
 /// (indexed by symbol; `point[s]` unused). `None` if a denominator
@@ -91,6 +95,75 @@ fn coprime_in(entries: &[&MPoly], s: usize) -> Option<(u64, usize)> {
     None
 }
 
+/// Integer terms `(m, k·coefficient)` of `p` for an integer `k` that
+/// clears its denominators, or `None` if `k` does not.
+fn scaled_terms<'p>(p: &'p MPoly, k: &BigInt) -> Option<Vec<(&'p Monomial, BigInt)>> {
+    p.terms()
+        .iter()
+        .map(|(m, c)| {
+            let (q, r) = (c.numer() * k).div_rem(c.denom());
+            r.is_zero().then_some((m, q))
+        })
+        .collect()
+}
+
+/// Whether `A·B = c·I` exactly: row i of A and c are scaled by the lcm of
+/// the denominators in row i of A, in c and in B, and every entry of the
+/// product is accumulated over Z in one ordered map (the same identity,
+/// without a rational normalisation per term).
+fn product_is_c_identity(a: &Matrix<PolyRing>, c: &MPoly, b: &Matrix<PolyRing>) -> bool {
+    let n = a.rows();
+    let den_lcm = |ps: &[MPoly]| {
+        ps.iter()
+            .flat_map(|p| p.terms().iter())
+            .fold(BigInt::one(), |l, (_, q)| {
+                crate::algebra::intgcd::lcm(&l, q.denom())
+            })
+    };
+    let kb = den_lcm(b.entries());
+    let Some(bt): Option<Vec<Vec<(&Monomial, BigInt)>>> =
+        b.entries().iter().map(|e| scaled_terms(e, &kb)).collect()
+    else {
+        return false;
+    };
+    for i in 0..n {
+        let ka = den_lcm(a.row(i));
+        let kc = crate::algebra::intgcd::lcm(&ka, &den_lcm(std::slice::from_ref(c)));
+        let Some(at): Option<Vec<Vec<(&Monomial, BigInt)>>> =
+            a.row(i).iter().map(|e| scaled_terms(e, &kc)).collect()
+        else {
+            return false;
+        };
+        for j in 0..n {
+            let mut acc: BTreeMap<Monomial, BigInt> = BTreeMap::new();
+            for (k, ak) in at.iter().enumerate() {
+                for (ma, ca) in ak {
+                    for (mb, cb) in &bt[k * n + j] {
+                        let m: Monomial = ma.iter().zip(mb.iter()).map(|(x, y)| x + y).collect();
+                        *acc.entry(m).or_insert_with(BigInt::zero) += ca * cb;
+                    }
+                }
+            }
+            acc.retain(|_, v| !v.is_zero());
+            // Expected: kc·kb·c on the diagonal, 0 elsewhere.
+            if i != j {
+                if !acc.is_empty() {
+                    return false;
+                }
+                continue;
+            }
+            let kk = &kc * &kb;
+            let Some(want) = scaled_terms(c, &kk) else {
+                return false;
+            };
+            if want.len() != acc.len() || !want.iter().all(|(m, v)| acc.get(*m) == Some(v)) {
+                return false;
+            }
+        }
+    }
+    true
+}
+
 /// Certifies, for every symbol s in `symbols`, that over Q(others)[s] the
 /// invariant factors of the square A are 1, …, 1, c (up to a unit), given
 /// `A·B = c·I`; see the module text. With every symbol of A in `symbols`
@@ -105,15 +178,7 @@ pub fn certify_last_factor_several(
     let names = &a.ring.names;
     let mut checks = Vec::new();
     let shaped = n == a.cols() && b.rows() == n && b.cols() == n && !c.is_zero();
-    let prod = shaped
-        && a.mul(b).is_some_and(|ab| {
-            (0..n).all(|i| {
-                (0..n).all(|j| {
-                    let e = ab.get(i, j);
-                    if i == j { e == c } else { e.is_zero() }
-                })
-            })
-        });
+    let prod = shaped && product_is_c_identity(a, c, b);
     checks.push(Check {
         property: "A·B = c·I".into(),
         ok: prod,

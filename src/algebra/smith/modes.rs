@@ -131,6 +131,10 @@ pub enum SmithError {
     /// The determinantal mode would be too expensive.
     #[error(transparent)]
     TooManyMinors(#[from] super::divisors::TooManyMinors),
+    /// The input is beyond every exact route of its mode; the message names
+    /// the sizes each route would need.
+    #[error("{0}")]
+    TooLarge(String),
     /// A certificate failed: an internal error, never shown as a result.
     #[error(
         "internal error: the computed decomposition failed its certificate ({0}); please report this input"
@@ -546,11 +550,10 @@ fn principal(
         "principal symbol {}: Smith form over {ring_name}, a principal ideal domain; entries of U and V are rational functions of the other symbols",
         a.ring.names[p]
     );
-    if a.rows() >= PRINCIPAL_FORM_ONLY_MIN
-        && let Some(r) = principal_form_only(name, a, &ap, p, &note, opts)
-    {
+    if let Some(r) = principal_form_only(name, a, &ap, p, &note, opts, false) {
         return Ok(r);
     }
+    refuse_if_too_large(a, "the principal mode")?;
     opts.progress
         .phase(&format!("elimination over {ring_name}"));
     let dec = SmithDecomposition::new(&ap);
@@ -590,9 +593,18 @@ fn principal(
 /// 6×6: 8.9 s CPU).
 pub const PRINCIPAL_FORM_ONLY_MIN: usize = 6;
 
-/// The principal-mode report with D alone, when
-/// [`super::certify_several::certify_last_factor_several`] establishes
-/// invariant factors 1, …, 1, det over Q(others)[λ].
+/// Below [`PRINCIPAL_FORM_ONLY_MIN`], the same happens when det A has more
+/// than this many terms: on 96 seeded random 2×2–4×4 inputs in 2–3
+/// symbols of degree ≤ 2 (`benches/multi_peers.py`), every elimination
+/// whose det had at most 20 terms took ≤ 1.1 s CPU, and 16 of those with
+/// 23 to 180 terms ran over 10 s (the transforms' coefficients are
+/// rational functions of resultant size).
+pub const PRINCIPAL_TRANSFORM_TERMS: usize = 20;
+
+/// The principal-mode report with D alone, when the input is large
+/// ([`PRINCIPAL_FORM_ONLY_MIN`], [`PRINCIPAL_TRANSFORM_TERMS`]; or
+/// `always`) and [`super::certify_several::certify_last_factor_several`]
+/// establishes invariant factors 1, …, 1, det over Q(others)[λ].
 fn principal_form_only(
     name: &str,
     a: &Matrix<PolyRing>,
@@ -600,10 +612,26 @@ fn principal_form_only(
     p: usize,
     note: &str,
     opts: &SmithOptions,
+    always: bool,
 ) -> Option<SmithReport> {
     opts.progress
         .phase("det and adj over Q[all] by Kronecker packing and images mod word primes");
     let (c, b) = super::several::det_adj_several(a)?;
+    let n = a.rows();
+    let why = if n >= PRINCIPAL_FORM_ONLY_MIN {
+        format!(
+            "a {n}×{n} input (the elimination with transforms is used below {PRINCIPAL_FORM_ONLY_MIN}×{PRINCIPAL_FORM_ONLY_MIN})"
+        )
+    } else if c.terms().len() > PRINCIPAL_TRANSFORM_TERMS {
+        format!(
+            "det A has {} terms (the elimination with transforms is used up to {PRINCIPAL_TRANSFORM_TERMS})",
+            c.terms().len()
+        )
+    } else if always {
+        "this call".to_string()
+    } else {
+        return None;
+    };
     opts.progress
         .phase("certifying the invariant factors (A·B = c·I, gcd of adj over Q(others)[λ])");
     let cert = super::certify_several::certify_last_factor_several(a, &c, &b, &[p]);
@@ -611,7 +639,6 @@ fn principal_form_only(
         return None;
     }
     let kr = &ap.ring;
-    let n = a.rows();
     let f = kr.normalize(&kr.trim(c.coeffs_in(p).into_iter().map(RatFunc::from_poly).collect()));
     let mut d = Matrix::identity(kr.clone(), n);
     d.set(n - 1, n - 1, f.clone());
@@ -630,7 +657,7 @@ fn principal_form_only(
         ring: kr.name(),
         mode: Mode::Principal,
         mode_note: format!(
-            "{note}; transforms omitted for a {n}×{n} input (their coefficients are rational functions of resultant size; the elimination with transforms is used below {PRINCIPAL_FORM_ONLY_MIN}×{PRINCIPAL_FORM_ONLY_MIN}): the invariant factors alone are certified; the last one, cleared of denominators, is {}",
+            "{note}; transforms omitted for {why} (their coefficients are rational functions of resultant size): the invariant factors alone are certified; the last one, cleared of denominators, is {}",
             pr.format(&dprim)
         ),
         algorithm: "det and adj over Q[all] by Kronecker substitution and images mod word primes (CRT above a proved bound); invariant factors from A·B = c·I, the gcd of adj's entries over Q(others)[λ] (images at a point mod p) and deg_λ c".to_string(),
@@ -852,6 +879,40 @@ fn denominator_free(
     })
 }
 
+/// Above this size the several-symbol modes refuse the elimination over
+/// Q(others)[s] (rational-function coefficients; a random 6×6 over
+/// Q[x, y] of degree 1 already takes 8.9 s CPU there) when the
+/// det/adjugate route did not apply.
+pub const SEVERAL_ELIMINATION_MAX: usize = 16;
+
+/// Refuses an input that only the elimination over Q(others)[s] could
+/// treat and that is too large for it, naming every route's size.
+fn refuse_if_too_large(a: &Matrix<PolyRing>, mode: &str) -> Result<(), SmithError> {
+    let (m, n) = (a.rows(), a.cols());
+    if m.max(n) <= SEVERAL_ELIMINATION_MAX {
+        return Ok(());
+    }
+    let minors = super::divisors::minor_count(m, n);
+    let packed = super::several::packed_det_degree(a);
+    let fmt = |x: u128| {
+        if x == u128::MAX {
+            "more than 3.4e38".to_string()
+        } else if x >= 10_000_000_000 {
+            format!("{:.2e}", x as f64)
+        } else {
+            x.to_string()
+        }
+    };
+    Err(SmithError::TooLarge(format!(
+        "{mode} cannot treat this {m}×{n} matrix over {ring}: the determinant route needs a square nonsingular matrix whose packed determinant has degree ≤ {maxp} (here {packed}) and first {k} invariant factors 1; the gcd of minors would need {minors} minors (limit {MINOR_LIMIT}); the elimination over Q(others)[s] is refused above {SEVERAL_ELIMINATION_MAX}×{SEVERAL_ELIMINATION_MAX}. A matrix in one symbol (substitute values for the others) is handled far beyond this size",
+        ring = a.ring.name(),
+        maxp = super::several::MAX_PACKED_DEGREE,
+        packed = fmt(packed),
+        k = m.min(n).saturating_sub(1),
+        minors = fmt(minors),
+    )))
+}
+
 /// Above this many minors the determinantal mode takes the route through
 /// one certified Smith form per symbol instead of enumerating minors.
 pub const MINOR_ROUTE_LIMIT: u128 = 20_000;
@@ -1041,6 +1102,7 @@ fn divisors_mode(
         let cert = certify_divisors(a, &dv);
         (dv, cert)
     } else {
+        refuse_if_too_large(a, "the determinantal-divisor mode")?;
         divisors_by_symbol(a, &opts.progress)?
     };
     fail_if_unverified(&cert)?;
@@ -1235,10 +1297,11 @@ mod tests {
 
     #[test]
     fn principal_form_only_route_agrees_with_the_elimination() {
-        let a = random_xy(4, 11);
+        let a = random_xy(3, 11);
         let ap = to_principal(&a, 1);
         let opts = SmithOptions::default();
-        let fast = principal_form_only("A", &a, &ap, 1, "note", &opts).expect("generic input");
+        let fast =
+            principal_form_only("A", &a, &ap, 1, "note", &opts, true).expect("generic input");
         let full = smith_report(
             "A",
             &a,
@@ -1248,7 +1311,7 @@ mod tests {
             },
         )
         .expect("certified");
-        assert!(full.u.is_some(), "4×4 takes the elimination");
+        assert!(full.u.is_some(), "a small det takes the elimination");
         assert_eq!(fast.invariant_factors, full.invariant_factors);
         assert_eq!(
             fast.invariant_factor_coefficients,

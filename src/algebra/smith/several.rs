@@ -36,6 +36,35 @@ pub fn degree_bound(a: &Matrix<PolyRing>, v: usize) -> usize {
     rows.min(cols)
 }
 
+/// The degree bound of the packed (univariate) det A: the sum over rows of
+/// the largest packed degree of an entry, saturating instead of
+/// overflowing (so a refusal can name it for any size).
+pub fn packed_det_degree(a: &Matrix<PolyRing>) -> u128 {
+    let nv = a.ring.nvars();
+    let mut weights = vec![0u128; nv];
+    let mut w = 1u128;
+    for (v, wv) in weights.iter_mut().enumerate() {
+        if a.entries().iter().any(|e| e.contains_var(v)) {
+            *wv = w;
+            w = w.saturating_mul(degree_bound(a, v) as u128 + 1);
+        }
+    }
+    (0..a.rows())
+        .map(|i| {
+            a.row(i)
+                .iter()
+                .flat_map(|p| p.terms().iter())
+                .map(|(m, _)| {
+                    m.iter().zip(&weights).fold(0u128, |acc, (&e, &wv)| {
+                        acc.saturating_add(wv.saturating_mul(u128::from(e)))
+                    })
+                })
+                .max()
+                .unwrap_or(0)
+        })
+        .fold(0u128, |acc, d| acc.saturating_add(d))
+}
+
 /// `(c, B)` with `A·B = c·I`, `c = det(Δ·A)` and `B = adj(Δ·A)·Δ` for the
 /// diagonal Δ of the rows' denominator lcms (so B has integer
 /// coefficients). `None` when A is not square, looks singular, or the
@@ -43,6 +72,9 @@ pub fn degree_bound(a: &Matrix<PolyRing>, v: usize) -> usize {
 pub fn det_adj_several(a: &Matrix<PolyRing>) -> Option<(MPoly, Matrix<PolyRing>)> {
     let n = a.rows();
     if n < 2 || a.cols() != n {
+        return None;
+    }
+    if packed_det_degree(a) > MAX_PACKED_DEGREE as u128 {
         return None;
     }
     let nv = a.ring.nvars();
@@ -57,9 +89,6 @@ pub fn det_adj_several(a: &Matrix<PolyRing>) -> Option<(MPoly, Matrix<PolyRing>)
         weights[v] = w;
         radix[v] = degree_bound(a, v) + 1;
         w = w.checked_mul(radix[v])?;
-        if w > 4 * MAX_PACKED_DEGREE {
-            return None;
-        }
     }
     let packed_degree =
         |m: &Monomial| -> usize { vars.iter().map(|&v| m[v] as usize * weights[v]).sum() };
