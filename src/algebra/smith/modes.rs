@@ -1337,6 +1337,28 @@ mod tests {
     }
 
     #[test]
+    fn oversized_two_symbol_input_is_refused_with_every_route_named() {
+        // 66×66 over Q[x, y]: Σ C(66,k)² minors overflow u128, the packed
+        // det would have degree 66·67 = 4422 > 3000, the elimination is refused.
+        let r = PolyRing::new(vec!["x".into(), "y".into()]);
+        let e = &MPoly::var(0, 2) + &MPoly::var(1, 2);
+        let a = Matrix::new(r, 66, 66, vec![e; 66 * 66]);
+        for principal in [None, Some(1)] {
+            let opts = SmithOptions {
+                principal,
+                ..SmithOptions::default()
+            };
+            let Err(SmithError::TooLarge(msg)) = smith_report("A", &a, &opts) else {
+                panic!("expected a refusal");
+            };
+            assert!(msg.contains("66×66"), "{msg}");
+            assert!(msg.contains("(here 4422)"), "{msg}");
+            assert!(msg.contains("more than 3.4e38 minors"), "{msg}");
+            assert!(msg.contains("one symbol"), "{msg}");
+        }
+    }
+
+    #[test]
     fn seed_matrix_with_principal_k4() {
         let opts = SmithOptions {
             principal: Some(3),
