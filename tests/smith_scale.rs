@@ -7,7 +7,9 @@
 //! and the large one-symbol shapes: a constant 60×60 (unimodular path), a
 //! 40×40 diagonal and a dense 40×40 of degree 1 (invariant factors
 //! certified without transforms), and a 12×12 B·diag·C with two
-//! non-trivial invariant factors (gcd of adj and Jacobi minors).
+//! non-trivial invariant factors (gcd of adj and Jacobi minors); and the
+//! several-symbol inputs certified from det and adj without elimination
+//! or minors (a 10×10 over Q[x, y], a random 4×4 over Q[x, y, z]).
 
 mod common;
 
@@ -283,4 +285,25 @@ fn ten_by_ten_in_two_symbols_in_both_several_symbol_modes() {
         let note = v["mode_note"].as_str().expect("text");
         assert!(note.ends_with(&format!("is {}", inv[9])), "{note}");
     }
+}
+
+#[test]
+fn random_four_by_four_in_three_symbols_in_both_modes() {
+    // One of the seeded random 2×2–4×4 inputs whose principal-mode
+    // elimination over Q(x, y)[z] ran for more than 10 s (det of 180
+    // terms); the determinantal mode used gcds of minors.
+    let file = "tests/data/issue15_xyz_4x4_random.lmx";
+    let det = json(&["smith", file]);
+    assert_eq!(det["verified"], true);
+    let inv = strings(&det["invariant_factors"]);
+    assert_eq!(&inv[..3], ["1", "1", "1"]);
+    let p = json(&["smith", file, "--principal", "z"]);
+    assert_eq!(p["mode"], "principal");
+    assert_eq!(p["verified"], true);
+    let pinv = strings(&p["invariant_factors"]);
+    assert_eq!(&pinv[..3], ["1", "1", "1"]);
+    assert!(pinv[3].starts_with("z^"), "{}", pinv[3]);
+    let note = p["mode_note"].as_str().expect("text");
+    assert!(note.contains("det A has 180 terms"), "{note}");
+    assert!(note.ends_with(&format!("is {}", inv[3])), "{note}");
 }

@@ -598,8 +598,9 @@ pub const PRINCIPAL_FORM_ONLY_MIN: usize = 6;
 /// symbols of degree ≤ 2 (`benches/multi_peers.py`), every elimination
 /// whose det had at most 20 terms took ≤ 1.1 s CPU, and 16 of those with
 /// 23 to 180 terms ran over 10 s (the transforms' coefficients are
-/// rational functions of resultant size).
-pub const PRINCIPAL_TRANSFORM_TERMS: usize = 20;
+/// rational functions of resultant size); the 4×4 in k1, k2, k3
+/// (det of 21 terms) takes 0.6 s and keeps its transforms.
+pub const PRINCIPAL_TRANSFORM_TERMS: usize = 22;
 
 /// The principal-mode report with D alone, when the input is large
 /// ([`PRINCIPAL_FORM_ONLY_MIN`], [`PRINCIPAL_TRANSFORM_TERMS`]; or
@@ -628,7 +629,7 @@ fn principal_form_only(
             c.terms().len()
         )
     } else if always {
-        "this call".to_string()
+        "the caller asked for it".to_string()
     } else {
         return None;
     };
@@ -657,7 +658,7 @@ fn principal_form_only(
         ring: kr.name(),
         mode: Mode::Principal,
         mode_note: format!(
-            "{note}; transforms omitted for {why} (their coefficients are rational functions of resultant size): the invariant factors alone are certified; the last one, cleared of denominators, is {}",
+            "{note}; transforms omitted because {why} (their coefficients are rational functions of resultant size): the invariant factors alone are certified; the last one, cleared of denominators, is {}",
             pr.format(&dprim)
         ),
         algorithm: "det and adj over Q[all] by Kronecker substitution and images mod word primes (CRT above a proved bound); invariant factors from A·B = c·I, the gcd of adj's entries over Q(others)[λ] (images at a point mod p) and deg_λ c".to_string(),
