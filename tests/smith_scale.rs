@@ -7,7 +7,9 @@
 //! and the large one-symbol shapes: a constant 60×60 (unimodular path), a
 //! 40×40 diagonal and a dense 40×40 of degree 1 (invariant factors
 //! certified without transforms), and a 12×12 B·diag·C with two
-//! non-trivial invariant factors (gcd of adj and Jacobi minors).
+//! non-trivial invariant factors (gcd of adj and Jacobi minors); and the
+//! several-symbol inputs certified from det and adj without elimination
+//! or minors (a 10×10 over Q[x, y], a random 4×4 over Q[x, y, z]).
 
 mod common;
 
@@ -244,4 +246,64 @@ fn two_nontrivial_factors_are_certified_without_elimination() {
             .expect("text")
             .contains("transforms omitted")
     );
+}
+
+#[test]
+fn ten_by_ten_in_two_symbols_in_both_several_symbol_modes() {
+    // Used to run for minutes in either mode (elimination over Q(x)[y],
+    // and over Q(y)[x] and Q(x)[y] for the divisors); now det and adj by
+    // Kronecker packing, certified from A·B = c·I.
+    let file = "tests/data/issue15_xy_10x10.lmx";
+    let det = json(&["smith", file]);
+    assert_eq!(det["mode"], "determinantal-divisors");
+    assert_eq!(det["verified"], true);
+    let inv = strings(&det["invariant_factors"]);
+    assert_eq!(inv.len(), 10);
+    assert!(inv[..9].iter().all(|f| f == "1"));
+    // Each symbol was certified (degree and coprimality checks).
+    let props: Vec<String> = det["certificate"]
+        .as_array()
+        .expect("checks")
+        .iter()
+        .map(|c| c["property"].as_str().expect("text").to_string())
+        .collect();
+    for s in ["x", "y"] {
+        assert!(props.contains(&format!("deg_{s} c = degree bound of det A")));
+        assert!(props.contains(&format!("gcd of B's entries over Q(others)[{s}] is 1")));
+    }
+    for p in ["x", "y"] {
+        let v = json(&["smith", file, "--principal", p]);
+        assert_eq!(v["mode"], "principal");
+        assert_eq!(v["verified"], true);
+        assert!(v["U"].is_null() && v["denominator_free"].is_null());
+        let pinv = strings(&v["invariant_factors"]);
+        assert_eq!(pinv.len(), 10);
+        assert!(pinv[..9].iter().all(|f| f == "1"));
+        // Monic of degree 10 in the principal symbol.
+        assert!(pinv[9].starts_with(&format!("{p}^10")), "{}", pinv[9]);
+        // Cleared of denominators it is the last determinantal divisor.
+        let note = v["mode_note"].as_str().expect("text");
+        assert!(note.ends_with(&format!("is {}", inv[9])), "{note}");
+    }
+}
+
+#[test]
+fn random_four_by_four_in_three_symbols_in_both_modes() {
+    // One of the seeded random 2×2–4×4 inputs whose principal-mode
+    // elimination over Q(x, y)[z] ran for more than 10 s (det of 180
+    // terms); the determinantal mode used gcds of minors.
+    let file = "tests/data/issue15_xyz_4x4_random.lmx";
+    let det = json(&["smith", file]);
+    assert_eq!(det["verified"], true);
+    let inv = strings(&det["invariant_factors"]);
+    assert_eq!(&inv[..3], ["1", "1", "1"]);
+    let p = json(&["smith", file, "--principal", "z"]);
+    assert_eq!(p["mode"], "principal");
+    assert_eq!(p["verified"], true);
+    let pinv = strings(&p["invariant_factors"]);
+    assert_eq!(&pinv[..3], ["1", "1", "1"]);
+    assert!(pinv[3].starts_with("z^"), "{}", pinv[3]);
+    let note = p["mode_note"].as_str().expect("text");
+    assert!(note.contains("det A has 180 terms"), "{note}");
+    assert!(note.ends_with(&format!("is {}", inv[3])), "{note}");
 }

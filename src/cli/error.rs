@@ -106,7 +106,7 @@ impl CliError {
             | CliError::Lang(_)
             | CliError::Invalid(_)
             | CliError::Write { .. } => EXIT_INVALID,
-            CliError::Smith(SmithError::TooManyMinors(_)) => EXIT_INVALID,
+            CliError::Smith(SmithError::TooManyMinors(_) | SmithError::TooLarge(_)) => EXIT_INVALID,
             CliError::Reduce(_) => EXIT_INVALID,
             CliError::Usage(_) => EXIT_USAGE,
             CliError::Plan(e) if e.is_input_error() => EXIT_INVALID,

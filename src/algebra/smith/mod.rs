@@ -13,11 +13,13 @@
 //! decomposition handed out of this module has been certified.
 
 pub mod certify;
+pub mod certify_several;
 pub mod detadj;
 pub mod divisors;
 pub mod elimination;
 pub mod modes;
 pub mod nonsingular;
+pub mod several;
 
 use crate::algebra::matrix::Matrix;
 use crate::algebra::ring::EuclideanDomain;

@@ -131,6 +131,10 @@ pub enum SmithError {
     /// The determinantal mode would be too expensive.
     #[error(transparent)]
     TooManyMinors(#[from] super::divisors::TooManyMinors),
+    /// The input is beyond every exact route of its mode; the message names
+    /// the sizes each route would need.
+    #[error("{0}")]
+    TooLarge(String),
     /// A certificate failed: an internal error, never shown as a result.
     #[error(
         "internal error: the computed decomposition failed its certificate ({0}); please report this input"
@@ -546,6 +550,10 @@ fn principal(
         "principal symbol {}: Smith form over {ring_name}, a principal ideal domain; entries of U and V are rational functions of the other symbols",
         a.ring.names[p]
     );
+    if let Some(r) = principal_form_only(name, a, &ap, p, &note, opts, false) {
+        return Ok(r);
+    }
+    refuse_if_too_large(a, "the principal mode")?;
     opts.progress
         .phase(&format!("elimination over {ring_name}"));
     let dec = SmithDecomposition::new(&ap);
@@ -575,6 +583,101 @@ fn principal(
     opts.progress.phase("denominator-free form over Q[all]");
     report.denominator_free = Some(denominator_free(a, &dec, p)?);
     Ok(report)
+}
+
+/// From this size on, a square principal-mode input whose (n−1)-th
+/// determinantal divisor over Q(others)[λ] is 1 gets its invariant factors
+/// without transforms (certified from `A·B = c·I`,
+/// [`super::certify_several`]); the elimination over Q(others)[λ] with
+/// transforms grows fast (random 5×5 over Q[x, y] of degree 1: 0.4 s,
+/// 6×6: 8.9 s CPU).
+pub const PRINCIPAL_FORM_ONLY_MIN: usize = 6;
+
+/// Below [`PRINCIPAL_FORM_ONLY_MIN`], the same happens when det A has more
+/// than this many terms: on 96 seeded random 2×2–4×4 inputs in 2–3
+/// symbols of degree ≤ 2 (`benches/multi_peers.py`), every elimination
+/// whose det had at most 20 terms took ≤ 1.1 s CPU, and 16 of those with
+/// 23 to 180 terms ran over 10 s (the transforms' coefficients are
+/// rational functions of resultant size); the 4×4 in k1, k2, k3
+/// (det of 21 terms) takes 0.6 s and keeps its transforms.
+pub const PRINCIPAL_TRANSFORM_TERMS: usize = 22;
+
+/// The principal-mode report with D alone, when the input is large
+/// ([`PRINCIPAL_FORM_ONLY_MIN`], [`PRINCIPAL_TRANSFORM_TERMS`]; or
+/// `always`) and [`super::certify_several::certify_last_factor_several`]
+/// establishes invariant factors 1, …, 1, det over Q(others)[λ].
+fn principal_form_only(
+    name: &str,
+    a: &Matrix<PolyRing>,
+    ap: &Matrix<UPolyRing<RatFuncField>>,
+    p: usize,
+    note: &str,
+    opts: &SmithOptions,
+    always: bool,
+) -> Option<SmithReport> {
+    opts.progress
+        .phase("det and adj over Q[all] by Kronecker packing and images mod word primes");
+    let (c, b) = super::several::det_adj_several(a)?;
+    let n = a.rows();
+    let why = if n >= PRINCIPAL_FORM_ONLY_MIN {
+        format!(
+            "a {n}×{n} input (the elimination with transforms is used below {PRINCIPAL_FORM_ONLY_MIN}×{PRINCIPAL_FORM_ONLY_MIN})"
+        )
+    } else if c.terms().len() > PRINCIPAL_TRANSFORM_TERMS {
+        format!(
+            "det A has {} terms (the elimination with transforms is used up to {PRINCIPAL_TRANSFORM_TERMS})",
+            c.terms().len()
+        )
+    } else if always {
+        "the caller asked for it".to_string()
+    } else {
+        return None;
+    };
+    opts.progress
+        .phase("certifying the invariant factors (A·B = c·I, gcd of adj over Q(others)[λ])");
+    let cert = super::certify_several::certify_last_factor_several(a, &c, &b, &[p]);
+    if !cert.verified() {
+        return None;
+    }
+    let kr = &ap.ring;
+    let f = kr.normalize(&kr.trim(c.coeffs_in(p).into_iter().map(RatFunc::from_poly).collect()));
+    let mut d = Matrix::identity(kr.clone(), n);
+    d.set(n - 1, n - 1, f.clone());
+    let inv = d.diagonal();
+    let latex = opts.latex.then(|| LatexForms {
+        a: rows_of(a, true),
+        invariant_factors: inv.iter().map(|e| kr.latex(e)).collect(),
+        d: Some(rows_of(&d, true)),
+        u: None,
+        v: None,
+    });
+    let pr = &a.ring;
+    let dprim = c.primitive_normal();
+    Some(SmithReport {
+        matrix: name.to_string(),
+        ring: kr.name(),
+        mode: Mode::Principal,
+        mode_note: format!(
+            "{note}; transforms omitted because {why} (their coefficients are rational functions of resultant size): the invariant factors alone are certified; the last one, cleared of denominators, is {}",
+            pr.format(&dprim)
+        ),
+        algorithm: "det and adj over Q[all] by Kronecker substitution and images mod word primes (CRT above a proved bound); invariant factors from A·B = c·I, the gcd of adj's entries over Q(others)[λ] (images at a point mod p) and deg_λ c".to_string(),
+        a: rows_of(a, false),
+        invariant_factors: inv.iter().map(|e| kr.lmx(e)).collect(),
+        rank: n,
+        d: rows_of(&d, false),
+        u: None,
+        v: None,
+        verified: true,
+        certificate: cert.checks,
+        invariant_factor_coefficients: Some(
+            inv.iter()
+                .map(|f| f.coeffs().iter().map(|c| kr.k.lmx(c)).collect())
+                .collect(),
+        ),
+        denominator_free: None,
+        latex,
+    })
 }
 
 /// Evaluates identities over Q(others)[λ] by clearing denominators: with
@@ -777,6 +880,40 @@ fn denominator_free(
     })
 }
 
+/// Above this size the several-symbol modes refuse the elimination over
+/// Q(others)[s] (rational-function coefficients; a random 6×6 over
+/// Q[x, y] of degree 1 already takes 8.9 s CPU there) when the
+/// det/adjugate route did not apply.
+pub const SEVERAL_ELIMINATION_MAX: usize = 16;
+
+/// Refuses an input that only the elimination over Q(others)[s] could
+/// treat and that is too large for it, naming every route's size.
+fn refuse_if_too_large(a: &Matrix<PolyRing>, mode: &str) -> Result<(), SmithError> {
+    let (m, n) = (a.rows(), a.cols());
+    if m.max(n) <= SEVERAL_ELIMINATION_MAX {
+        return Ok(());
+    }
+    let minors = super::divisors::minor_count(m, n);
+    let packed = super::several::packed_det_degree(a);
+    let fmt = |x: u128| {
+        if x == u128::MAX {
+            "more than 3.4e38".to_string()
+        } else if x >= 10_000_000_000 {
+            format!("{:.2e}", x as f64)
+        } else {
+            x.to_string()
+        }
+    };
+    Err(SmithError::TooLarge(format!(
+        "{mode} cannot treat this {m}×{n} matrix over {ring}: the determinant route needs a square nonsingular matrix whose packed determinant has degree ≤ {maxp} (here {packed}) and first {k} invariant factors 1; the gcd of minors would need {minors} minors (limit {MINOR_LIMIT}); the elimination over Q(others)[s] is refused above {SEVERAL_ELIMINATION_MAX}×{SEVERAL_ELIMINATION_MAX}. A matrix in one symbol (substitute values for the others) is handled far beyond this size",
+        ring = a.ring.name(),
+        maxp = super::several::MAX_PACKED_DEGREE,
+        packed = fmt(packed),
+        k = m.min(n).saturating_sub(1),
+        minors = fmt(minors),
+    )))
+}
+
 /// Above this many minors the determinantal mode takes the route through
 /// one certified Smith form per symbol instead of enumerating minors.
 pub const MINOR_ROUTE_LIMIT: u128 = 20_000;
@@ -887,11 +1024,77 @@ fn divisors_by_symbol(
     ))
 }
 
+/// The determinantal mode for a square input with d_(n−1) = 1 over
+/// Q[all] (the generic case): `A·B = c·I` from
+/// [`super::several::det_adj_several`], certified over Q(others)[s] for
+/// every symbol s ([`super::certify_several`]), gives d_1 = … = d_(n−1) = 1
+/// and d_n ~ c without a single minor.
+fn divisors_generic(name: &str, a: &Matrix<PolyRing>, opts: &SmithOptions) -> Option<SmithReport> {
+    if a.rows() < 2 || a.rows() != a.cols() {
+        return None;
+    }
+    opts.progress
+        .phase("det and adj over Q[all] by Kronecker packing and images mod word primes");
+    let (c, b) = super::several::det_adj_several(a)?;
+    let symbols: Vec<usize> = (0..a.ring.nvars())
+        .filter(|&v| a.entries().iter().any(|e| e.contains_var(v)))
+        .collect();
+    opts.progress
+        .phase("certifying the divisors (A·B = c·I, gcd of adj over Q(others)[s] per symbol)");
+    let cert = super::certify_several::certify_last_factor_several(a, &c, &b, &symbols);
+    if !cert.verified() {
+        return None;
+    }
+    let r = &a.ring;
+    let n = a.rows();
+    let mut inv = vec![MPoly::one(r.nvars()); n];
+    inv[n - 1] = c.primitive_normal();
+    let mut d = Matrix::zeros(r.clone(), n, n);
+    for (i, f) in inv.iter().enumerate() {
+        d.set(i, i, f.clone());
+    }
+    let latex = opts.latex.then(|| LatexForms {
+        a: a.latex_rows(),
+        invariant_factors: inv.iter().map(|e| r.latex(e)).collect(),
+        d: Some(d.latex_rows()),
+        u: None,
+        v: None,
+    });
+    Some(SmithReport {
+        matrix: name.to_string(),
+        ring: r.name(),
+        mode: Mode::DeterminantalDivisors,
+        algorithm: "det and adj over Q[all] by Kronecker substitution and images mod word primes (CRT above a proved bound); d_(n−1) = 1 and d_n ~ det from A·B = c·I, the gcd of adj's entries over Q(others)[s] for every symbol s and deg_s c (no minors enumerated)".to_string(),
+        mode_note: divisors_note(r),
+        a: a.lmx_rows(),
+        invariant_factors: inv.iter().map(|e| r.lmx(e)).collect(),
+        rank: n,
+        d: d.lmx_rows(),
+        u: None,
+        v: None,
+        verified: true,
+        certificate: cert.checks,
+        invariant_factor_coefficients: None,
+        denominator_free: None,
+        latex,
+    })
+}
+
+fn divisors_note(r: &PolyRing) -> String {
+    format!(
+        "invariant factors over {} from determinantal divisors (d_k = gcd of the k×k minors, f_k = d_k/d_(k-1)); this ring is not a principal ideal domain, so a unimodular U, V with U·A·V = D need not exist and none is claimed; name a principal symbol (`principal s` or --principal s) for transforms",
+        r.name()
+    )
+}
+
 fn divisors_mode(
     name: &str,
     a: &Matrix<PolyRing>,
     opts: &SmithOptions,
 ) -> Result<SmithReport, SmithError> {
+    if let Some(r) = divisors_generic(name, a, opts) {
+        return Ok(r);
+    }
     let by_minors = super::divisors::minor_count(a.rows(), a.cols()) <= MINOR_ROUTE_LIMIT;
     let (dv, cert) = if by_minors {
         opts.progress.phase("gcds of minors");
@@ -900,6 +1103,7 @@ fn divisors_mode(
         let cert = certify_divisors(a, &dv);
         (dv, cert)
     } else {
+        refuse_if_too_large(a, "the determinantal-divisor mode")?;
         divisors_by_symbol(a, &opts.progress)?
     };
     fail_if_unverified(&cert)?;
@@ -924,10 +1128,7 @@ fn divisors_mode(
         } else {
             "lcm over each symbol s of the determinantal divisors of the certified Smith form over Q(others)[s] (no minors enumerated)".to_string()
         },
-        mode_note: format!(
-            "invariant factors over {} from determinantal divisors (d_k = gcd of the k×k minors, f_k = d_k/d_(k-1)); this ring is not a principal ideal domain, so a unimodular U, V with U·A·V = D need not exist and none is claimed; name a principal symbol (`principal s` or --principal s) for transforms",
-            r.name()
-        ),
+        mode_note: divisors_note(r),
         a: a.lmx_rows(),
         invariant_factors: dv.invariant.iter().map(|e| r.lmx(e)).collect(),
         rank: dv.invariant.len(),
@@ -1076,6 +1277,86 @@ mod tests {
         assert_eq!(by_symbol.determinantal, by_minors.determinantal);
         let shown: Vec<String> = by_symbol.invariant.iter().map(|f| ring.format(f)).collect();
         assert_eq!(shown, vec!["1", "x + y", "x^2*y + x^2 + x*y^2 + x*y"]);
+    }
+
+    /// A seeded dense n×n over Q[x, y] with entries a + b·x + c·y + d·x·y.
+    fn random_xy(n: usize, seed: u64) -> Matrix<PolyRing> {
+        let mut s = seed;
+        let mut next = || {
+            s = s
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            ((s >> 33) % 19) as i64 - 9
+        };
+        let (x, y) = (MPoly::var(0, 2), MPoly::var(1, 2));
+        let c = |v: i64| MPoly::constant(crate::algebra::rational::qi(v), 2);
+        let data = (0..n * n)
+            .map(|_| c(next()) + &x * &c(next()) + &y * &c(next()) + &(&x * &y) * &c(next()))
+            .collect();
+        Matrix::new(PolyRing::new(vec!["x".into(), "y".into()]), n, n, data)
+    }
+
+    #[test]
+    fn principal_form_only_route_agrees_with_the_elimination() {
+        let a = random_xy(3, 11);
+        let ap = to_principal(&a, 1);
+        let opts = SmithOptions::default();
+        let fast =
+            principal_form_only("A", &a, &ap, 1, "note", &opts, true).expect("generic input");
+        let full = smith_report(
+            "A",
+            &a,
+            &SmithOptions {
+                principal: Some(1),
+                ..SmithOptions::default()
+            },
+        )
+        .expect("certified");
+        assert!(full.u.is_some(), "a small det takes the elimination");
+        assert_eq!(fast.invariant_factors, full.invariant_factors);
+        assert_eq!(
+            fast.invariant_factor_coefficients,
+            full.invariant_factor_coefficients
+        );
+    }
+
+    #[test]
+    fn determinantal_form_only_route_agrees_with_the_minors() {
+        for seed in [3, 4] {
+            let a = random_xy(4, seed);
+            let fast = divisors_generic("A", &a, &SmithOptions::default()).expect("generic");
+            let dv = determinantal_divisors(&a, MINOR_LIMIT).expect("few minors");
+            let minors: Vec<String> = dv.invariant.iter().map(|f| a.ring.lmx(f)).collect();
+            assert_eq!(fast.invariant_factors, minors);
+        }
+        // diag(x, x·y): d_1 = x, not generic; the route declines.
+        let r = PolyRing::new(vec!["x".into(), "y".into()]);
+        let (x, y) = (MPoly::var(0, 2), MPoly::var(1, 2));
+        let z = MPoly::zero(2);
+        let a = Matrix::new(r, 2, 2, vec![x.clone(), z.clone(), z, &x * &y]);
+        assert!(divisors_generic("A", &a, &SmithOptions::default()).is_none());
+    }
+
+    #[test]
+    fn oversized_two_symbol_input_is_refused_with_every_route_named() {
+        // 66×66 over Q[x, y]: Σ C(66,k)² minors overflow u128, the packed
+        // det would have degree 66·67 = 4422 > 3000, the elimination is refused.
+        let r = PolyRing::new(vec!["x".into(), "y".into()]);
+        let e = &MPoly::var(0, 2) + &MPoly::var(1, 2);
+        let a = Matrix::new(r, 66, 66, vec![e; 66 * 66]);
+        for principal in [None, Some(1)] {
+            let opts = SmithOptions {
+                principal,
+                ..SmithOptions::default()
+            };
+            let Err(SmithError::TooLarge(msg)) = smith_report("A", &a, &opts) else {
+                panic!("expected a refusal");
+            };
+            assert!(msg.contains("66×66"), "{msg}");
+            assert!(msg.contains("(here 4422)"), "{msg}");
+            assert!(msg.contains("more than 3.4e38 minors"), "{msg}");
+            assert!(msg.contains("one symbol"), "{msg}");
+        }
     }
 
     #[test]

@@ -1,0 +1,305 @@
+//! Certifies invariant factors 1, …, 1, det over Q[s1..sn] (several
+//! symbols) from `A·B = c·I` alone, with no transforms and no minors, for
+//! a set S of symbols: over Q(others)[s] for each s ∈ S (the principal
+//! mode takes S = {λ}; the determinantal mode takes every symbol of A, and
+//! then the statement holds over Q[all]). It recomputes what it states
+//! from A, B and c and never trusts the algorithm that produced them
+//! ([`super::several`]); it must not compute B or choose a mode.
+//!
+//! The argument, for one symbol s and K = Q(others):
+//! 1. `A·B = c·I` exactly over Q[all] with `c ≠ 0`; so A is invertible and
+//!    `B = (c/δ)·adj A` (δ = det A); write `c/δ = u/v` in lowest terms;
+//! 2. the entries of B have gcd 1 over K[s]: their images in Z_p[s] at a
+//!    point of the other symbols where the first entry keeps its leading
+//!    coefficient in s have gcd 1 (by Gauss's lemma a common factor g
+//!    primitive over Z[others] keeps its degree in s there and divides
+//!    every image). From `u·adj A = v·B`, u divides every entry of B, so
+//!    u ∈ K (free of s);
+//! 3. `deg_s c = N_s`, the least of the sums of row and of column degrees
+//!    in s of A, which bounds `deg_s δ`; since `δ = c·v/u`, v is free of s.
+//!
+//! Hence over K[s] c and det A are associates and adj A = (v/u)·B has
+//! unit content, so `d_(n−1) = 1` and the invariant factors are
+//! 1, …, 1, c (made monic in s). When every symbol of A is in S, u and v
+//! are constants and the same holds over Q[all]: d_(n−1) = 1 and
+//! d_n ~ c.
+
+use super::certify::{Certificate, Check};
+use super::several::degree_bound;
+use crate::algebra::matrix::Matrix;
+use crate::algebra::modular::{self, Fp, Points, UP};
+use crate::algebra::mpoly::{MPoly, Monomial};
+use crate::algebra::polyring::PolyRing;
+use crate::algebra::ring::Ring;
+use num_bigint::BigInt;
+use num_integer::Integer;
+use num_traits::{One, Zero};
+use std::collections::BTreeMap;
+
+/// The image of `e` in Z_p[s] with the other symbols set to `point`
+/// (indexed by symbol; `point[s]` unused). `None` if a denominator
+/// vanishes mod p.
+fn image_in(f: Fp, e: &MPoly, s: usize, point: &[u64]) -> Option<UP> {
+    let mut out: UP = vec![0; e.degree_in(s).unwrap_or(0) as usize + 1];
+    for (m, c) in e.terms() {
+        let den = f.reduce(c.denom());
+        if den == 0 {
+            return None;
+        }
+        let mut v = f.mul(f.reduce(c.numer()), f.inv(den));
+        for (k, &ek) in m.iter().enumerate() {
+            if k != s && ek > 0 {
+                v = f.mul(v, f.pow(point[k], u64::from(ek)));
+            }
+        }
+        let slot = &mut out[m[s] as usize];
+        *slot = f.add(*slot, v);
+    }
+    Some(modular::trim(out))
+}
+
+/// Whether the nonzero `entries` have gcd 1 over Q(others)[s], proved by
+/// images at points mod p (see the module text); returns `(p, used)`.
+fn coprime_in(entries: &[&MPoly], s: usize) -> Option<(u64, usize)> {
+    let first = entries.first()?;
+    let nv = first.nvars();
+    let d0 = first.degree_in(s).unwrap_or(0) as usize;
+    let mut pts = Points::new(0x5eed_5eed_0f00_0015);
+    for p in modular::primes().take(3) {
+        let f = Fp::new(p);
+        for _ in 0..3 {
+            let point: Vec<u64> = (0..nv).map(|_| pts.next(f)).collect();
+            let Some(g0) = image_in(f, first, s, &point) else {
+                break;
+            };
+            if modular::deg(&g0) != Some(d0) {
+                continue;
+            }
+            let mut g = g0;
+            let mut used = 1;
+            for e in &entries[1..] {
+                if modular::deg(&g) == Some(0) {
+                    break;
+                }
+                let Some(img) = image_in(f, e, s, &point) else {
+                    break;
+                };
+                g = modular::gcd(f, &g, &img);
+                used += 1;
+            }
+            if modular::deg(&g) == Some(0) {
+                return Some((p, used));
+            }
+        }
+    }
+    None
+}
+
+/// Integer terms `(m, k·coefficient)` of `p` for an integer `k` that
+/// clears its denominators, or `None` if `k` does not.
+fn scaled_terms<'p>(p: &'p MPoly, k: &BigInt) -> Option<Vec<(&'p Monomial, BigInt)>> {
+    p.terms()
+        .iter()
+        .map(|(m, c)| {
+            let (q, r) = (c.numer() * k).div_rem(c.denom());
+            r.is_zero().then_some((m, q))
+        })
+        .collect()
+}
+
+/// Whether `A·B = c·I` exactly: row i of A and c are scaled by the lcm of
+/// the denominators in row i of A, in c and in B, and every entry of the
+/// product is accumulated over Z in one ordered map (the same identity,
+/// without a rational normalisation per term).
+fn product_is_c_identity(a: &Matrix<PolyRing>, c: &MPoly, b: &Matrix<PolyRing>) -> bool {
+    let n = a.rows();
+    let den_lcm = |ps: &[MPoly]| {
+        ps.iter()
+            .flat_map(|p| p.terms().iter())
+            .fold(BigInt::one(), |l, (_, q)| {
+                crate::algebra::intgcd::lcm(&l, q.denom())
+            })
+    };
+    let kb = den_lcm(b.entries());
+    let Some(bt): Option<Vec<Vec<(&Monomial, BigInt)>>> =
+        b.entries().iter().map(|e| scaled_terms(e, &kb)).collect()
+    else {
+        return false;
+    };
+    for i in 0..n {
+        let ka = den_lcm(a.row(i));
+        let kc = crate::algebra::intgcd::lcm(&ka, &den_lcm(std::slice::from_ref(c)));
+        let Some(at): Option<Vec<Vec<(&Monomial, BigInt)>>> =
+            a.row(i).iter().map(|e| scaled_terms(e, &kc)).collect()
+        else {
+            return false;
+        };
+        for j in 0..n {
+            let mut acc: BTreeMap<Monomial, BigInt> = BTreeMap::new();
+            for (k, ak) in at.iter().enumerate() {
+                for (ma, ca) in ak {
+                    for (mb, cb) in &bt[k * n + j] {
+                        let m: Monomial = ma.iter().zip(mb.iter()).map(|(x, y)| x + y).collect();
+                        *acc.entry(m).or_insert_with(BigInt::zero) += ca * cb;
+                    }
+                }
+            }
+            acc.retain(|_, v| !v.is_zero());
+            // Expected: kc·kb·c on the diagonal, 0 elsewhere.
+            if i != j {
+                if !acc.is_empty() {
+                    return false;
+                }
+                continue;
+            }
+            let kk = &kc * &kb;
+            let Some(want) = scaled_terms(c, &kk) else {
+                return false;
+            };
+            if want.len() != acc.len() || !want.iter().all(|(m, v)| acc.get(*m) == Some(v)) {
+                return false;
+            }
+        }
+    }
+    true
+}
+
+/// Certifies, for every symbol s in `symbols`, that over Q(others)[s] the
+/// invariant factors of the square A are 1, …, 1, c (up to a unit), given
+/// `A·B = c·I`; see the module text. With every symbol of A in `symbols`
+/// this proves `d_(n−1) = 1` and `d_n ~ c` over Q[all].
+pub fn certify_last_factor_several(
+    a: &Matrix<PolyRing>,
+    c: &MPoly,
+    b: &Matrix<PolyRing>,
+    symbols: &[usize],
+) -> Certificate {
+    let n = a.rows();
+    let names = &a.ring.names;
+    let mut checks = Vec::new();
+    let shaped = n == a.cols() && b.rows() == n && b.cols() == n && !c.is_zero();
+    let prod = shaped && product_is_c_identity(a, c, b);
+    checks.push(Check {
+        property: "A·B = c·I".into(),
+        ok: prod,
+        detail: if prod {
+            format!(
+                "holds exactly over {} for a polynomial B and c ≠ 0 ({} terms)",
+                a.ring.name(),
+                c.terms().len()
+            )
+        } else {
+            "fails (or c = 0, or the shapes differ)".into()
+        },
+    });
+    let entries: Vec<&MPoly> = b.entries().iter().filter(|e| !e.is_zero()).collect();
+    let mut all = prod;
+    for &s in symbols {
+        let bound = degree_bound(a, s);
+        let dc = c.degree_in(s).unwrap_or(0) as usize;
+        let deg_ok = dc == bound;
+        checks.push(Check {
+            property: format!("deg_{} c = degree bound of det A", names[s]),
+            ok: deg_ok,
+            detail: format!(
+                "deg_{0} c = {dc}; deg_{0} det A ≤ {bound} (least of the sums of row and of column degrees in {0})",
+                names[s]
+            ),
+        });
+        let coprime = if entries.iter().any(|e| e.contains_var(s)) {
+            coprime_in(&entries, s)
+        } else {
+            // Entries free of s are units of Q(others)[s].
+            Some((0, 1))
+        };
+        checks.push(Check {
+            property: format!("gcd of B's entries over Q(others)[{}] is 1", names[s]),
+            ok: coprime.is_some(),
+            detail: match coprime {
+                Some((0, _)) => format!("an entry of B is free of {}, a unit", names[s]),
+                Some((p, k)) => format!(
+                    "the first {k} nonzero entries of B have gcd 1 in Z_p[{0}], p = {p}, at a point of the other symbols where the first keeps its leading coefficient in {0}",
+                    names[s]
+                ),
+                None => "not shown (no prime and point among those tried)".into(),
+            },
+        });
+        all = all && deg_ok && coprime.is_some();
+    }
+    checks.push(Check {
+        property: "invariant factors 1, …, 1, c".into(),
+        ok: all,
+        detail: if all {
+            "B = (c/det A)·adj A with entries of unit content and deg c ≥ deg det A in each symbol: c ~ det A and d_(n−1) = 1".into()
+        } else {
+            "not established".into()
+        },
+    });
+    Certificate { checks }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::algebra::rational::qi;
+    use crate::algebra::smith::several::det_adj_several;
+
+    fn ring2() -> PolyRing {
+        PolyRing::new(vec!["x".into(), "y".into()])
+    }
+
+    #[test]
+    fn generic_matrix_is_certified_and_tampering_is_caught() {
+        let (x, y) = (MPoly::var(0, 2), MPoly::var(1, 2));
+        let one = MPoly::one(2);
+        let a = Matrix::new(
+            ring2(),
+            2,
+            2,
+            vec![&x + &y, one.clone(), &x * &y - &one, &y + &x.scale(&qi(2))],
+        );
+        let (c, b) = det_adj_several(&a).expect("nonsingular");
+        assert!(certify_last_factor_several(&a, &c, &b, &[0, 1]).verified());
+        assert!(certify_last_factor_several(&a, &c, &b, &[1]).verified());
+        // c and B multiplied by a common factor keep A·B = c·I but lose the
+        // coprimality of B's entries.
+        let t = &x + &one;
+        let bt = b.map(ring2(), |e| e * &t);
+        let ct = &c * &t;
+        let cert = certify_last_factor_several(&a, &ct, &bt, &[0, 1]);
+        assert!(!cert.verified());
+        // [[x + y, 1], [x·y − 1, y]] has det y² + 1: the invariant factors
+        // over Q(y)[x] are 1, 1, but deg_x c = 0 < 2 leaves it unproved.
+        let a2 = Matrix::new(
+            ring2(),
+            2,
+            2,
+            vec![&x + &y, one.clone(), &x * &y - &one, y.clone()],
+        );
+        let (c2, b2) = det_adj_several(&a2).expect("nonsingular");
+        assert!(!certify_last_factor_several(&a2, &c2, &b2, &[0]).verified());
+        assert!(certify_last_factor_several(&a2, &c2, &b2, &[1]).verified());
+        // A wrong c fails the product.
+        assert!(!certify_last_factor_several(&a, &(&c + &one), &b, &[0]).verified());
+    }
+
+    #[test]
+    fn diag_x_x_is_rejected_by_the_degree_check() {
+        // A = diag(x, x): B = I, c = x satisfy A·B = c·I with coprime B,
+        // but d_1 = x; only deg_x c = 1 < 2 exposes it.
+        let x = MPoly::var(0, 2);
+        let z = MPoly::zero(2);
+        let one = MPoly::one(2);
+        let a = Matrix::new(
+            ring2(),
+            2,
+            2,
+            vec![x.clone(), z.clone(), z.clone(), x.clone()],
+        );
+        let b = Matrix::new(ring2(), 2, 2, vec![one.clone(), z.clone(), z, one]);
+        let cert = certify_last_factor_several(&a, &x, &b, &[0, 1]);
+        assert!(!cert.verified());
+        assert!(cert.failures().any(|f| f.property.starts_with("deg_x")));
+        assert!(!certify_last_factor_several(&a, &x, &b, &[0]).verified());
+    }
+}
