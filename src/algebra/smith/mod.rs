@@ -18,6 +18,7 @@ pub mod divisors;
 pub mod elimination;
 pub mod modes;
 pub mod nonsingular;
+pub mod trailing;
 
 use crate::algebra::matrix::Matrix;
 use crate::algebra::ring::EuclideanDomain;

@@ -237,6 +237,7 @@ pub fn decompose_qx(a: &Matrix<QxRing>) -> (SmithDecomposition<QxRing>, &'static
 }
 
 const NONSINGULAR_ALGORITHM: &str = "nonsingular path: det and adj by images mod word primes and CRT, Hermite structure W·A = [[I, h], [0, f]] (U = I/det, V = adj when det is constant)";
+const TRAILING_ALGORITHM: &str = "det and adj by images mod word primes (CRT above a proved bound); Hermite basis W·A = [[I, h], [0, T]] glued by CRT from the rank-one part (h = −adj_ij/adj_nj mod det) and an HNF modulo the repeated part of det; Smith form of the small trailing block T by elimination";
 const ELIMINATION_ALGORITHM: &str =
     "elimination: least-degree pivot, division with remainder, content removal";
 
@@ -470,6 +471,23 @@ fn one_symbol(
             (SmithDecomposition::new(&au), ELIMINATION_ALGORITHM)
         }
         Some(FastPath::NoHermite { c, b }) => {
+            opts.progress
+                .phase("Hermite basis from A·B = c·I: rank-one part and HNF modulo the repeated part, Smith of the trailing block");
+            if let Some(d) = super::trailing::trailing_hermite(&au, &c, &b) {
+                return Ok(generic_report(
+                    name,
+                    a,
+                    &au,
+                    d,
+                    TRAILING_ALGORITHM,
+                    Mode::OneSymbol,
+                    ring,
+                    note,
+                    opts,
+                    &super::certify::ClearedQx,
+                )?
+                .0);
+            }
             if au.rows() >= TWO_FACTOR_MIN
                 && let Some(report) = two_factor_report(
                     name,
