@@ -26,7 +26,11 @@
 use super::SmithDecomposition;
 use crate::algebra::matrix::Matrix;
 use crate::algebra::qx::{QPoly, QxRing};
-use crate::algebra::ring::{GcdDomain, Ring};
+use crate::algebra::intgcd;
+use crate::algebra::rational::Q;
+use crate::algebra::ring::{EuclideanDomain, GcdDomain, Ring};
+use num_bigint::BigInt;
+use num_traits::{One, Zero};
 
 /// The trailing block is eliminated in full; beyond this size the route
 /// declines.
@@ -96,6 +100,38 @@ pub fn hnf_mod(r: &QxRing, rows: &[Vec<QPoly>], m: &QPoly) -> Option<Vec<Vec<QPo
             h.push(e);
             continue;
         }
+        // A pivot invertible modulo the modulus: scale its row to a 1 there
+        // (a polynomial multiple stays in the lattice, and the row is
+        // recovered from it modulo the modulus) and clear the column below
+        // by plain subtraction: no Bezout cofactors, whose heights compound.
+        let unit = (j..n).find_map(|i| {
+            (!w[i][j].is_zero())
+                .then(|| r.inverse_mod(&w[i][j], &modulus))
+                .flatten()
+                .map(|s| (i, s))
+        });
+        if let Some((p, inv)) = unit {
+            w.swap(j, p);
+            let mut row: Vec<QPoly> = w[j].iter().map(|e| r.mul(e, &inv)).collect();
+            reduce_row(r, &mut row, &modulus);
+            for e in row.iter_mut().take(j) {
+                *e = r.zero();
+            }
+            row[j] = r.one();
+            for wi in w.iter_mut().skip(j + 1) {
+                let q = wi[j].clone();
+                if q.is_zero() {
+                    continue;
+                }
+                for t in j..n {
+                    wi[t] = r.sub(&wi[t], &r.mul(&q, &row[t]));
+                }
+                reduce_row(r, wi, &modulus);
+                make_primitive(wi);
+            }
+            h.push(row);
+            continue;
+        }
         for i in j + 1..n {
             if w[i][j].is_zero() {
                 continue;
@@ -116,6 +152,10 @@ pub fn hnf_mod(r: &QxRing, rows: &[Vec<QPoly>], m: &QPoly) -> Option<Vec<Vec<QPo
             }
             reduce_row(r, &mut new_j, &modulus);
             reduce_row(r, &mut new_i, &modulus);
+            // A constant factor is a unit of Q[x]: rows stay in the lattice,
+            // and their heights stay small.
+            make_primitive(&mut new_j);
+            make_primitive(&mut new_i);
             w[j] = new_j;
             w[i] = new_i;
         }
@@ -170,45 +210,53 @@ pub fn trailing_hermite(
     }
     let c_gen = r.normalize(&c_gen);
     let c_loc = r.normalize(&c_loc);
-    // Modulo c_gen: h_i = −B_ij·B_nj⁻¹.
-    let gen_part = c_gen.degree()? > 0;
-    let h_gen: Vec<QPoly> = if gen_part {
-        let last = b.row(n - 1);
-        let mut order: Vec<usize> = (0..n).filter(|&j| !last[j].is_zero()).collect();
-        order.sort_by_key(|&j| last[j].degree());
-        let (j, inv) = order
-            .into_iter()
-            .find_map(|j| r.inverse_mod(&last[j], &c_gen).map(|s| (j, s)))?;
-        (0..n - 1)
-            .map(|i| r.neg(&r.rem(&r.mul(b.get(i, j), &inv), &c_gen)))
-            .collect()
-    } else {
-        vec![r.zero(); n - 1]
-    };
     // Modulo c_loc: the Hermite basis of L + c_loc·Q[x]ⁿ.
     let rows: Vec<Vec<QPoly>> = (0..n).map(|i| a.row(i).to_vec()).collect();
     let mut h_loc = hnf_mod(&r, &rows, &c_loc)?;
     let first = (0..n).find(|&i| h_loc[i][i].degree() != Some(0))?;
-    // Clear the entries above the unit pivots (bottom pivot first, so each
-    // pivot row is already clear when it is used).
-    for j in (0..first).rev() {
+    let k = n - first;
+    if !(2..=MAX_TRAILING).contains(&k) {
+        return None;
+    }
+    // Hermite reduction modulo c_loc: entries above a unit pivot cleared,
+    // entries above a trailing pivot reduced modulo it (pivot columns in
+    // increasing order, so later columns are reduced after they change).
+    for j in 0..n {
         let (top, rest) = h_loc.split_at_mut(j);
         let pivot = &rest[0];
         for row in top.iter_mut() {
-            let q = row[j].clone();
-            if q.is_zero() {
+            if row[j].is_zero() || row[j].degree() < pivot[j].degree() {
                 continue;
             }
+            let q = if j < first {
+                row[j].clone()
+            } else {
+                r.div_rem(&row[j], &pivot[j]).0
+            };
             for t in j..n {
                 row[t] = r.sub(&row[t], &r.mul(&q, &pivot[t]));
             }
             reduce_row(&r, row, &c_loc);
         }
     }
-    let k = n - first;
-    if !(2..=MAX_TRAILING).contains(&k) {
-        return None;
-    }
+    // H = [[I, h], [0, T]]: row i (< n) is d_i·e_i plus h_loc's entries in
+    // the trailing columns before the last; the last entry x is glued by
+    // CRT: x ≡ h_loc[i][n] (c_loc), and modulo c_gen, where B's rows are
+    // proportional (B_t ≡ β_t·w with β_t = B_tj/B_nj), x makes the row's
+    // product with B vanish: x ≡ −(d_i·B_ij + Σ_t h_t·B_tj)·B_nj⁻¹.
+    let gen_part = c_gen.degree()? > 0;
+    let pivot_col = if gen_part {
+        let last = b.row(n - 1);
+        let mut order: Vec<usize> = (0..n).filter(|&j| !last[j].is_zero()).collect();
+        order.sort_by_key(|&j| last[j].degree());
+        Some(
+            order
+                .into_iter()
+                .find_map(|j| r.inverse_mod(&last[j], &c_gen).map(|s| (j, s)))?,
+        )
+    } else {
+        None
+    };
     // CRT idempotents: e_loc ≡ 1 (c_loc), ≡ 0 (c_gen); e_gen = 1 − e_loc.
     let (e_loc, e_gen) = if gen_part {
         let s = r.inverse_mod(&c_gen, &c_loc)?;
@@ -217,16 +265,7 @@ pub fn trailing_hermite(
     } else {
         (r.one(), r.zero())
     };
-    let glue = |loc: &QPoly, far: &QPoly| -> QPoly {
-        let x = r.add(&r.mul(loc, &e_loc), &r.mul(far, &e_gen));
-        if x.degree() >= f.degree() {
-            r.rem(&x, &f)
-        } else {
-            x
-        }
-    };
-    // H = [[I, h], [0, T]]: rows i < n−1 ≡ h_loc[i] (c_loc) and
-    // ≡ d_i·(e_i + h_gen_i·e_n) (c_gen); the last row d_n·c_gen·e_n.
+    let t_last = r.mul(&h_loc[n - 1][n - 1], &c_gen);
     let mut h = Matrix::zeros(r.clone(), n, n);
     for i in 0..n - 1 {
         let d = if i < first {
@@ -234,17 +273,27 @@ pub fn trailing_hermite(
         } else {
             h_loc[i][i].clone()
         };
-        h.set(i, i, d.clone());
-        for t in first.max(i + 1)..n {
-            let far = if t == n - 1 {
-                r.mul(&d, &h_gen[i])
-            } else {
-                r.zero()
-            };
-            h.set(i, t, glue(&h_loc[i][t], &far));
+        let mid = first.max(i + 1)..n - 1;
+        let far = match &pivot_col {
+            Some((j, inv)) => {
+                let mut acc = r.mul(&d, b.get(i, *j));
+                for t in mid.clone() {
+                    if !h_loc[i][t].is_zero() {
+                        acc = r.add(&acc, &r.mul(&h_loc[i][t], b.get(t, *j)));
+                    }
+                }
+                r.neg(&r.rem(&r.mul(&acc, inv), &c_gen))
+            }
+            None => r.zero(),
+        };
+        let x = r.add(&r.mul(&h_loc[i][n - 1], &e_loc), &r.mul(&far, &e_gen));
+        h.set(i, n - 1, r.rem(&x, &t_last));
+        for t in mid {
+            h.set(i, t, h_loc[i][t].clone());
         }
+        h.set(i, i, d);
     }
-    h.set(n - 1, n - 1, r.mul(&h_loc[n - 1][n - 1], &c_gen));
+    h.set(n - 1, n - 1, t_last);
     // W = H·B/c, exactly.
     let mut w = Matrix::zeros(r.clone(), n, n);
     for i in 0..n {
@@ -321,37 +370,47 @@ pub fn trailing_hermite(
 /// λ_i: `(ΛU)·A·(VΛ⁻¹) = Λ·D·Λ⁻¹ = D`. U's coefficients then print
 /// without a rational normalisation each (the costly part of the report).
 pub fn integral_rows(dec: &mut SmithDecomposition<QxRing>) {
-    use crate::algebra::intgcd;
-    use crate::algebra::rational::Q;
-    use num_bigint::BigInt;
-    use num_traits::{One, Zero};
-    let n = dec.u.rows();
-    for i in 0..n {
-        let row = dec.u.row(i);
-        let l = row
-            .iter()
-            .filter(|e| !e.is_zero())
-            .fold(BigInt::one(), |l, e| intgcd::lcm(&l, e.den()));
-        let mut g = BigInt::zero();
-        for e in row.iter().filter(|e| !e.is_zero()) {
-            let f = &l / e.den();
-            for c in e.num() {
-                if g.is_one() {
-                    break;
-                }
-                g = intgcd::gcd(&g, &(c * &f));
-            }
-        }
-        if g.is_zero() || (l.is_one() && g.is_one()) {
+    for i in 0..dec.u.rows() {
+        let Some(lambda) = primitive_scale(dec.u.row(i)) else {
             continue;
-        }
-        let lambda = Q::new(l, g);
+        };
         let inv = QPoly::constant(&lambda.recip());
         let lam = QPoly::constant(&lambda);
         dec.u.scale_row(i, &lam);
         dec.v.scale_col(i, &inv);
         dec.u_inv.scale_col(i, &inv);
         dec.v_inv.scale_row(i, &lam);
+    }
+}
+
+/// The positive constant λ making `λ·row` a primitive integer row, or
+/// `None` when the row is zero or already primitive and integral.
+fn primitive_scale(row: &[QPoly]) -> Option<Q> {
+    let l = row
+        .iter()
+        .filter(|e| !e.is_zero())
+        .fold(BigInt::one(), |l, e| intgcd::lcm(&l, e.den()));
+    let mut g = BigInt::zero();
+    for e in row.iter().filter(|e| !e.is_zero()) {
+        let f = &l / e.den();
+        for c in e.num() {
+            if g.is_one() {
+                break;
+            }
+            g = intgcd::gcd(&g, &(c * &f));
+        }
+    }
+    if g.is_zero() || (l.is_one() && g.is_one()) {
+        return None;
+    }
+    Some(Q::new(l, g))
+}
+
+fn make_primitive(row: &mut [QPoly]) {
+    if let Some(lambda) = primitive_scale(row) {
+        for e in row.iter_mut() {
+            *e = e.scale(&lambda);
+        }
     }
 }
 
