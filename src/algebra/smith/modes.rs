@@ -439,7 +439,10 @@ fn one_symbol(
         }
     }
     let (dec, alg) = match super::nonsingular::try_fast(&au, TRANSFORM_LIMIT_BITS) {
-        Some(FastPath::Decomposition(d)) => (d, NONSINGULAR_ALGORITHM),
+        Some(FastPath::Decomposition(mut d)) => {
+            super::trailing::integral_rows(&mut d);
+            (d, NONSINGULAR_ALGORITHM)
+        }
         Some(FastPath::FormOnly { c, b, bits }) => {
             opts.progress
                 .phase("certifying the invariant factors (A·B = c·I)");
