@@ -234,7 +234,12 @@ fn two_nontrivial_factors_get_certified_transforms() {
     for want in ["U·A·V = D", "U unimodular", "V unimodular"] {
         assert!(names.iter().any(|n| n == want), "{want} missing: {names:?}");
     }
-    assert!(v["algorithm"].as_str().expect("text").contains("Hermite basis"));
+    assert!(
+        v["algorithm"]
+            .as_str()
+            .expect("text")
+            .contains("Hermite basis")
+    );
 }
 
 #[test]

@@ -24,9 +24,9 @@
 //! or print.
 
 use super::SmithDecomposition;
+use crate::algebra::intgcd;
 use crate::algebra::matrix::Matrix;
 use crate::algebra::qx::{QPoly, QxRing};
-use crate::algebra::intgcd;
 use crate::algebra::rational::Q;
 use crate::algebra::ring::{EuclideanDomain, GcdDomain, Ring};
 use num_bigint::BigInt;
