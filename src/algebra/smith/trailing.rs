@@ -145,8 +145,7 @@ pub fn hnf_mod(r: &QxRing, rows: &[Vec<QPoly>], m: &QPoly) -> Option<Vec<Vec<QPo
             let b = r.div_exact(&w[i][j], &g)?;
             let mut new_j = Vec::with_capacity(n);
             let mut new_i = Vec::with_capacity(n);
-            for t in 0..n {
-                let (x, y) = (&w[j][t], &w[i][t]);
+            for (x, y) in w[j].iter().zip(&w[i]) {
                 new_j.push(r.add(&r.mul(&u, x), &r.mul(&v, y)));
                 new_i.push(r.sub(&r.mul(&a, y), &r.mul(&b, x)));
             }
@@ -267,29 +266,25 @@ pub fn trailing_hermite(
     };
     let t_last = r.mul(&h_loc[n - 1][n - 1], &c_gen);
     let mut h = Matrix::zeros(r.clone(), n, n);
-    for i in 0..n - 1 {
-        let d = if i < first {
-            r.one()
-        } else {
-            h_loc[i][i].clone()
-        };
+    for (i, hl) in h_loc.iter().enumerate().take(n - 1) {
+        let d = if i < first { r.one() } else { hl[i].clone() };
         let mid = first.max(i + 1)..n - 1;
         let far = match &pivot_col {
             Some((j, inv)) => {
                 let mut acc = r.mul(&d, b.get(i, *j));
                 for t in mid.clone() {
-                    if !h_loc[i][t].is_zero() {
-                        acc = r.add(&acc, &r.mul(&h_loc[i][t], b.get(t, *j)));
+                    if !hl[t].is_zero() {
+                        acc = r.add(&acc, &r.mul(&hl[t], b.get(t, *j)));
                     }
                 }
                 r.neg(&r.rem(&r.mul(&acc, inv), &c_gen))
             }
             None => r.zero(),
         };
-        let x = r.add(&r.mul(&h_loc[i][n - 1], &e_loc), &r.mul(&far, &e_gen));
+        let x = r.add(&r.mul(&hl[n - 1], &e_loc), &r.mul(&far, &e_gen));
         h.set(i, n - 1, r.rem(&x, &t_last));
         for t in mid {
-            h.set(i, t, h_loc[i][t].clone());
+            h.set(i, t, hl[t].clone());
         }
         h.set(i, i, d);
     }
