@@ -471,7 +471,12 @@ fn one_symbol(
             if let Some(report) = two_factor_report(name, a, &au, &c, &b, &ring, why, opts) {
                 return Ok(report);
             }
-            (SmithDecomposition::new(&au), ELIMINATION_ALGORITHM)
+            // Three or more non-trivial factors: the Hermite-basis route
+            // (large transforms, but far cheaper than the elimination).
+            match super::trailing::trailing_hermite(&au, &c, &b) {
+                Some(d) => (d, TRAILING_ALGORITHM),
+                None => (SmithDecomposition::new(&au), ELIMINATION_ALGORITHM),
+            }
         }
         Some(FastPath::NoHermite { c, b }) => {
             opts.progress
