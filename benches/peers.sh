@@ -1,27 +1,20 @@
 #!/usr/bin/env bash
-# Times the whole `lambdamat smith` process against PARI/GP's matsnf(M,3)
-# (transforms included) on the seeded random matrices of
-# ../shared/bench/smith_peers.py, interleaving runs so both see the same
-# machine load. SymPy is much slower; run smith_peers.py itself for it.
-# Usage: benches/peers.sh [RUNS]   (needs gp: apt-get install -y pari-gp)
+# Issue 15's goal grid: `lambdamat smith --json` (whole process, CPU time)
+# against PARI/GP's matsnf(M,3) and Singular's jacobson.lib smith(M,1), all
+# three with transforms, on seeded random dense n×n matrices of degree d and
+# on B·diag(1, …, 1, x − 1, (x − 1)(x + 2), (x − 1)(x + 2)x)·C (B of degree
+# d, C of degree 1), n = 8, 12, 16, 20, 32 and d = 1, 2, 3. Prints a
+# markdown table with the CPU ratios (peer / lambdamat) and whether the
+# invariant factors' degrees agree. Matrices come from smith_peers.py
+# (SMITH_PEERS_DIR, default /work/shared/bench); the .lmx files go to OUTDIR.
+#
+# Usage: benches/peers.sh [OUTDIR] [peers_grid.py options, e.g.
+#        --ns 8,12 --ds 1 --shapes dense,bdc2,bdc3 --timeout 60]
+# Needs gp and Singular for the peers (apt-get install -y pari-gp singular);
+# --no-pari / --no-singular skip one. Long: run it in the background.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-runs=${1:-5}
+out=${1:-/tmp/lambdamat-peers}
+shift || true
 cargo build --release -q
-peers=../shared/bench
-for case in "10 2 1" "8 4 1" "12 3 1"; do
-  set -- $case
-  f=benches/data/peers_$1_$2_$3.lmx
-  for _ in $(seq "$runs"); do
-    python3 -c "import sys; sys.path.insert(0,'$peers'); import smith_peers as s; print('pari', s.run_pari(s.gen($1,$2,$3))[0])"
-    /usr/bin/time -f "lambdamat %e %M" ./target/release/lambdamat smith "$f" 2>&1 >/dev/null | tail -1
-  done | python3 -c "
-import sys, statistics
-t = {}; rss = 0
-for line in sys.stdin:
-    k, v, *rest = line.split()
-    t.setdefault(k, []).append(float(v))
-    if rest: rss = max(rss, int(rest[0]))
-p, l = statistics.median(t['pari']), statistics.median(t['lambdamat'])
-print(f'$1x$1 deg $2: pari {p:.3f} s, lambdamat {l:.3f} s, ratio {p/l:.1f}x, lambdamat peak RSS {rss} KB')"
-done
+exec python3 benches/peers_grid.py target/release/lambdamat "$out" "$@"

@@ -100,7 +100,13 @@ fn scale(c: &mut Criterion) {
 fn large(c: &mut Criterion) {
     let mut g = c.benchmark_group("smith_large");
     g.sample_size(10);
-    for case in ["const_200", "diag_200", "qx_50x50_deg1"] {
+    for case in [
+        "const_200",
+        "diag_200",
+        "qx_50x50_deg1",
+        "bdc_12",
+        "bdc3_16",
+    ] {
         let a = first_matrix(&format!("benches/data/issue15_{case}.lmx"));
         g.bench_function(case, |b| {
             b.iter(|| {

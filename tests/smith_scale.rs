@@ -215,15 +215,17 @@ fn forty_by_forty_of_degree_one_certifies_the_form_when_transforms_are_huge() {
 }
 
 #[test]
-fn two_nontrivial_factors_are_certified_without_elimination() {
+fn two_nontrivial_factors_get_certified_transforms() {
     // B·diag(1, …, 1, x − 1, (x − 1)(x + 2))·C with B, C dense random of
-    // degree 1 (12×12): d_(n−1) = x − 1, so the Hermite shortcut declines;
-    // the invariant factors come from the gcd of adj's entries and Jacobi
-    // minors. The expected last factor was produced by the general
-    // elimination with transforms (certified U·A·V = D), before this route.
+    // degree 1 (12×12): d_(n−1) = x − 1, so the single-factor Hermite
+    // shortcut declines; the Hermite basis is glued by CRT from the
+    // rank-one part of adj and an HNF modulo (x − 1)², and U·A·V = D is
+    // certified as usual. The expected last factor was produced by the
+    // general elimination with transforms (certified U·A·V = D), before
+    // either shortcut existed.
     let v = json(&["smith", "tests/data/issue15_bdc_12.lmx"]);
     assert_eq!(v["verified"], true);
-    assert!(v["U"].is_null() && v["V"].is_null());
+    assert!(v["U"].is_array() && v["V"].is_array());
     let inv = strings(&v["invariant_factors"]);
     assert_eq!(inv.len(), 12);
     assert!(inv[..10].iter().all(|f| f == "1"), "{inv:?}");
@@ -231,20 +233,14 @@ fn two_nontrivial_factors_are_certified_without_elimination() {
     let want = std::fs::read_to_string("tests/data/issue15_bdc_12_f12.txt").expect("data");
     assert_eq!(inv[11], want.trim());
     let names = check_names(&v);
-    for want in [
-        "A·B = c·I",
-        "c = det Ã (Ã = Δ·A, Δ the rows' denominators)",
-        "gcd of the entries of B is g",
-        "d_(n−2)(A) = 1",
-        "invariant factors 1, …, 1, g, c/g",
-    ] {
+    for want in ["U·A·V = D", "U unimodular", "V unimodular"] {
         assert!(names.iter().any(|n| n == want), "{want} missing: {names:?}");
     }
     assert!(
-        v["mode_note"]
+        v["algorithm"]
             .as_str()
             .expect("text")
-            .contains("transforms omitted")
+            .contains("Hermite basis")
     );
 }
 
@@ -306,4 +302,26 @@ fn random_four_by_four_in_three_symbols_in_both_modes() {
     let note = p["mode_note"].as_str().expect("text");
     assert!(note.contains("det A has 180 terms"), "{note}");
     assert!(note.ends_with(&format!("is {}", inv[3])), "{note}");
+}
+
+#[test]
+fn three_nontrivial_factors_get_certified_transforms() {
+    // B·diag(1, …, 1, x − 1, (x − 1)(x + 2), (x − 1)(x + 2)x)·C, 10×10, B of
+    // degree 1 and C of degree 1 (benches/peers_grid.py, shape bdc3, seed 1):
+    // the HNF modulo the repeated part (x − 1)³(x + 2)² has a 3×3 trailing
+    // block. The first two non-trivial factors are the planted ones; the
+    // last is det A over the two (monic), of degree deg det − 3.
+    let v = json(&["smith", "tests/data/issue15_bdc3_10.lmx"]);
+    assert_eq!(v["verified"], true);
+    assert!(v["U"].is_array() && v["V"].is_array());
+    let inv = strings(&v["invariant_factors"]);
+    assert_eq!(inv.len(), 10);
+    assert!(inv[..7].iter().all(|f| f == "1"), "{inv:?}");
+    assert_eq!(inv[7], "x - 1");
+    assert_eq!(inv[8], "x^2 + x - 2");
+    assert!(inv[9].starts_with("x^23 "), "{}", inv[9]);
+    let names = check_names(&v);
+    for want in ["U·A·V = D", "U unimodular", "V unimodular"] {
+        assert!(names.iter().any(|n| n == want), "{want} missing: {names:?}");
+    }
 }

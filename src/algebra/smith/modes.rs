@@ -241,6 +241,7 @@ pub fn decompose_qx(a: &Matrix<QxRing>) -> (SmithDecomposition<QxRing>, &'static
 }
 
 const NONSINGULAR_ALGORITHM: &str = "nonsingular path: det and adj by images mod word primes and CRT, Hermite structure W·A = [[I, h], [0, f]] (U = I/det, V = adj when det is constant)";
+const TRAILING_ALGORITHM: &str = "det and adj by images mod word primes (CRT above a proved bound); Hermite basis W·A = [[I, h], [0, T]] glued by CRT from the rank-one part (h = −adj_ij/adj_nj mod det) and an HNF modulo the repeated part of det; Smith form of the small trailing block T by elimination";
 const ELIMINATION_ALGORITHM: &str =
     "elimination: least-degree pivot, division with remainder, content removal";
 
@@ -442,7 +443,10 @@ fn one_symbol(
         }
     }
     let (dec, alg) = match super::nonsingular::try_fast(&au, TRANSFORM_LIMIT_BITS) {
-        Some(FastPath::Decomposition(d)) => (d, NONSINGULAR_ALGORITHM),
+        Some(FastPath::Decomposition(mut d)) => {
+            super::trailing::integral_rows(&mut d);
+            (d, NONSINGULAR_ALGORITHM)
+        }
         Some(FastPath::FormOnly { c, b, bits }) => {
             opts.progress
                 .phase("certifying the invariant factors (A·B = c·I)");
@@ -471,9 +475,31 @@ fn one_symbol(
             if let Some(report) = two_factor_report(name, a, &au, &c, &b, &ring, why, opts) {
                 return Ok(report);
             }
-            (SmithDecomposition::new(&au), ELIMINATION_ALGORITHM)
+            // Three or more non-trivial factors: the Hermite-basis route
+            // (large transforms, but far cheaper than the elimination).
+            match super::trailing::trailing_hermite(&au, &c, &b) {
+                Some(d) => (d, TRAILING_ALGORITHM),
+                None => (SmithDecomposition::new(&au), ELIMINATION_ALGORITHM),
+            }
         }
         Some(FastPath::NoHermite { c, b }) => {
+            opts.progress
+                .phase("Hermite basis from A·B = c·I: rank-one part and HNF modulo the repeated part, Smith of the trailing block");
+            if let Some(d) = super::trailing::trailing_hermite(&au, &c, &b) {
+                return Ok(generic_report(
+                    name,
+                    a,
+                    &au,
+                    d,
+                    TRAILING_ALGORITHM,
+                    Mode::OneSymbol,
+                    ring,
+                    note,
+                    opts,
+                    &super::certify::ClearedQx,
+                )?
+                .0);
+            }
             if au.rows() >= TWO_FACTOR_MIN
                 && let Some(report) = two_factor_report(
                     name,

@@ -1,0 +1,486 @@
+//! Transforms for a nonsingular A over Q[x] with several non-trivial
+//! invariant factors (e.g. B·diag(1, …, 1, x − 1, (x − 1)(x + 2))·C),
+//! where the single-factor Hermite shortcut of [`super::nonsingular`]
+//! declines.
+//!
+//! From `A·B = c·I` (`B = adj(Ã)·Δ`, `c = det Ã`, both exact) the row
+//! lattice of A is `L = {r : r·B ≡ 0 mod c}`. With `f = c/lc(c)` split as
+//! `f = c_loc·c_gen`, `c_loc` the part of f supported on the roots of a
+//! multiple of the gcd of B's entries (there the rank of B drops by more
+//! than one) and `c_gen` coprime to it:
+//! - modulo `c_gen` the rows of B are proportional, so `e_i + h_i·e_n`
+//!   with `h_i = −B_ij·B_nj⁻¹ mod c_gen` lies in L locally (as in the
+//!   single-factor shortcut);
+//! - modulo `c_loc` (small degree) the Hermite form of `L + c_loc·Q[x]ⁿ`
+//!   is computed by elimination modulo `c_loc` (Cohen's HNF modulo D,
+//!   Algorithm 2.4.8, in row form).
+//!
+//! The two are glued by the Chinese remainder theorem into
+//! `H = [[I, h], [0, T]]` with T k×k upper triangular, `W = H·B/c`
+//! (exact division, so W is polynomial and `W·A = H`), and the Smith form
+//! of the small block T by the general elimination. Anything unexpected
+//! returns `None` and the caller falls back; the result is certified by
+//! the caller like any other decomposition. This module must not certify
+//! or print.
+
+use super::SmithDecomposition;
+use crate::algebra::intgcd;
+use crate::algebra::matrix::Matrix;
+use crate::algebra::qx::{QPoly, QxRing};
+use crate::algebra::rational::Q;
+use crate::algebra::ring::{EuclideanDomain, GcdDomain, Ring};
+use num_bigint::BigInt;
+use num_traits::{One, Zero};
+
+/// The trailing block is eliminated in full; beyond this size the route
+/// declines.
+pub const MAX_TRAILING: usize = 8;
+
+/// `c_loc` of larger degree is not worth an elimination modulo it.
+pub const MAX_LOCAL_DEGREE: usize = 64;
+
+/// Monic gcd over Q: modular first, Euclid over Q when that declines.
+fn gcd_q(r: &QxRing, a: &QPoly, b: &QPoly) -> QPoly {
+    if a.is_zero() {
+        return r.normalize(b);
+    }
+    if b.is_zero() {
+        return r.normalize(a);
+    }
+    match crate::algebra::modgcd::qx_gcd(a.num(), b.num()) {
+        Some(g) => r.normalize(&QPoly::from_ints(g)),
+        None => r.gcd(a, b),
+    }
+}
+
+/// `(u, v, g)` with `u·a + v·b = g`, g the monic gcd (a, b not both 0).
+fn xgcd(r: &QxRing, a: &QPoly, b: &QPoly) -> Option<(QPoly, QPoly, QPoly)> {
+    if b.is_zero() {
+        let inv = QPoly::constant(&a.lc().recip());
+        return Some((inv, r.zero(), r.normalize(a)));
+    }
+    if a.is_zero() {
+        let inv = QPoly::constant(&b.lc().recip());
+        return Some((r.zero(), inv, r.normalize(b)));
+    }
+    if b.degree() == Some(0) {
+        return Some((r.zero(), QPoly::constant(&b.lc().recip()), r.one()));
+    }
+    let (g, u) = r.ext_gcd_mod(a, b);
+    let v = r.div_exact(&r.sub(&g, &r.mul(&u, a)), b)?;
+    Some((u, v, g))
+}
+
+fn reduce_row(r: &QxRing, row: &mut [QPoly], m: &QPoly) {
+    for e in row.iter_mut() {
+        if e.degree() >= m.degree() {
+            *e = r.rem(e, m);
+        }
+    }
+}
+
+/// The Hermite basis (upper triangular, monic diagonal, each row reduced
+/// modulo the modulus current at its step) of the row lattice
+/// `rows + m·Q[x]ⁿ`, for a monic `m` that is a multiple of that lattice's
+/// determinant (Cohen, Algorithm 2.4.8, transposed). The product of the
+/// diagonal is then the determinant.
+pub fn hnf_mod(r: &QxRing, rows: &[Vec<QPoly>], m: &QPoly) -> Option<Vec<Vec<QPoly>>> {
+    let n = rows.len();
+    let mut w: Vec<Vec<QPoly>> = rows.to_vec();
+    let mut modulus = m.clone();
+    for row in w.iter_mut() {
+        reduce_row(r, row, &modulus);
+    }
+    let mut h = Vec::with_capacity(n);
+    for j in 0..n {
+        if modulus.degree() == Some(0) {
+            // Everything left is the identity.
+            let mut e = vec![r.zero(); n];
+            e[j] = r.one();
+            h.push(e);
+            continue;
+        }
+        // A pivot invertible modulo the modulus: scale its row to a 1 there
+        // (a polynomial multiple stays in the lattice, and the row is
+        // recovered from it modulo the modulus) and clear the column below
+        // by plain subtraction: no Bezout cofactors, whose heights compound.
+        let unit = (j..n).find_map(|i| {
+            (!w[i][j].is_zero())
+                .then(|| r.inverse_mod(&w[i][j], &modulus))
+                .flatten()
+                .map(|s| (i, s))
+        });
+        if let Some((p, inv)) = unit {
+            w.swap(j, p);
+            let mut row: Vec<QPoly> = w[j].iter().map(|e| r.mul(e, &inv)).collect();
+            reduce_row(r, &mut row, &modulus);
+            for e in row.iter_mut().take(j) {
+                *e = r.zero();
+            }
+            row[j] = r.one();
+            for wi in w.iter_mut().skip(j + 1) {
+                let q = wi[j].clone();
+                if q.is_zero() {
+                    continue;
+                }
+                for t in j..n {
+                    wi[t] = r.sub(&wi[t], &r.mul(&q, &row[t]));
+                }
+                reduce_row(r, wi, &modulus);
+                make_primitive(wi);
+            }
+            h.push(row);
+            continue;
+        }
+        for i in j + 1..n {
+            if w[i][j].is_zero() {
+                continue;
+            }
+            if w[j][j].is_zero() {
+                w.swap(i, j);
+                continue;
+            }
+            let (u, v, g) = xgcd(r, &w[j][j], &w[i][j])?;
+            let a = r.div_exact(&w[j][j], &g)?;
+            let b = r.div_exact(&w[i][j], &g)?;
+            let mut new_j = Vec::with_capacity(n);
+            let mut new_i = Vec::with_capacity(n);
+            for (x, y) in w[j].iter().zip(&w[i]) {
+                new_j.push(r.add(&r.mul(&u, x), &r.mul(&v, y)));
+                new_i.push(r.sub(&r.mul(&a, y), &r.mul(&b, x)));
+            }
+            reduce_row(r, &mut new_j, &modulus);
+            reduce_row(r, &mut new_i, &modulus);
+            // A constant factor is a unit of Q[x]: rows stay in the lattice,
+            // and their heights stay small.
+            make_primitive(&mut new_j);
+            make_primitive(&mut new_i);
+            w[j] = new_j;
+            w[i] = new_i;
+        }
+        let (d, s) = r.ext_gcd_mod(&w[j][j], &modulus);
+        let mut hj: Vec<QPoly> = w[j].iter().map(|e| r.mul(&s, e)).collect();
+        reduce_row(r, &mut hj, &modulus);
+        for e in hj.iter_mut().take(j) {
+            *e = r.zero();
+        }
+        hj[j] = d.clone();
+        h.push(hj);
+        modulus = r.div_exact(&modulus, &d)?;
+        for row in w.iter_mut().skip(j + 1) {
+            reduce_row(r, row, &modulus);
+        }
+    }
+    Some(h)
+}
+
+/// The decomposition described in the module documentation, or `None`.
+/// `c = det Ã` and `B = adj(Ã)·Δ` with `A·B = c·I`.
+pub fn trailing_hermite(
+    a: &Matrix<QxRing>,
+    c: &QPoly,
+    b: &Matrix<QxRing>,
+) -> Option<SmithDecomposition<QxRing>> {
+    let r = a.ring.clone();
+    let n = a.rows();
+    if n < 3 || a.cols() != n || c.is_zero() || c.degree() == Some(0) {
+        return None;
+    }
+    let f = r.normalize(c);
+    // A multiple of gcd(B's entries): the last row and the first column.
+    let mut g = r.zero();
+    for e in b.row(n - 1).iter().chain((0..n).map(|i| b.get(i, 0))) {
+        g = gcd_q(&r, &g, e);
+        if g.degree() == Some(0) {
+            return None;
+        }
+    }
+    // f = c_loc·c_gen, c_gen coprime to g.
+    let mut c_loc = r.one();
+    let mut c_gen = f.clone();
+    let mut u = gcd_q(&r, &c_gen, &g);
+    while u.degree().is_some_and(|d| d > 0) {
+        c_loc = r.mul(&c_loc, &u);
+        c_gen = r.div_exact(&c_gen, &u)?;
+        u = gcd_q(&r, &c_gen, &u);
+    }
+    if c_loc.degree()? > MAX_LOCAL_DEGREE {
+        return None;
+    }
+    let c_gen = r.normalize(&c_gen);
+    let c_loc = r.normalize(&c_loc);
+    // Modulo c_loc: the Hermite basis of L + c_loc·Q[x]ⁿ.
+    let rows: Vec<Vec<QPoly>> = (0..n).map(|i| a.row(i).to_vec()).collect();
+    let mut h_loc = hnf_mod(&r, &rows, &c_loc)?;
+    let first = (0..n).find(|&i| h_loc[i][i].degree() != Some(0))?;
+    let k = n - first;
+    if !(2..=MAX_TRAILING).contains(&k) {
+        return None;
+    }
+    // Hermite reduction modulo c_loc: entries above a unit pivot cleared,
+    // entries above a trailing pivot reduced modulo it (pivot columns in
+    // increasing order, so later columns are reduced after they change).
+    for j in 0..n {
+        let (top, rest) = h_loc.split_at_mut(j);
+        let pivot = &rest[0];
+        for row in top.iter_mut() {
+            if row[j].is_zero() || row[j].degree() < pivot[j].degree() {
+                continue;
+            }
+            let q = if j < first {
+                row[j].clone()
+            } else {
+                r.div_rem(&row[j], &pivot[j]).0
+            };
+            for t in j..n {
+                row[t] = r.sub(&row[t], &r.mul(&q, &pivot[t]));
+            }
+            reduce_row(&r, row, &c_loc);
+        }
+    }
+    // H = [[I, h], [0, T]]: row i (< n) is d_i·e_i plus h_loc's entries in
+    // the trailing columns before the last; the last entry x is glued by
+    // CRT: x ≡ h_loc[i][n] (c_loc), and modulo c_gen, where B's rows are
+    // proportional (B_t ≡ β_t·w with β_t = B_tj/B_nj), x makes the row's
+    // product with B vanish: x ≡ −(d_i·B_ij + Σ_t h_t·B_tj)·B_nj⁻¹.
+    let gen_part = c_gen.degree()? > 0;
+    let pivot_col = if gen_part {
+        let last = b.row(n - 1);
+        let mut order: Vec<usize> = (0..n).filter(|&j| !last[j].is_zero()).collect();
+        order.sort_by_key(|&j| last[j].degree());
+        Some(
+            order
+                .into_iter()
+                .find_map(|j| r.inverse_mod(&last[j], &c_gen).map(|s| (j, s)))?,
+        )
+    } else {
+        None
+    };
+    // CRT idempotents: e_loc ≡ 1 (c_loc), ≡ 0 (c_gen); e_gen = 1 − e_loc.
+    let (e_loc, e_gen) = if gen_part {
+        let s = r.inverse_mod(&c_gen, &c_loc)?;
+        let e = r.mul(&c_gen, &s);
+        (e.clone(), r.sub(&r.one(), &e))
+    } else {
+        (r.one(), r.zero())
+    };
+    let t_last = r.mul(&h_loc[n - 1][n - 1], &c_gen);
+    let mut h = Matrix::zeros(r.clone(), n, n);
+    for (i, hl) in h_loc.iter().enumerate().take(n - 1) {
+        let d = if i < first { r.one() } else { hl[i].clone() };
+        let mid = first.max(i + 1)..n - 1;
+        let far = match &pivot_col {
+            Some((j, inv)) => {
+                let mut acc = r.mul(&d, b.get(i, *j));
+                for t in mid.clone() {
+                    if !hl[t].is_zero() {
+                        acc = r.add(&acc, &r.mul(&hl[t], b.get(t, *j)));
+                    }
+                }
+                r.neg(&r.rem(&r.mul(&acc, inv), &c_gen))
+            }
+            None => r.zero(),
+        };
+        let x = r.add(&r.mul(&hl[n - 1], &e_loc), &r.mul(&far, &e_gen));
+        h.set(i, n - 1, r.rem(&x, &t_last));
+        for t in mid {
+            h.set(i, t, hl[t].clone());
+        }
+        h.set(i, i, d);
+    }
+    h.set(n - 1, n - 1, t_last);
+    // W = H·B/c, exactly.
+    let mut w = Matrix::zeros(r.clone(), n, n);
+    for i in 0..n {
+        let support: Vec<usize> = std::iter::once(i).chain(first.max(i + 1)..n).collect();
+        for col in 0..n {
+            let mut acc = r.zero();
+            for &t in &support {
+                let ht = h.get(i, t);
+                if !ht.is_zero() {
+                    acc = r.add(&acc, &r.mul(ht, b.get(t, col)));
+                }
+            }
+            w.set(i, col, r.div_exact(&acc, c)?);
+        }
+    }
+    // Smith form of the trailing block T.
+    let idx: Vec<usize> = (first..n).collect();
+    let t = h.submatrix(&idx, &idx);
+    let st = SmithDecomposition::new(&t);
+    if st.d.diagonal().iter().any(|e| e.is_zero()) {
+        return None;
+    }
+    // U = diag(I, U_T)·W.
+    let mut u_mat = w.clone();
+    for (s, &i) in idx.iter().enumerate() {
+        for col in 0..n {
+            let e = r.dot(&mut (0..k).map(|q| (st.u.get(s, q), w.get(first + q, col))));
+            u_mat.set(i, col, e);
+        }
+    }
+    // V = [[I, −h·V_T], [0, V_T]], V⁻¹ = [[I, h], [0, V_T⁻¹]].
+    let mut v = Matrix::identity(r.clone(), n);
+    let mut v_inv = Matrix::identity(r.clone(), n);
+    for i in 0..n {
+        for s in 0..k {
+            if i < first {
+                let e = r.dot(&mut (0..k).map(|q| (h.get(i, first + q), st.v.get(q, s))));
+                v.set(i, first + s, r.neg(&e));
+                v_inv.set(i, first + s, h.get(i, first + s).clone());
+            } else {
+                let q = i - first;
+                v.set(i, first + s, st.v.get(q, s).clone());
+                v_inv.set(i, first + s, st.v_inv.get(q, s).clone());
+            }
+        }
+    }
+    let mut d = Matrix::identity(r.clone(), n);
+    for s in 0..k {
+        d.set(first + s, first + s, st.d.get(s, s).clone());
+    }
+    // U⁻¹ = A·V·D⁻¹: A's first columns, then (A·v_j)/d_j.
+    let mut u_inv = a.clone();
+    for s in 0..k {
+        let j = first + s;
+        let dj = d.get(j, j).clone();
+        for i in 0..n {
+            let e = r.dot(&mut (0..n).map(|q| (a.get(i, q), v.get(q, j))));
+            u_inv.set(i, j, r.div_exact(&e, &dj)?);
+        }
+    }
+    let mut dec = SmithDecomposition {
+        d,
+        u: u_mat,
+        v,
+        u_inv,
+        v_inv,
+    };
+    integral_rows(&mut dec);
+    Some(dec)
+}
+
+/// Scales each row i of U by the constant λ_i that makes it a primitive
+/// integer row, and column i of V (and of U⁻¹) by 1/λ_i, row i of V⁻¹ by
+/// λ_i: `(ΛU)·A·(VΛ⁻¹) = Λ·D·Λ⁻¹ = D`. U's coefficients then print
+/// without a rational normalisation each (the costly part of the report).
+pub fn integral_rows(dec: &mut SmithDecomposition<QxRing>) {
+    for i in 0..dec.u.rows() {
+        let Some(lambda) = primitive_scale(dec.u.row(i)) else {
+            continue;
+        };
+        let inv = QPoly::constant(&lambda.recip());
+        let lam = QPoly::constant(&lambda);
+        dec.u.scale_row(i, &lam);
+        dec.v.scale_col(i, &inv);
+        dec.u_inv.scale_col(i, &inv);
+        dec.v_inv.scale_row(i, &lam);
+    }
+}
+
+/// The positive constant λ making `λ·row` a primitive integer row, or
+/// `None` when the row is zero or already primitive and integral.
+fn primitive_scale(row: &[QPoly]) -> Option<Q> {
+    let l = row
+        .iter()
+        .filter(|e| !e.is_zero())
+        .fold(BigInt::one(), |l, e| intgcd::lcm(&l, e.den()));
+    let mut g = BigInt::zero();
+    for e in row.iter().filter(|e| !e.is_zero()) {
+        let f = &l / e.den();
+        for c in e.num() {
+            if g.is_one() {
+                break;
+            }
+            g = intgcd::gcd(&g, &(c * &f));
+        }
+    }
+    if g.is_zero() || (l.is_one() && g.is_one()) {
+        return None;
+    }
+    Some(Q::new(l, g))
+}
+
+fn make_primitive(row: &mut [QPoly]) {
+    if let Some(lambda) = primitive_scale(row) {
+        for e in row.iter_mut() {
+            *e = e.scale(&lambda);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use num_bigint::BigInt;
+
+    fn p(c: &[i64]) -> QPoly {
+        QPoly::from_ints(c.iter().map(|&x| BigInt::from(x)).collect())
+    }
+
+    /// B·diag(1, …, 1, chain)·C with B, C small seeded integer matrices of
+    /// degree 1.
+    fn planted(n: usize, chain: &[QPoly], seed: u64) -> Matrix<QxRing> {
+        let r = QxRing::new("x");
+        let mut s = seed;
+        let mut next = || {
+            s = s
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            ((s >> 33) % 19) as i64 - 9
+        };
+        let mut rand = |deg: usize| {
+            let data: Vec<QPoly> = (0..n * n)
+                .map(|_| p(&(0..=deg).map(|_| next()).collect::<Vec<_>>()))
+                .collect();
+            Matrix::new(r.clone(), n, n, data)
+        };
+        let bm = rand(1);
+        let cm = rand(1);
+        let mut dm = Matrix::identity(r.clone(), n);
+        for (s, f) in chain.iter().enumerate() {
+            let i = n - chain.len() + s;
+            dm.set(i, i, f.clone());
+        }
+        bm.mul(&dm).and_then(|x| x.mul(&cm)).expect("shapes")
+    }
+
+    fn run(a: &Matrix<QxRing>) -> Option<SmithDecomposition<QxRing>> {
+        match super::super::nonsingular::try_fast(a, u64::MAX)? {
+            super::super::nonsingular::FastPath::NoHermite { c, b } => trailing_hermite(a, &c, &b),
+            _ => None,
+        }
+    }
+
+    #[test]
+    fn hnf_mod_of_a_small_lattice() {
+        // Rows (x, 1), (0, x²): det x³; the Hermite basis of the lattice is
+        // [[1, x²·(−1)…]] — checked by its determinant and membership.
+        let r = QxRing::new("x");
+        let rows = vec![vec![p(&[0, 1]), p(&[1])], vec![p(&[0]), p(&[0, 0, 1])]];
+        let m = p(&[0, 0, 0, 1]);
+        let h = hnf_mod(&r, &rows, &m).expect("hnf");
+        let det = r.mul(&h[0][0], &h[1][1]);
+        assert_eq!(det, m);
+        assert!(h[1][0].is_zero());
+    }
+
+    #[test]
+    fn two_and_three_factor_chains_get_certified_transforms() {
+        let r = QxRing::new("x");
+        let chains = [
+            vec![p(&[-1, 1]), p(&[-2, 1, 1])],
+            vec![p(&[-1, 1]), p(&[-2, 1, 1]), p(&[0, -2, 1, 1])],
+        ];
+        for (seed, chain) in chains.iter().enumerate() {
+            let a = planted(7, chain, 11 + seed as u64);
+            let dec = run(&a).expect("the trailing route applies");
+            assert!(dec.certify(&a).verified());
+            let inv = dec.invariant_factors();
+            for (s, f) in chain.iter().take(chain.len() - 1).enumerate() {
+                assert_eq!(inv[7 - chain.len() + s], r.normalize(f), "{inv:?}");
+            }
+            assert!(inv[..7 - chain.len()].iter().all(|e| r.is_one(e)));
+        }
+    }
+}
