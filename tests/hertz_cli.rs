@@ -143,6 +143,38 @@ fn table_reproduces_spence_and_shows_the_seed_algorithm_failing() {
 }
 
 #[test]
+fn sweep_rows_above_the_tolerance_say_so_and_exit_4() {
+    // At tol 1e-14 the ladder's top level is reached first: the row is
+    // written with its values and its estimate, and marked.
+    let dir = tempfile::tempdir().expect("temp dir");
+    let csv = dir.path().join("s.csv");
+    let out = lambdamat()
+        .args([
+            "hertz",
+            "sweep",
+            "--nu",
+            "0.25:0.25:1",
+            "--mu",
+            "0.1801:0.1801:1",
+            "--tol",
+            "1e-14",
+            "-o",
+        ])
+        .arg(&csv)
+        .output()
+        .expect("runs");
+    assert_eq!(out.status.code(), Some(4));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("1 of the solved points did not reach the tolerance"),
+        "{err}"
+    );
+    let text = std::fs::read_to_string(&csv).expect("csv");
+    let row = text.lines().nth(1).expect("one row");
+    assert!(row.contains(",not converged: the error estimate "), "{row}");
+}
+
+#[test]
 fn sweep_writes_a_grid_and_checks_physics() {
     lambdamat()
         .args([

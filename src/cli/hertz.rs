@@ -702,7 +702,13 @@ fn sweep(
                     error_estimate: Some(s.error_estimate),
                     stick_ok: Some(s.stick_ok),
                     slip_ok: Some(s.slip_ok),
-                    error: None,
+                    // An answer above the tolerance is shown, and said so.
+                    error: (!s.converged).then(|| {
+                        format!(
+                            "not converged: the error estimate {:.1e} is above the tolerance {tol:.0e}",
+                            s.error_estimate
+                        )
+                    }),
                     limit: None,
                 },
                 Err(Refusal { error: e, limit }) => SweepRow {
@@ -780,18 +786,25 @@ fn sweep(
 fn sweep_summary(rows: &[SweepRow]) -> String {
     let solved: Vec<&SweepRow> = rows.iter().filter(|r| r.c.is_some()).collect();
     let failed = rows.len() - solved.len();
+    // Solved but above the tolerance (their `error` column says so).
+    let unconverged = solved.iter().filter(|r| r.error.is_some()).count();
     let limit = |k: &str| {
         rows.iter()
             .filter(|r| r.limit.is_some_and(|l| l.kind() == k))
             .count()
     };
     let (small, thin) = (limit("small_friction"), limit("thin_slip"));
-    let head = format!(
+    let mut head = format!(
         "sweep: {} solves, {failed} failed ({small} in the small-friction limit, c < 1e-10; \
          {thin} near full stick, 1 − c < 1e-10; {} other)",
         rows.len(),
         failed - small - thin
     );
+    if unconverged > 0 {
+        head.push_str(&format!(
+            "; {unconverged} of the solved points did not reach the tolerance (their error column says so)"
+        ));
+    }
     if solved.is_empty() {
         return format!("{head}; no point solved, so no physical check");
     }
