@@ -156,6 +156,24 @@ fn constant_sixty_by_sixty_goes_through_the_unimodular_path() {
     assert_eq!(v["U"][0][1], "0");
 }
 
+/// `smith FILE --json` of an n×n input with `nontrivial` planted
+/// non-trivial factors: verified, with U and V and their certificate
+/// lines, invariant factors 1, …, 1 then the rest; returns the JSON and
+/// the factors.
+fn certified_with_transforms(file: &str, n: usize, nontrivial: usize) -> (Value, Vec<String>) {
+    let v = json(&["smith", file]);
+    assert_eq!(v["verified"], true);
+    assert!(v["U"].is_array() && v["V"].is_array());
+    let inv = strings(&v["invariant_factors"]);
+    assert_eq!(inv.len(), n);
+    assert!(inv[..n - nontrivial].iter().all(|f| f == "1"), "{inv:?}");
+    let names = check_names(&v);
+    for want in ["U·A·V = D", "U unimodular", "V unimodular"] {
+        assert!(names.iter().any(|n| n == want), "{want} missing: {names:?}");
+    }
+    (v, inv)
+}
+
 fn check_names(v: &Value) -> Vec<String> {
     v["certificate"]
         .as_array()
@@ -223,19 +241,10 @@ fn two_nontrivial_factors_get_certified_transforms() {
     // certified as usual. The expected last factor was produced by the
     // general elimination with transforms (certified U·A·V = D), before
     // either shortcut existed.
-    let v = json(&["smith", "tests/data/issue15_bdc_12.lmx"]);
-    assert_eq!(v["verified"], true);
-    assert!(v["U"].is_array() && v["V"].is_array());
-    let inv = strings(&v["invariant_factors"]);
-    assert_eq!(inv.len(), 12);
-    assert!(inv[..10].iter().all(|f| f == "1"), "{inv:?}");
+    let (v, inv) = certified_with_transforms("tests/data/issue15_bdc_12.lmx", 12, 2);
     assert_eq!(inv[10], "x - 1");
     let want = std::fs::read_to_string("tests/data/issue15_bdc_12_f12.txt").expect("data");
     assert_eq!(inv[11], want.trim());
-    let names = check_names(&v);
-    for want in ["U·A·V = D", "U unimodular", "V unimodular"] {
-        assert!(names.iter().any(|n| n == want), "{want} missing: {names:?}");
-    }
     assert!(
         v["algorithm"]
             .as_str()
@@ -311,17 +320,8 @@ fn three_nontrivial_factors_get_certified_transforms() {
     // the HNF modulo the repeated part (x − 1)³(x + 2)² has a 3×3 trailing
     // block. The first two non-trivial factors are the planted ones; the
     // last is det A over the two (monic), of degree deg det − 3.
-    let v = json(&["smith", "tests/data/issue15_bdc3_10.lmx"]);
-    assert_eq!(v["verified"], true);
-    assert!(v["U"].is_array() && v["V"].is_array());
-    let inv = strings(&v["invariant_factors"]);
-    assert_eq!(inv.len(), 10);
-    assert!(inv[..7].iter().all(|f| f == "1"), "{inv:?}");
+    let (_, inv) = certified_with_transforms("tests/data/issue15_bdc3_10.lmx", 10, 3);
     assert_eq!(inv[7], "x - 1");
     assert_eq!(inv[8], "x^2 + x - 2");
     assert!(inv[9].starts_with("x^23 "), "{}", inv[9]);
-    let names = check_names(&v);
-    for want in ["U·A·V = D", "U unimodular", "V unimodular"] {
-        assert!(names.iter().any(|n| n == want), "{want} missing: {names:?}");
-    }
 }

@@ -300,6 +300,38 @@ fn two_factor_report(
     ))
 }
 
+/// The invariant factors 1, …, 1, f certified from `A·B = c·I`
+/// (`certify_last_factor`), reported without transforms; `None` when the
+/// certificate does not hold (the caller takes another route).
+#[allow(clippy::too_many_arguments)]
+fn last_factor_report(
+    name: &str,
+    a_poly: &Matrix<PolyRing>,
+    a: &Matrix<QxRing>,
+    (c, b): (&QPoly, &Matrix<QxRing>),
+    ring: &str,
+    algorithm: &str,
+    note: String,
+    opts: &SmithOptions,
+) -> Option<SmithReport> {
+    opts.progress
+        .phase("certifying the invariant factors (A·B = c·I)");
+    let (cert, f) = super::certify::certify_last_factor(a, c, b);
+    cert.verified().then(|| {
+        form_only_report(
+            name,
+            a_poly,
+            a,
+            last_only(a, f),
+            cert,
+            ring.to_string(),
+            algorithm,
+            note,
+            opts,
+        )
+    })
+}
+
 /// A one-symbol report with D alone (`factors` its diagonal), certified by
 /// [`super::certify::certify_last_factor`] or
 /// [`super::certify::certify_two_factors`].
@@ -421,26 +453,22 @@ fn one_symbol(
     let diag = (au.rows() >= DIAGONAL_FORM_ONLY)
         .then(|| super::nonsingular::diagonal_adjugate(&au))
         .flatten();
-    if let Some((c, b)) = diag {
-        opts.progress
-            .phase("certifying the invariant factors (A·B = c·I)");
-        let (cert, f) = super::certify::certify_last_factor(&au, &c, &b);
-        if cert.verified() {
-            return Ok(form_only_report(
-                name,
-                a,
-                &au,
-                last_only(&au, f),
-                cert,
-                ring,
-                "diagonal input: c = product of the diagonal, B = diag(product of the others); invariant factors from A·B = c·I, the gcd of B's entries and deg c (no elimination)",
-                format!(
-                    "{note}; transforms omitted for a {n}×{n} diagonal input (they would be dense with Bezout coefficients of huge height): the invariant factors alone are certified",
-                    n = au.rows()
-                ),
-                opts,
-            ));
-        }
+    if let Some((c, b)) = diag
+        && let Some(report) = last_factor_report(
+            name,
+            a,
+            &au,
+            (&c, &b),
+            &ring,
+            "diagonal input: c = product of the diagonal, B = diag(product of the others); invariant factors from A·B = c·I, the gcd of B's entries and deg c (no elimination)",
+            format!(
+                "{note}; transforms omitted for a {n}×{n} diagonal input (they would be dense with Bezout coefficients of huge height): the invariant factors alone are certified",
+                n = au.rows()
+            ),
+            opts,
+        )
+    {
+        return Ok(report);
     }
     let (dec, alg) = match super::nonsingular::try_fast(&au, TRANSFORM_LIMIT_BITS) {
         Some(FastPath::Decomposition(mut d)) => {
@@ -448,25 +476,21 @@ fn one_symbol(
             (d, NONSINGULAR_ALGORITHM)
         }
         Some(FastPath::FormOnly { c, b, bits }) => {
-            opts.progress
-                .phase("certifying the invariant factors (A·B = c·I)");
-            let (cert, f) = super::certify::certify_last_factor(&au, &c, &b);
-            if cert.verified() {
-                return Ok(form_only_report(
-                    name,
-                    a,
-                    &au,
-                    last_only(&au, f),
-                    cert,
-                    ring,
-                    "det and adj by images mod word primes (CRT above a proved bound); invariant factors from A·B = c·I, the gcd of B's entries and deg c",
-                    format!(
-                        "{note}; transforms omitted: U would hold about {:.1e} digits of coefficients (limit {:.1e}); the invariant factors alone are certified",
-                        bits as f64 * std::f64::consts::LOG10_2,
-                        TRANSFORM_LIMIT_BITS as f64 * std::f64::consts::LOG10_2
-                    ),
-                    opts,
-                ));
+            if let Some(report) = last_factor_report(
+                name,
+                a,
+                &au,
+                (&c, &b),
+                &ring,
+                "det and adj by images mod word primes (CRT above a proved bound); invariant factors from A·B = c·I, the gcd of B's entries and deg c",
+                format!(
+                    "{note}; transforms omitted: U would hold about {:.1e} digits of coefficients (limit {:.1e}); the invariant factors alone are certified",
+                    bits as f64 * std::f64::consts::LOG10_2,
+                    TRANSFORM_LIMIT_BITS as f64 * std::f64::consts::LOG10_2
+                ),
+                opts,
+            ) {
+                return Ok(report);
             }
             let why = format!(
                 "{note}; transforms omitted: U would hold about {:.1e} digits of coefficients, and the (n−1)-th determinantal divisor is not 1; the invariant factors alone are certified",
