@@ -48,7 +48,13 @@ impl Panel {
     /// barycentric formula in the reference coordinate `s ∈ [-1, 1]`, which
     /// is backward stable and safe from under/overflow on tiny panels).
     pub fn lagrange(&self, t: f64, out: &mut [f64]) {
-        let s = (2.0 * t - self.a - self.b) / (self.b - self.a);
+        self.lagrange_ref((2.0 * t - self.a - self.b) / (self.b - self.a), out);
+    }
+
+    /// As [`Panel::lagrange`] at the reference coordinate `s` (`-1` and
+    /// `1` are the panel's ends). A quadrature node's `s` is known more
+    /// accurately than its `t` on a panel that is short beside `|t|`.
+    pub fn lagrange_ref(&self, s: f64, out: &mut [f64]) {
         let mut ell = 1.0;
         for (j, &x) in self.ref_nodes.iter().enumerate() {
             let d = s - x;

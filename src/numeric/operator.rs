@@ -76,12 +76,19 @@ pub enum Singularity {
 impl Singularity {
     /// `S(x, t)` for `t ≠ x` (1 for smooth and peaked kernels).
     pub fn value(&self, x: f64, t: f64) -> f64 {
+        self.value_from(t - x, t + x)
+    }
+
+    /// `S(x, t)` from the differences `t - x` and `t + x` (for callers that
+    /// know them more accurately than `t`: see
+    /// [`super::product::composite_rule_offsets`]).
+    pub fn value_from(&self, t_minus_x: f64, t_plus_x: f64) -> f64 {
         match *self {
-            Singularity::AbelSqrt => 1.0 / ((t - x).abs() * (t + x).abs()).sqrt(),
+            Singularity::AbelSqrt => 1.0 / (t_minus_x.abs() * t_plus_x.abs()).sqrt(),
             Singularity::Smooth | Singularity::Peaked { .. } => 1.0,
-            Singularity::Power { beta } => super::basis::pow_fast((t - x).abs(), -beta),
-            Singularity::Log => (t - x).abs().ln(),
-            Singularity::Cauchy => 1.0 / (t - x),
+            Singularity::Power { beta } => super::basis::pow_fast(t_minus_x.abs(), -beta),
+            Singularity::Log => t_minus_x.abs().ln(),
+            Singularity::Cauchy => 1.0 / t_minus_x,
         }
     }
 }
