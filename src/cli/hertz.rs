@@ -705,8 +705,25 @@ struct SweepRow {
     stick_ok: Option<bool>,
     slip_ok: Option<bool>,
     error: Option<String>,
-    /// The physical limit of a refusal, with its asymptotic values.
+    /// The physical limit of a refusal or of an end answer, with its
+    /// asymptotic values.
     limit: Option<Limit>,
+    /// At an end answer: `c < δ` or `c > 1 − δ` (bounded, not resolved).
+    end_answer: Option<String>,
+}
+
+/// `c < 1.03e-10, bounded` (or `c > 1 − …`) for an end answer.
+fn bounded(s: &HertzResult) -> Option<String> {
+    s.end_answer.as_ref().map(|e| match e.end {
+        RangeEnd::Lower => format!(
+            "{} < {:.3e}, bounded, not resolved (the root lies within {:.1e} of {})",
+            e.scalar, e.at, e.distance, e.end_value
+        ),
+        RangeEnd::Upper => format!(
+            "{} > {} − {:.3e}, bounded, not resolved (the root lies within {:.1e} of {})",
+            e.scalar, e.end_value, e.distance, e.distance, e.end_value
+        ),
+    })
 }
 
 fn sweep(
@@ -772,7 +789,8 @@ fn sweep(
                             s.error_estimate
                         )
                     }),
-                    limit: None,
+                    limit: s.limit,
+                    end_answer: bounded(&s),
                 },
                 Err(Refusal { error: e, limit }) => SweepRow {
                     nu,
@@ -786,6 +804,7 @@ fn sweep(
                     slip_ok: None,
                     error: Some(e.to_string()),
                     limit,
+                    end_answer: None,
                 },
             }
         })
@@ -802,7 +821,7 @@ fn sweep(
         }
     } else {
         text.push_str(
-            "nu,mu,c,alpha,compliance,compliance_via_shear,error_estimate,stick_ok,slip_ok,error,limit,c_asymptotic_low,c_asymptotic_high,compliance_asymptotic\n",
+            "nu,mu,c,alpha,compliance,compliance_via_shear,error_estimate,stick_ok,slip_ok,error,limit,c_asymptotic_low,c_asymptotic_high,compliance_asymptotic,end_answer\n",
         );
         let f = |v: Option<f64>| v.map_or(String::new(), |x| format!("{x:.15e}"));
         let b = |v: Option<bool>| v.map_or(String::new(), |x| x.to_string());
@@ -817,7 +836,7 @@ fn sweep(
             };
             let _ = writeln!(
                 text,
-                "{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
+                "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
                 r.nu,
                 r.mu,
                 f(r.c),
@@ -832,6 +851,7 @@ fn sweep(
                 f(c_lo),
                 f(c_hi),
                 f(p_asym),
+                r.end_answer.as_deref().map(csv_field).unwrap_or_default(),
             );
         }
     }
@@ -851,17 +871,27 @@ fn sweep_summary(rows: &[SweepRow]) -> String {
     let failed = rows.len() - solved.len();
     // Solved but above the tolerance (their `error` column says so).
     let unconverged = solved.iter().filter(|r| r.error.is_some()).count();
-    let limit = |k: &str| {
+    let refused = |k: &str| {
         rows.iter()
-            .filter(|r| r.limit.is_some_and(|l| l.kind() == k))
+            .filter(|r| r.c.is_none() && r.limit.is_some_and(|l| l.kind() == k))
             .count()
     };
-    let (small, thin) = (limit("small_friction"), limit("thin_slip"));
+    let (small, thin) = (refused("small_friction"), refused("thin_slip"));
+    let at_end = |k: &str| {
+        solved
+            .iter()
+            .filter(|r| r.end_answer.is_some() && r.limit.is_some_and(|l| l.kind() == k))
+            .count()
+    };
+    let ends = solved.iter().filter(|r| r.end_answer.is_some()).count();
     let mut head = format!(
         "sweep: {} solves, {failed} failed ({small} in the small-friction limit, c < 1e-10; \
-         {thin} near full stick, 1 − c < 1e-10; {} other)",
+         {thin} near full stick, 1 − c < 1e-12; {} other); {ends} answered at an end of c's range, c bounded, not resolved \
+         ({} with c < 1e-10 in the small-friction limit, {} with 1 − c < 1e-12 near full stick)",
         rows.len(),
-        failed - small - thin
+        failed - small - thin,
+        at_end("small_friction"),
+        at_end("thin_slip"),
     );
     if unconverged > 0 {
         head.push_str(&format!(

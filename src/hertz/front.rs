@@ -197,8 +197,8 @@ fn no_convergence(s: String) -> PlanError {
 }
 
 /// The distance `1 − c` below which the split solver does not place a
-/// root (it scans to `1e-10` relative of the upper end).
-pub const RESOLVED: f64 = 1e-10;
+/// root (it scans to `e^(−27.7) ≈ 9.3e-13` relative of the upper end).
+pub const RESOLVED: f64 = 1e-12;
 
 /// The stick radius below which the split solver does not place a root:
 /// it scans to `1e-10` of the lower end (below `c ≈ 1e-9` its discrete
@@ -298,7 +298,7 @@ impl Limit {
     ///   spurious free boundary are small friction when the asymptotic
     ///   `c ≈ C·exp(−a/μ)` is at most `1e-8` (the noisy zone starts near
     ///   `1e-9`, the scan stops at `1e-10`).
-    /// - Given c, the friction μ: no sign change over `μ ∈ (1e-10, 1e10)`
+    /// - Given c, the friction μ: no sign change over `μ ∈ (1e-10, 1e12)`
     ///   toward `∞`, or with the condition levelling off at a non-zero
     ///   value toward `μ → 0` (measured: ν = 0.3, c = 1 − 1e-8 and ν = −0.9,
     ///   c = 0.99 level off at both ends), means no μ has that c: c is
@@ -426,7 +426,7 @@ impl Limit {
                     Given::Mu(_) => f64::NAN,
                 };
                 format!(
-                    "no μ the solver reaches (up to about 1e10) gives c = {c} at ν = {nu}: as μ → ∞ the \
+                    "no μ the solver reaches (up to about 1e12) gives c = {c} at ν = {nu}: as μ → ∞ the \
                      stick radius tends to c∞(ν) < 1 (a slip annulus remains; 1 − c∞ heuristically \
                      {lo:.0e}–{hi:.0e}, not derived), so c is beyond c∞(ν) or within the solver's \
                      resolution of it (docs/hertz_asymptotics.md)"

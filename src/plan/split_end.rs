@@ -10,8 +10,9 @@
 //! honest and computes it:
 //!
 //! - **The root is there.** The first level's scan found no sign change
-//!   of the condition over the whole resolved range and reached the
-//!   resolved distance, and the condition's size falls toward that end
+//!   of the condition between the end and the other half of the range
+//!   (the gap is up to the point it reached: the resolved distance, or
+//!   less where the discretisation failed beyond), and the condition's size falls toward that end
 //!   over the scan's four outermost points (the two outermost below the
 //!   next two, which fall; the order of the two outermost is not asked
 //!   for, since near `c → 0` the Hertz condition's rounding noise, about
@@ -128,12 +129,9 @@ pub fn variation_bound(o: [f64; 3]) -> Option<(f64, Option<f64>)> {
 /// of a finite range.
 fn root_beyond_end(r: &RootAtEnd, range: (f64, f64)) -> Result<(), String> {
     match &r.reason {
-        EndReason::NoSignChange {
-            failed_beyond: None,
-        } => {}
-        EndReason::NoSignChange {
-            failed_beyond: Some(_),
-        } => return Err("the scan stopped short of the resolved distance".into()),
+        // Where the discretisation failed beyond the last point reached,
+        // the gap is wider (the distance of that point), not unknown.
+        EndReason::NoSignChange { .. } => {}
         // Rejected roots at the other end (the spurious roots of a contact
         // condition that accumulate at `c → 1`) say nothing about this one.
         EndReason::NoneAdmissible { rejected } => {
@@ -286,7 +284,7 @@ pub fn answer_at_end(
         return refuse(
             &r,
             format!(
-                "the resolved distance {delta:.1e} is not within twice the tolerance {:.0e}",
+                "the root is only known within the resolved distance {delta:.1e} of the end, and half of it is above the tolerance {:.0e}",
                 opts.tol
             ),
         );

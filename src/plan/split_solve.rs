@@ -447,10 +447,18 @@ impl ScalarMap {
 }
 
 /// How far the root is sought toward the upper end in the variable `s`:
-/// `s ≤ 23`, a root at least `1e-10` (relative) from the upper end of a
-/// finite range (for the Hertz problem `1 − c ≥ 1e-10`; closer to 1 the
-/// mesh floor of `Mesh::graded_to_scale`, `1e3·ε`, is near and that end
-/// was not measured further).
+/// `s ≤ 27.7`, a root at least `e^(−27.7) ≈ 9.3e-13` (relative) from the
+/// upper end of a finite range (on `(lo, ∞)`: up to `e^27.7 ≈ 1e12`). For
+/// the Hertz problem `1 − c ≥ 9.3e-13`, about four times the mesh floor of
+/// `Mesh::graded_to_scale` there (`1e3·ε`). Measured at ν = 0.4, where the
+/// slip annulus is that thin for μ ≳ 4.6: the roots `1 − c = 2.9e-11,
+/// 4.9e-12, 2.4e-12, 1.6e-12` at μ = 4.64, 10, 21.5, 100 converge over
+/// the levels (estimates 2–7e-11), continuing the trend toward `c∞` of
+/// the resolved μ ≤ 2.15; closer, the outputs vary with `1 − c` like
+/// `(1 − c)^0.4` (`P*` by 2e-8 between `1e-10` and `5e-12`), so no answer
+/// at that end (`split_end.rs`) reaches a tolerance of 1e-10. The fields
+/// beside such a `c` are not resolved (the shear jump there is up to 13 %
+/// of `μp(c)`).
 pub(super) const S_LIMIT: f64 = 27.7;
 
 /// How far the root is sought toward the lower end: `s ≥ -23`, a root at
