@@ -116,7 +116,7 @@ pub fn variation_bound(o: [f64; 3]) -> Option<(f64, Option<f64>)> {
         return None;
     }
     let ratio = (d2.abs() - eta) / (d1.abs() + eta);
-    if !(ratio >= SQRT_2) {
+    if ratio.is_nan() || ratio < SQRT_2 {
         return None;
     }
     let bound = 2.0 * (d1.abs() + eta) / (ratio - 1.0);
@@ -142,8 +142,8 @@ fn root_beyond_end(r: &RootAtEnd, range: (f64, f64)) -> Result<(), String> {
                 f64::NAN
             };
             let this_half = |x: f64| match r.end {
-                RangeEnd::Lower => !(x > mid),
-                RangeEnd::Upper => !(x < mid),
+                RangeEnd::Lower => mid.is_nan() || x <= mid,
+                RangeEnd::Upper => mid.is_nan() || x >= mid,
             };
             if rejected.iter().any(|&(x, _)| this_half(x)) {
                 return Err(
@@ -296,7 +296,10 @@ pub fn answer_at_end(
     let (o, c, _) = values_at(&problem, x1, &lvl0)?;
     let var0 = variations(&problem, (&o, &c), pts, &lvl0)?;
     let worst0 = var0[..n_out].iter().fold(0.0f64, |m, v| m.max(v.bound));
-    if let Some(v) = var0[..n_out].iter().find(|v| !(v.bound + half <= opts.tol)) {
+    if let Some(v) = var0[..n_out]
+        .iter()
+        .find(|v| (v.bound + half).is_nan() || v.bound + half > opts.tol)
+    {
         return refuse(
             &r,
             format!(
