@@ -147,8 +147,11 @@ fn hertz_exit_codes_and_wrote_on_stderr() {
     // -1 < ν ≤ 1/2 is physical (ν < 0: auxetic); ν ≤ -1 is bad input.
     assert_eq!(code(&["hertz", "--nu", "-1.5", "--mu", "0.1"]), 2);
     assert_eq!(code(&["hertz", "--nu", "-0.5", "--mu", "0"]), 0);
-    // A point in the small-friction limit (c ≈ 4e-25 < 1e-10): refused, 3.
-    assert_eq!(code(&["hertz", "--nu", "0", "--mu", "0.01"]), 3);
+    // A point in the small-friction limit (c ≈ 4e-25 < 1e-10): answered at
+    // the end (c bounded), 0; at ν = −0.9 (c ≈ 1e-46) the condition's trend
+    // does not show the root: refused, 3.
+    assert_eq!(code(&["hertz", "--nu", "0", "--mu", "0.01"]), 0);
+    assert_eq!(code(&["hertz", "--nu", "-0.9", "--mu", "0.01"]), 3);
     assert_eq!(
         code(&["hertz", "--nu", "0.25", "--mu", "0.2", "--tol", "-1"]),
         2
@@ -188,9 +191,10 @@ fn hertz_table_and_sweep_exit_codes() {
         .code(0)
         .stdout(predicate::str::starts_with("ν,c,seed μ,"));
     assert_eq!(code(&["hertz", "table", "--tol", "nan"]), 2);
-    // ν = 0.45, μ = 1 fails in the numerics: the sweep says so and exits 3.
+    // ν = 0.49, μ = 1 fails in the numerics (1 − c below 1e-12): the sweep
+    // says so and exits 3.
     lambdamat()
-        .args(["hertz", "sweep", "--nu", "0.45:0.45:1", "--mu", "0.1:1:2"])
+        .args(["hertz", "sweep", "--nu", "0.49:0.49:1", "--mu", "0.1:1:2"])
         .assert()
         .code(3)
         .stderr(predicate::str::contains("1 of 2 solves failed"));

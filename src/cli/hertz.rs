@@ -13,6 +13,7 @@ use crate::hertz::front::{
     DEFAULT_MAX_LEVEL, Given, HertzResult, Limit, Refusal, solve, solve_with_limit,
 };
 use crate::hertz::seed::seed_literal;
+use crate::plan::error::RangeEnd;
 use crate::plan::{PlanError, SplitOptions};
 use clap::{Args, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
@@ -190,6 +191,28 @@ pub fn hertz_command(a: &HertzArgs, w: &mut dyn Write) -> Result<(), CliError> {
     Ok(())
 }
 
+/// The asymptotic values of the limit an end answer lies in, as one line
+/// of information (not refined to the tolerance).
+fn limit_info(l: &Limit) -> String {
+    match *l {
+        Limit::SmallFriction {
+            exponent,
+            c_asymptotic: (lo, hi),
+            compliance_asymptotic,
+            ..
+        } => format!(
+            "small-friction limit (information, not refined): c = C₀·exp(−a/μ)·(1 + O(μ)), a = {exponent:.4} (derived) gives c ≈ {lo:.2e}–{hi:.2e} (the range is the measured O(μ) term); P* = 1 + γμ(1−2/π) + O(μ²) = {compliance_asymptotic:.8} + O(μ²) (derived)"
+        ),
+        Limit::ThinSlip {
+            one_minus_c_infinity_heuristic: (lo, hi),
+            compliance_full_stick,
+        } => format!(
+            "near-full stick (information): as μ → ∞ a slip annulus 1 − c∞ ≈ {lo:.0e}–{hi:.0e} remains (heuristic), and P* < artanh(γ)/γ = {compliance_full_stick:.10} (full stick)"
+        ),
+        Limit::BeyondLargeFriction { .. } => String::new(),
+    }
+}
+
 fn ok(b: bool) -> &'static str {
     if b { "ok" } else { "VIOLATED" }
 }
@@ -208,10 +231,35 @@ fn text(s: &HertzResult, given_c: bool) -> String {
             .get(name)
             .map_or(String::new(), |e| format!(" ± {e:.1e}"))
     };
-    if given_c {
-        let _ = writeln!(o, "  given c = {}  →  μ = {:.13}{}", s.c, s.mu, pm("mu"));
-    } else {
-        let _ = writeln!(o, "  given μ = {}  →  c = {:.13}{}", s.mu, s.c, pm("c"));
+    match (&s.end_answer, given_c) {
+        (Some(e), _) => {
+            let (name, given, value) = if given_c {
+                ("μ", format!("c = {}", s.c), s.mu)
+            } else {
+                ("c", format!("μ = {}", s.mu), s.c)
+            };
+            let rel = match e.end {
+                RangeEnd::Lower => "<",
+                RangeEnd::Upper => ">",
+            };
+            let _ = writeln!(
+                o,
+                "  given {given}  →  {name} {rel} {:.4e}, bounded, not resolved: the root of the free-boundary condition lies within {:.1e} of the end {} (reported as {value:.4e}{})",
+                e.at,
+                e.distance,
+                e.end_value,
+                pm(e.scalar.as_str())
+            );
+            if let Some(l) = &s.limit {
+                let _ = writeln!(o, "  {}", limit_info(l));
+            }
+        }
+        (None, true) => {
+            let _ = writeln!(o, "  given c = {}  →  μ = {:.13}{}", s.c, s.mu, pm("mu"));
+        }
+        (None, false) => {
+            let _ = writeln!(o, "  given μ = {}  →  c = {:.13}{}", s.mu, s.c, pm("c"));
+        }
     }
     let _ = writeln!(o, "  edge exponent α = arccot(γμ)/π = {:.15}", s.alpha);
     let _ = writeln!(
@@ -255,14 +303,29 @@ fn text(s: &HertzResult, given_c: bool) -> String {
             .get(name)
             .map_or(String::new(), |e| format!(" ± {e:.1e}"))
     };
-    let _ = writeln!(
-        o,
-        "          shear jump q(c⁻) - μp(c) = {:.1e}{}, E2 residual at c (÷c) = {:.1e}{}",
-        s.shear_jump_at_c,
-        fe("shear_jump_at_c"),
-        s.residual_c,
-        fe("residual_c")
-    );
+    if let Some(e) = &s.end_answer {
+        let _ = writeln!(
+            o,
+            "          at c: not checked (c is bounded, not resolved); the outputs are those at {} = {:.4e}, each with its variation over the gap to the end in its estimate ({})",
+            e.scalar,
+            e.at,
+            e.variations
+                .iter()
+                .filter(|v| v.name == "P" || v.name == "P_shear")
+                .map(|v| format!("{} ± {:.1e}", v.name, v.bound))
+                .collect::<Vec<_>>()
+                .join(", ")
+        );
+    } else {
+        let _ = writeln!(
+            o,
+            "          shear jump q(c⁻) - μp(c) = {:.1e}{}, E2 residual at c (÷c) = {:.1e}{}",
+            s.shear_jump_at_c,
+            fe("shear_jump_at_c"),
+            s.residual_c,
+            fe("residual_c")
+        );
+    }
     let _ = writeln!(o, "  solved through the language: {}", s.command);
     o
 }
@@ -642,8 +705,25 @@ struct SweepRow {
     stick_ok: Option<bool>,
     slip_ok: Option<bool>,
     error: Option<String>,
-    /// The physical limit of a refusal, with its asymptotic values.
+    /// The physical limit of a refusal or of an end answer, with its
+    /// asymptotic values.
     limit: Option<Limit>,
+    /// At an end answer: `c < δ` or `c > 1 − δ` (bounded, not resolved).
+    end_answer: Option<String>,
+}
+
+/// `c < 1.03e-10, bounded` (or `c > 1 − …`) for an end answer.
+fn bounded(s: &HertzResult) -> Option<String> {
+    s.end_answer.as_ref().map(|e| match e.end {
+        RangeEnd::Lower => format!(
+            "{} < {:.3e}, bounded, not resolved (the root lies within {:.1e} of {})",
+            e.scalar, e.at, e.distance, e.end_value
+        ),
+        RangeEnd::Upper => format!(
+            "{} > {} − {:.3e}, bounded, not resolved (the root lies within {:.1e} of {})",
+            e.scalar, e.end_value, e.distance, e.distance, e.end_value
+        ),
+    })
 }
 
 fn sweep(
@@ -709,7 +789,8 @@ fn sweep(
                             s.error_estimate
                         )
                     }),
-                    limit: None,
+                    limit: s.limit,
+                    end_answer: bounded(&s),
                 },
                 Err(Refusal { error: e, limit }) => SweepRow {
                     nu,
@@ -723,6 +804,7 @@ fn sweep(
                     slip_ok: None,
                     error: Some(e.to_string()),
                     limit,
+                    end_answer: None,
                 },
             }
         })
@@ -739,7 +821,7 @@ fn sweep(
         }
     } else {
         text.push_str(
-            "nu,mu,c,alpha,compliance,compliance_via_shear,error_estimate,stick_ok,slip_ok,error,limit,c_asymptotic_low,c_asymptotic_high,compliance_asymptotic\n",
+            "nu,mu,c,alpha,compliance,compliance_via_shear,error_estimate,stick_ok,slip_ok,error,limit,c_asymptotic_low,c_asymptotic_high,compliance_asymptotic,end_answer\n",
         );
         let f = |v: Option<f64>| v.map_or(String::new(), |x| format!("{x:.15e}"));
         let b = |v: Option<bool>| v.map_or(String::new(), |x| x.to_string());
@@ -754,7 +836,7 @@ fn sweep(
             };
             let _ = writeln!(
                 text,
-                "{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
+                "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
                 r.nu,
                 r.mu,
                 f(r.c),
@@ -769,6 +851,7 @@ fn sweep(
                 f(c_lo),
                 f(c_hi),
                 f(p_asym),
+                r.end_answer.as_deref().map(csv_field).unwrap_or_default(),
             );
         }
     }
@@ -788,17 +871,27 @@ fn sweep_summary(rows: &[SweepRow]) -> String {
     let failed = rows.len() - solved.len();
     // Solved but above the tolerance (their `error` column says so).
     let unconverged = solved.iter().filter(|r| r.error.is_some()).count();
-    let limit = |k: &str| {
+    let refused = |k: &str| {
         rows.iter()
-            .filter(|r| r.limit.is_some_and(|l| l.kind() == k))
+            .filter(|r| r.c.is_none() && r.limit.is_some_and(|l| l.kind() == k))
             .count()
     };
-    let (small, thin) = (limit("small_friction"), limit("thin_slip"));
+    let (small, thin) = (refused("small_friction"), refused("thin_slip"));
+    let at_end = |k: &str| {
+        solved
+            .iter()
+            .filter(|r| r.end_answer.is_some() && r.limit.is_some_and(|l| l.kind() == k))
+            .count()
+    };
+    let ends = solved.iter().filter(|r| r.end_answer.is_some()).count();
     let mut head = format!(
         "sweep: {} solves, {failed} failed ({small} in the small-friction limit, c < 1e-10; \
-         {thin} near full stick, 1 − c < 1e-10; {} other)",
+         {thin} near full stick, 1 − c < 1e-12; {} other); {ends} answered at an end of c's range, c bounded, not resolved \
+         ({} with c < 1e-10 in the small-friction limit, {} with 1 − c < 1e-12 near full stick)",
         rows.len(),
-        failed - small - thin
+        failed - small - thin,
+        at_end("small_friction"),
+        at_end("thin_slip"),
     );
     if unconverged > 0 {
         head.push_str(&format!(

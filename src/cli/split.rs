@@ -105,6 +105,7 @@ pub fn to_json(r: &SplitReport) -> Value {
         "dim": r.dim,
         "cond": r.cond,
         "singular_exponents": r.singular_exponents,
+        "end_answer": r.end_answer,
     })
 }
 
@@ -124,6 +125,13 @@ pub fn write_text(r: &SplitReport, w: &mut dyn Write) -> Result<(), CliError> {
         r.error_estimate,
         if r.converged { "" } else { " (not converged)" }
     )?;
+    if let Some(e) = &r.end_answer {
+        writeln!(
+            w,
+            "scalar {} is bounded, not resolved: the root of its condition lies within {:.1e} of the end {} (it is given as the middle of that gap); the outputs are those at {} = {:.6e}, each with its variation over the gap in its estimate",
+            e.scalar, e.distance, e.end_value, e.scalar, e.at
+        )?;
+    }
     for (kind, list) in [
         ("scalar", &r.scalars),
         ("output", &r.outputs),

@@ -28,6 +28,7 @@ pub mod methods;
 pub mod operators;
 pub mod refine;
 pub mod split;
+pub mod split_end;
 pub mod split_fields;
 pub mod split_input;
 pub mod split_solve;

@@ -81,18 +81,23 @@ pub struct SplitReport {
     pub cond: f64,
     /// The exponents measured for the singular terms, `(unknown, point, β)`.
     pub singular_exponents: Vec<(String, f64, f64)>,
+    /// Set when the scalar was not resolved but bounded: its root lies
+    /// within the resolved distance of an end of its range, and every
+    /// value above is the answer there with that bound included
+    /// (`split_end.rs`).
+    pub end_answer: Option<super::split_end::EndAnswer>,
 }
 
-struct Level {
-    scalars: Vec<f64>,
-    slope: f64,
-    outputs: Vec<f64>,
-    coefficients: Vec<f64>,
+pub(super) struct Level {
+    pub(super) scalars: Vec<f64>,
+    pub(super) slope: f64,
+    pub(super) outputs: Vec<f64>,
+    pub(super) coefficients: Vec<f64>,
 }
 
 /// Tolerance of the root iterations: a twentieth of the requested
 /// accuracy, added to the estimate.
-fn root_tolerance(tol: f64) -> f64 {
+pub(super) fn root_tolerance(tol: f64) -> f64 {
     (0.005 * tol).clamp(1e-15, 1e-9)
 }
 
@@ -127,7 +132,7 @@ pub fn solve_split_fields(prog: &Program, opts: &SplitOptions) -> Result<SplitSo
     solve_split_input_fields(SplitInput::from_program(prog)?, opts)
 }
 
-fn check_tolerance(opts: &SplitOptions) -> Result<(), PlanError> {
+pub(super) fn check_tolerance(opts: &SplitOptions) -> Result<(), PlanError> {
     if !(opts.tol > 0.0 && opts.tol.is_finite()) {
         return Err(PlanError::Invalid(format!(
             "tolerance {} must be positive",
@@ -164,8 +169,15 @@ pub fn solve_split_input_fields(
         let (d, scalars, slope) = if ns == 0 {
             (problem.discretise(&[], &lvl)?, vec![], 0.0)
         } else {
-            let (x, slope, d) = find_scalar(&problem, &lvl, &levels, opts.tol)?;
-            (d, vec![x], slope)
+            match find_scalar(&problem, &lvl, &levels, opts.tol) {
+                Ok((x, slope, d)) => (d, vec![x], slope),
+                // On the first level a root beyond the resolved distance
+                // from an end may still give an answer to the tolerance.
+                Err(PlanError::RootAtEnd(r)) if levels.is_empty() => {
+                    return super::split_end::answer_at_end(problem, r, opts);
+                }
+                Err(e) => return Err(e),
+            }
         };
         let outputs = (0..problem.sys.outputs.len())
             .map(|o| problem.output(&d, o))
@@ -233,7 +245,7 @@ pub fn solve_split_input_fields(
 /// It is never below 32 ulps of the value (the rounding of the sums that
 /// form an output over hundreds of panels: `examples/punch_torsion.lmx`'s
 /// load P = 1 came out 1.0e-15 off while two levels agreed to 6.7e-16).
-fn level_estimate(history: &[f64]) -> f64 {
+pub(super) fn level_estimate(history: &[f64]) -> f64 {
     let n = history.len();
     if n < 2 {
         return f64::INFINITY;
@@ -261,7 +273,12 @@ fn level_estimate(history: &[f64]) -> f64 {
 }
 
 /// One quantity's values on every level climbed, then on `this`.
-fn history(levels: &[Level], this: &Level, of: &dyn Fn(&Level) -> &[f64], i: usize) -> Vec<f64> {
+pub(super) fn history(
+    levels: &[Level],
+    this: &Level,
+    of: &dyn Fn(&Level) -> &[f64],
+    i: usize,
+) -> Vec<f64> {
     levels
         .iter()
         .chain(std::iter::once(this))
@@ -281,7 +298,7 @@ fn estimate(levels: &[Level], this: &Level) -> f64 {
 }
 
 #[allow(clippy::too_many_arguments)]
-fn report(
+pub(super) fn report(
     problem: &SplitProblem,
     d: &Discrete,
     climbed: &[Level],
@@ -339,6 +356,7 @@ fn report(
             .iter()
             .map(|t| (problem.sys.unknowns[t.unknown].clone(), t.at, t.beta))
             .collect(),
+        end_answer: None,
     }
 }
 
@@ -429,11 +447,19 @@ impl ScalarMap {
 }
 
 /// How far the root is sought toward the upper end in the variable `s`:
-/// `s ≤ 23`, a root at least `1e-10` (relative) from the upper end of a
-/// finite range (for the Hertz problem `1 − c ≥ 1e-10`; closer to 1 the
-/// mesh floor of `Mesh::graded_to_scale`, `1e3·ε`, is near and that end
-/// was not measured further).
-const S_LIMIT: f64 = 23.0;
+/// `s ≤ 27.7`, a root at least `e^(−27.7) ≈ 9.3e-13` (relative) from the
+/// upper end of a finite range (on `(lo, ∞)`: up to `e^27.7 ≈ 1e12`). For
+/// the Hertz problem `1 − c ≥ 9.3e-13`, about four times the mesh floor of
+/// `Mesh::graded_to_scale` there (`1e3·ε`). Measured at ν = 0.4, where the
+/// slip annulus is that thin for μ ≳ 4.6: the roots `1 − c = 2.9e-11,
+/// 4.9e-12, 2.4e-12, 1.6e-12` at μ = 4.64, 10, 21.5, 100 converge over
+/// the levels (estimates 2–7e-11), continuing the trend toward `c∞` of
+/// the resolved μ ≤ 2.15; closer, the outputs vary with `1 − c` like
+/// `(1 − c)^0.4` (`P*` by 2e-8 between `1e-10` and `5e-12`), so no answer
+/// at that end (`split_end.rs`) reaches a tolerance of 1e-10. The fields
+/// beside such a `c` are not resolved (the shear jump there is up to 13 %
+/// of `μp(c)`).
+pub(super) const S_LIMIT: f64 = 27.7;
 
 /// How far the root is sought toward the lower end: `s ≥ -23`, a root at
 /// least `1e-10` (relative) from the lower end. Measured on the Hertz
@@ -447,7 +473,7 @@ const S_LIMIT: f64 = 23.0;
 /// put them, but the same noise, magnified about 100-fold in the stick
 /// shear at the nodes nearest `c` (about `1e-14/c` to `5e-14/c`), breaks
 /// the Coulomb bound there: they would be refused anyway.
-const S_LIMIT_LO: f64 = 23.0;
+pub(super) const S_LIMIT_LO: f64 = 23.0;
 
 /// The largest tolerance of the root in `s`: the distance of a root to the
 /// nearer end of a finite range is resolved to this relative accuracy even

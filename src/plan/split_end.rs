@@ -1,0 +1,420 @@
+//! Answers at an end of a free-boundary scalar's range ("end answers").
+//! When the root of the scalar's condition lies closer to an end of the
+//! declared range than the solver resolves (a stick radius `c` below
+//! `1e-10`), the problem may still have an answer to the tolerance in
+//! absolute terms: the scalar lies between the end and the resolved point
+//! `x₁ = end ± δ`, so it is `end ± δ/2` within `δ/2`, and every output is
+//! a function of the scalar (the problem solved with the scalar fixed and
+//! the condition dropped), so `O(root) = O(x₁)` within the variation of
+//! `O` over that gap. This module decides whether such an answer is
+//! honest and computes it:
+//!
+//! - **The root is there.** The first level's scan found no sign change
+//!   of the condition between the end and the other half of the range
+//!   (the gap is up to the point it reached: the resolved distance, or
+//!   less where the discretisation failed beyond), and the condition's size falls toward that end
+//!   over the scan's four outermost points (the two outermost below the
+//!   next two, which fall; the order of the two outermost is not asked
+//!   for, since near `c → 0` the Hertz condition's rounding noise, about
+//!   `4e-16/c`, can swap them) without levelling off (the trend of a root
+//!   beyond the end). A condition that levels
+//!   off, grows toward the end, is noisy enough to break that
+//!   monotonicity, or whose sign changes on this end's half of the range
+//!   were rejected, keeps the refusal (rejected ones on the other half,
+//!   such as the spurious roots of a contact condition that accumulate at
+//!   `c → 1`, say nothing about this end).
+//! - **The outputs are insensitive.** Each output is computed at the
+//!   distances `δ, 2δ, 4δ` from the end. The assumption is that it varies
+//!   there like a power of the distance, `O(end ± x) = O₀ + K·x^p`
+//!   (monotone), with `p ≥ 1/2`. `p` is fitted from the two differences,
+//!   taking the rounding `η` of the values (64 ulps) against the
+//!   assumption: the ratio `2^p` is taken at its lower bound
+//!   `(|D₂| − η)/(|D₁| + η)`, and the variation over the whole gap,
+//!   `(|D₁| + η)/(2^p − 1)`, is doubled. Differences that change sign, or
+//!   a fitted `p` below 1/2, give no bound and keep the refusal. When both
+//!   differences are below rounding the variation is bounded with
+//!   `p = 1/2`.
+//! - **Refinement.** The ladder of levels is climbed at `x₁` as for any
+//!   solve; each output's error is its level estimate plus its variation
+//!   bound, the scalar's is `δ/2`, and the answer is converged only if
+//!   every one is within the tolerance.
+//!
+//! Owns this decision and the end answer's report; the scan, the root
+//! solve and the ladder are `split_solve.rs`'s, the discretisation
+//! `split.rs`'s.
+use std::f64::consts::SQRT_2;
+
+use serde::Serialize;
+
+use super::error::{EndReason, PlanError, RangeEnd, RootAtEnd};
+use super::split::{SplitLevel, SplitProblem};
+use super::split_solve::{
+    Estimate, Level, S_LIMIT, S_LIMIT_LO, SplitOptions, SplitSolution, history, level_estimate,
+    report,
+};
+
+/// An answer at an end of a scalar's range: the scalar is bounded, not
+/// resolved.
+#[derive(Debug, Clone, Serialize)]
+pub struct EndAnswer {
+    /// The scalar's name.
+    pub scalar: String,
+    /// Which end its root lies at.
+    pub end: RangeEnd,
+    /// The end's value.
+    pub end_value: f64,
+    /// The root lies strictly between the end and `end ± distance` (the
+    /// resolved point nearest the end, where the scan stopped).
+    pub distance: f64,
+    /// The scalar's value at which the outputs were computed (`end ±
+    /// distance`).
+    pub at: f64,
+    /// The condition's values at the scan's four points nearest the end,
+    /// `(scalar, condition)`, ascending in the scalar: the trend that
+    /// places the root beyond the end.
+    pub trend: Vec<(f64, f64)>,
+    /// Each output's and singular coefficient's variation over the gap.
+    pub variations: Vec<EndVariation>,
+}
+
+/// How much one output can move between the resolved point and the end.
+#[derive(Debug, Clone, Serialize)]
+pub struct EndVariation {
+    /// The output's (or coefficient's) name.
+    pub name: String,
+    /// Its values at the distances `δ, 2δ, 4δ` from the end.
+    pub values: [f64; 3],
+    /// The fitted exponent `p` of `K·x^p` (`None` when both differences
+    /// are below rounding, where `p = 1/2` is assumed).
+    pub exponent: Option<f64>,
+    /// The bound of `|O(root) − O(x₁)|` (infinite when there is none:
+    /// the values change direction, or vary more steeply than `x^(1/2)`).
+    pub bound: f64,
+}
+
+/// Rounding of an output's value, in ulps of its size: the noise floor of
+/// the differences in [`variation_bound`] (measured on the Hertz problem
+/// at `c = 1e-10, 2e-10, 4e-10`: `P*` differs by 1–2 ulps).
+const ROUNDING_ULPS: f64 = 64.0;
+
+/// The bound of `|O(x) − O(x₁)|` for `x` between the end and `x₁` from
+/// `O` at the distances `δ, 2δ, 4δ`, and the fitted exponent (see the
+/// module's paragraph); `None` when the values do not follow the
+/// assumption.
+pub fn variation_bound(o: [f64; 3]) -> Option<(f64, Option<f64>)> {
+    let scale = o.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    if !scale.is_finite() {
+        return None;
+    }
+    let eta = ROUNDING_ULPS * f64::EPSILON * scale;
+    let (d1, d2) = (o[1] - o[0], o[2] - o[1]);
+    if d1.abs() <= 2.0 * eta && d2.abs() <= 2.0 * eta {
+        let bound = 2.0 * (d1.abs().max(d2.abs()) + eta) / (SQRT_2 - 1.0);
+        return Some((bound, None));
+    }
+    if d1 * d2 <= 0.0 {
+        return None;
+    }
+    let ratio = (d2.abs() - eta) / (d1.abs() + eta);
+    if ratio.is_nan() || ratio < SQRT_2 {
+        return None;
+    }
+    let bound = 2.0 * (d1.abs() + eta) / (ratio - 1.0);
+    Some((bound, Some((d2 / d1).log2())))
+}
+
+/// Whether the scan's refusal `r` shows a root beyond the end (see the
+/// module's paragraph), the scalar's declared range being `range`; `Err`
+/// says why not. Rejected sign changes are allowed only on the other half
+/// of a finite range.
+fn root_beyond_end(r: &RootAtEnd, range: (f64, f64)) -> Result<(), String> {
+    match &r.reason {
+        // Where the discretisation failed beyond the last point reached,
+        // the gap is wider (the distance of that point), not unknown.
+        EndReason::NoSignChange { .. } => {}
+        // Rejected roots at the other end (the spurious roots of a contact
+        // condition that accumulate at `c → 1`) say nothing about this one.
+        EndReason::NoneAdmissible { rejected } => {
+            let (lo, hi) = range;
+            let mid = if lo.is_finite() && hi.is_finite() {
+                0.5 * (lo + hi)
+            } else {
+                f64::NAN
+            };
+            let this_half = |x: f64| match r.end {
+                RangeEnd::Lower => mid.is_nan() || x <= mid,
+                RangeEnd::Upper => mid.is_nan() || x >= mid,
+            };
+            if rejected.iter().any(|&(x, _)| this_half(x)) {
+                return Err(
+                    "sign changes of the condition were found on this end's half of the range but rejected, so the root's place is not known"
+                        .into(),
+                );
+            }
+        }
+        EndReason::Noisy { .. } => return Err("the condition is noisy near the end".into()),
+    }
+    if !r.end_value.is_finite() {
+        return Err(format!("the end {} is not finite", r.end_value));
+    }
+    if r.levels_off(r.end, 1e-6) {
+        return Err("the condition levels off toward the end (no root beyond it)".into());
+    }
+    // |condition| toward the end, outermost first.
+    let v: Vec<f64> = match r.end {
+        RangeEnd::Lower => r.trend.iter().map(|t| t.1.abs()).collect(),
+        RangeEnd::Upper => r.trend.iter().rev().map(|t| t.1.abs()).collect(),
+    };
+    let falls = v.len() >= 4 && v[0].max(v[1]) < v[2] && v[2] < v[3];
+    if !falls {
+        return Err(
+            "the condition's size does not fall toward the end over the scan's four outermost points"
+                .into(),
+        );
+    }
+    Ok(())
+}
+
+/// `r` seen from the other end of the finite range `range`: the scan's
+/// outermost point there, if it reached the resolved distance.
+fn other_end(r: &RootAtEnd, range: (f64, f64)) -> Option<RootAtEnd> {
+    let (lo, hi) = range;
+    if !(lo.is_finite() && hi.is_finite()) {
+        return None;
+    }
+    let (end, end_value, reached, resolved) = match r.end {
+        RangeEnd::Upper => (RangeEnd::Lower, lo, r.trend.first()?.0, (-S_LIMIT_LO).exp()),
+        RangeEnd::Lower => (RangeEnd::Upper, hi, r.trend.last()?.0, (-S_LIMIT).exp()),
+    };
+    if (reached - end_value).abs() > 1.5 * resolved * (hi - lo) {
+        return None;
+    }
+    let mut o = r.clone();
+    o.end = end;
+    o.end_value = end_value;
+    o.reached = reached;
+    o.resolved = resolved;
+    Some(o)
+}
+
+/// The outputs and singular coefficients of `problem` at the scalar `x`
+/// on level `lvl`, and the discretisation.
+fn values_at(
+    problem: &SplitProblem,
+    x: f64,
+    lvl: &SplitLevel,
+) -> Result<(Vec<f64>, Vec<f64>, super::split::Discrete), PlanError> {
+    let d = problem.discretise(&[x], lvl)?;
+    let outputs = (0..problem.sys.outputs.len())
+        .map(|o| problem.output(&d, o))
+        .collect::<Result<Vec<f64>, PlanError>>()?;
+    let coefficients = (0..problem.contact.coefficients.len())
+        .map(|c| problem.coefficient(&d, c).unwrap_or(f64::NAN))
+        .collect();
+    Ok((outputs, coefficients, d))
+}
+
+/// The variation of every output and coefficient on level `lvl`, given
+/// their values at `x₁` (`first`) and the points `x₂, x₃`.
+fn variations(
+    problem: &SplitProblem,
+    first: (&[f64], &[f64]),
+    pts: [f64; 2],
+    lvl: &SplitLevel,
+) -> Result<Vec<EndVariation>, PlanError> {
+    let (o2, c2, _) = values_at(problem, pts[0], lvl)?;
+    let (o3, c3, _) = values_at(problem, pts[1], lvl)?;
+    let names = problem
+        .sys
+        .outputs
+        .iter()
+        .map(|o| o.name.clone())
+        .chain(problem.contact.coefficients.iter().cloned());
+    let v1 = first.0.iter().chain(first.1);
+    let v2 = o2.iter().chain(&c2);
+    let v3 = o3.iter().chain(&c3);
+    Ok(names
+        .zip(v1.zip(v2).zip(v3))
+        .map(|(name, ((&a, &b), &c))| {
+            let values = [a, b, c];
+            let (bound, exponent) = variation_bound(values).unwrap_or((f64::INFINITY, None));
+            EndVariation {
+                name,
+                values,
+                exponent,
+                bound,
+            }
+        })
+        .collect())
+}
+
+/// The end answer for the refusal `r` of the first level's root search,
+/// or `r` itself (its message saying why there is no end answer).
+pub fn answer_at_end(
+    problem: SplitProblem,
+    r: Box<RootAtEnd>,
+    opts: &SplitOptions,
+) -> Result<SplitSolution, PlanError> {
+    fn refuse(r: &RootAtEnd, why: String) -> Result<SplitSolution, PlanError> {
+        let mut r = Box::new(r.clone());
+        r.message
+            .push_str(&format!("; no answer at the end either: {why}"));
+        Err(PlanError::RootAtEnd(r))
+    }
+    let range = problem.contact.scalars[0].range;
+    // The end the scan named first; if it does not qualify, the other one
+    // (the scan names the end where the condition is smaller, which near
+    // `c → 1` may be the side of the spurious roots).
+    let r = match root_beyond_end(&r, range) {
+        Ok(()) => r,
+        Err(why) => match other_end(&r, range) {
+            Some(o) if root_beyond_end(&o, range).is_ok() => Box::new(o),
+            _ => return refuse(&r, why),
+        },
+    };
+    let x1 = r.reached;
+    let delta = (x1 - r.end_value).abs();
+    let sign = if r.end == RangeEnd::Lower { 1.0 } else { -1.0 };
+    let pts = [
+        r.end_value + sign * 2.0 * delta,
+        r.end_value + sign * 4.0 * delta,
+    ];
+    let half = 0.5 * delta;
+    if !(delta > 0.0 && delta.is_finite()) || half > opts.tol {
+        return refuse(
+            &r,
+            format!(
+                "the root is only known within the resolved distance {delta:.1e} of the end, and half of it is above the tolerance {:.0e}",
+                opts.tol
+            ),
+        );
+    }
+    let n_out = problem.sys.outputs.len();
+    // A first look on the coarsest level: no climb when the outputs vary
+    // too much over the gap.
+    let lvl0 = SplitLevel::level(0);
+    let (o, c, _) = values_at(&problem, x1, &lvl0)?;
+    let var0 = variations(&problem, (&o, &c), pts, &lvl0)?;
+    let worst0 = var0[..n_out].iter().fold(0.0f64, |m, v| m.max(v.bound));
+    if let Some(v) = var0[..n_out]
+        .iter()
+        .find(|v| (v.bound + half).is_nan() || v.bound + half > opts.tol)
+    {
+        return refuse(
+            &r,
+            format!(
+                "the output {} varies over the gap by up to {:.1e} (values {:.12e}, {:.12e}, {:.12e} at {:.1e}, {:.1e}, {:.1e} from the end), more than the tolerance {:.0e} allows",
+                v.name,
+                v.bound,
+                v.values[0],
+                v.values[1],
+                v.values[2],
+                delta,
+                2.0 * delta,
+                4.0 * delta,
+                opts.tol
+            ),
+        );
+    }
+    let mut levels: Vec<Level> = Vec::new();
+    let mut previous = None;
+    for k in 0..=opts.max_level {
+        let lvl = SplitLevel::level(k);
+        let (outputs, coefficients, d) = values_at(&problem, x1, &lvl)?;
+        let this = Level {
+            scalars: vec![x1],
+            slope: 0.0,
+            outputs,
+            coefficients,
+        };
+        let est = (0..n_out)
+            .map(|i| level_estimate(&history(&levels, &this, &|l| &l.outputs, i)))
+            .fold(0.0f64, f64::max);
+        let done = !levels.is_empty() && est + worst0 <= opts.tol;
+        if done || k == opts.max_level {
+            let vars = variations(&problem, (&this.outputs, &this.coefficients), pts, &lvl)?;
+            let mut rep = report(
+                &problem,
+                &d,
+                &levels,
+                &this,
+                0.0,
+                false,
+                opts.tol,
+                k + 1,
+                0.0,
+            );
+            rep.scalars = vec![Estimate {
+                name: r.scalar.clone(),
+                value: r.end_value + sign * half,
+                error: half,
+            }];
+            for (e, v) in rep
+                .outputs
+                .iter_mut()
+                .chain(rep.coefficients.iter_mut())
+                .zip(&vars)
+            {
+                e.error += v.bound;
+            }
+            let est = rep
+                .scalars
+                .iter()
+                .chain(&rep.outputs)
+                .fold(0.0f64, |m, e| m.max(e.error));
+            rep.error_estimate = est;
+            rep.converged = est <= opts.tol;
+            let n = r.trend.len();
+            let trend = match r.end {
+                RangeEnd::Lower => r.trend[..n.min(4)].to_vec(),
+                RangeEnd::Upper => r.trend[n.saturating_sub(4)..].to_vec(),
+            };
+            rep.end_answer = Some(EndAnswer {
+                scalar: r.scalar.clone(),
+                end: r.end,
+                end_value: r.end_value,
+                distance: delta,
+                at: x1,
+                trend,
+                variations: vars,
+            });
+            return Ok(SplitSolution {
+                report: rep,
+                problem,
+                discrete: d,
+                previous,
+                level: k,
+            });
+        }
+        levels.push(this);
+        previous = Some(d);
+    }
+    Err(PlanError::Invalid("empty level ladder".into()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_variation_bound_follows_a_power_law_and_refuses_otherwise() {
+        // O = 1 + x²: D₂/D₁ = 4, variation over (0, δ) = δ² (bound 2·δ²/3 … 2δ²).
+        let d = 1e-3;
+        let o = [1.0 + d * d, 1.0 + 4.0 * d * d, 1.0 + 16.0 * d * d];
+        let (b, p) = variation_bound(o).unwrap();
+        assert!(b >= d * d && b <= 3.0 * d * d, "{b}");
+        assert!((p.unwrap() - 2.0).abs() < 1e-6);
+        // √x: exactly the steepest accepted (ratio √2), but the rounding
+        // floor takes the ratio below √2: refused.
+        let o = [d.sqrt(), (2.0 * d).sqrt(), (4.0 * d).sqrt()];
+        assert!(variation_bound(o).is_none());
+        // x^(1/3) (steeper than the assumption) and a change of direction.
+        let o = [d.cbrt(), (2.0 * d).cbrt(), (4.0 * d).cbrt()];
+        assert!(variation_bound(o).is_none());
+        assert!(variation_bound([1.0, 1.0 + 1e-9, 1.0]).is_none());
+        // Differences at rounding: a bound of a few dozen ulps.
+        let e = f64::EPSILON;
+        let (b, p) = variation_bound([1.0, 1.0 + e, 1.0 - e]).unwrap();
+        assert!(p.is_none() && b > 64.0 * e && b < 1e-12, "{b}");
+    }
+}
