@@ -135,7 +135,8 @@ for t in [mpf("1.5"), mpf(3)]:
     print(f"  t={float(t)}: (1-g^2)P = {mp.nstr((1 - g * g) * Pin(t), 12)}  KP = {mp.nstr(KP(t), 12)}")
 print(f"  c1/c0 = {mp.nstr(cn[1] / cn[0], 12)}  against (1/2 - ie)/2 = {mp.nstr((0.5 - 1j * e) / 2, 12)}")
 
-print("(i) the rate: -cosh^2(pi e) Im S+(z1), partial sums over the poles z = k of S (tends to -1/2)")
+print("(i) the rate: -cosh^2(pi e) Im S+(z1), partial sums over the poles z = k of S (tends to -1/2);")
+print("    zeta = cosh^2(pi e)(S+(z3) - S+(z1)), z3 = 3/2 - ie: the first-order change of c1/c0")
 mp.dps = 20
 for nu in [mpf(0), mpf("-0.5")]:
     g = (1 - 2 * nu) / (2 - 2 * nu)
@@ -144,16 +145,21 @@ for nu in [mpf(0), mpf("-0.5")]:
     Fm = lambda z: -mp.hyp3f2(0.5 - 1j * e, 0.5 + 1j * e, z, 1, z + 1, 1) / (g * ch * z)
     h = lambda z: G(0.5 + z + 1j * e) * G(0.5 + z - 1j * e) * Fm(z) / pi ** 2
     z1 = mpf("0.5") - 1j * e
-    S = mpc(0)
+    z3 = mpf("1.5") - 1j * e
+    S, S3 = mpc(0), mpc(0)
     out = []
     for k in range(1, 41):
         hk, dh = h(k), mp.diff(h, k)
         a = hk / mp.factorial(k - 1) ** 2
         b = (dh - 2 * mp.digamma(k) * hk) / mp.factorial(k - 1) ** 2
         S += a / (z1 - k) ** 2 + b / (z1 - k)
+        S3 += a / (z3 - k) ** 2 + b / (z3 - k)
         if k in (10, 20, 40):
             out.append(f"K={k}: {mp.nstr(-ch ** 2 * mp.im(S), 8)}")
     print(f"  nu={float(nu)}: " + ", ".join(out))
+    zeta = ch ** 2 * (S3 - S)
+    kappa = 1 / (2 * e)
+    print(f"    zeta = {mp.nstr(zeta, 6)} (K=40); P* rate -(kappa + Re zeta)/2 = {mp.nstr(-(kappa + mp.re(zeta)) / 2, 6)}")
 
 print("(j) small mu: the mu^2 coefficient of P*, g^2 J with")
 print("    J = -(2/pi) int_0^1 (-1 + (2/pi) x K(x)) (K(x) - E(x))/x dx  (K, E of modulus x)")
