@@ -254,7 +254,7 @@ pub enum Limit {
     /// `1 − c` is below [`RESOLVED`]: near-full stick (ν close to 1/2 or
     /// large μ). As μ → ∞, `1 − c → 1 − c∞(ν) = δ₀(1 − δ₀/2 + O(δ₀²))`
     /// with `δ₀ = 8·exp(−π/(2ε₀))`, `ε₀ = artanh(γ)/π`, and
-    /// `(1 − c)/(1 − c∞) = 1 + 1/(2ε₀μ) + O(μ⁻²)`; `P* → P*ₛ(1 − δ₀/2)`
+    /// `ln((1 − c)/(1 − c∞)) = (1/(2μ) + O(μ⁻²))/ε₀`; `P* → P*ₛ(1 − δ₀/2)`
     /// below the full-stick `P*ₛ = artanh(γ)/γ` (docs/hertz_asymptotics.md).
     ThinSlip {
         /// `δ₀(1 − δ₀/2)`, see [`large_friction_asymptotics`].
@@ -395,9 +395,9 @@ impl Limit {
                 let eps0 = gamma.atanh() / PI;
                 let rate = match given {
                     Given::Mu(m) => format!(
-                        "; at μ = {m}, (1 − c)/(1 − c∞) = 1 + 1/(2ε₀μ) + O(μ⁻²) = {:.4} + O(μ⁻²) \
-                         (the 1/(2ε₀) computed, not proved)",
-                        1.0 + 1.0 / (2.0 * eps0 * m)
+                        "; at μ = {m}, ln((1 − c)/(1 − c∞)) = (1/(2μ) + O(μ⁻²))/ε₀ ≈ {:.4} to first order \
+                         (the 1/2 computed, not proved; the O(μ⁻²) term is about 0.25/(γμ²), measured)",
+                        1.0 / (2.0 * eps0 * m)
                     ),
                     Given::C(_) => String::new(),
                 };
