@@ -405,9 +405,10 @@ impl Limit {
                     "1 − c is below {RESOLVED:.0e}, which the solver does not resolve: near-full stick \
                      (ν = {nu}, γ = {gamma:.4}, ε₀ = artanh(γ)/π = {eps0:.5}); as μ → ∞ a slip annulus of width \
                      1 − c∞(ν) = δ₀(1 − δ₀/2 + O(δ₀²)) = {one_minus_c_infinity:.3e} remains, δ₀ = 8·exp(−π/(2ε₀)) \
-                     (derived){rate}, and P* → artanh(γ)/γ·(1 − δ₀/2) = {compliance_infinity:.10} \
-                     < {compliance_full_stick:.10} (full stick). These asymptotic values are not refined to \
-                     the tolerance, so no answer is given (docs/hertz_asymptotics.md)"
+                     (derived){rate}, and P* → P*ₛ(1 − δ₀/2) = {compliance_infinity:.10}, below the \
+                     full-stick P*ₛ = artanh(γ)/γ = {compliance_full_stick:.10} by {:.3e}. These asymptotic \
+                     values are not refined to the tolerance, so no answer is given (docs/hertz_asymptotics.md)",
+                    compliance_full_stick - compliance_infinity
                 )
             }
             Limit::BeyondLargeFriction { c_infinity } => {
