@@ -224,6 +224,12 @@ pub fn small_friction_asymptotics(gamma: f64) -> (f64, f64) {
 /// range given is that with a margin.
 pub const SMALL_FRICTION_CORRECTION: (f64, f64) = (-1.5, -0.9);
 
+/// `J` of the `μ²` term `γ²J` of the small-μ compliance,
+/// `J = −(2/π)∫_0^1 (−1 + (2/π)xK(x))(K(x) − E(x))/x dx` with the complete
+/// elliptic integrals of modulus x (derived in docs/hertz_asymptotics.md,
+/// evaluated by mpmath in docs/hertz_asymptotics_checks.py, part j).
+pub const SMALL_FRICTION_COMPLIANCE_J: f64 = -0.024_395_310_845_086_8;
+
 /// A refusal of [`solve_with_limit`]: the error (exit 3 for a numerical
 /// refusal, 2 for bad input) and, when the refusal is one of the physical
 /// limits, which one.
@@ -244,34 +250,39 @@ pub enum Limit {
     /// μ → 0: the stick radius is below [`RESOLVED_STICK`], or below about
     /// `1e-9` where the shear-jump check refuses the noisy stick shear.
     /// `c = C₀·exp(−a/μ)·(1 + O(μ))` with `a = −ln(1−γ²)/γ` and
-    /// `C₀ = 4(1−γ²)^(1−2 ln 2)`, and `P* = 1 + γμ(1−2/π) + O(μ²)` (both
-    /// derived).
+    /// `C₀ = 4(1−γ²)^(1−2 ln 2)`, and
+    /// `P* = 1 + γμ(1−2/π) + γ²Jμ² + O(μ³)` with
+    /// [`SMALL_FRICTION_COMPLIANCE_J`] (all derived).
     SmallFriction {
         /// `a = −ln(1−γ²)/γ`.
         exponent: f64,
         /// `C₀·exp(−a/μ + kγμ)` for `k` at the ends of
         /// [`SMALL_FRICTION_CORRECTION`] (the measured `O(μ)` term).
         c_asymptotic: (f64, f64),
-        /// `1 + γμ(1−2/π)` (remainder O(μ²), not estimated).
+        /// `1 + γμ(1−2/π) + γ²Jμ²` (remainder O(μ³), measured about
+        /// `−0.08γ³μ³`).
         compliance_asymptotic: f64,
         /// The μ at which `C₀·exp(−a/μ)` reaches [`RESOLVED_STICK`].
         mu_resolved: f64,
     },
     /// `1 − c` is below [`RESOLVED`]: near-full stick (ν close to 1/2 or
-    /// large μ). As μ → ∞, `1 − c → 1 − c∞(ν)`, heuristically
-    /// `exp(−k·π/artanh γ)` with `k ∈ [1.20, 1.37]` (measured at ν = 0 and
-    /// 0.3, not derived); `P*` lies below the full-stick `artanh(γ)/γ`.
+    /// large μ). As μ → ∞, `1 − c → 1 − c∞(ν) = δ₀(1 − δ₀/2 + O(δ₀²))`
+    /// with `δ₀ = 8·exp(−π/(2ε₀))`, `ε₀ = artanh(γ)/π`, and
+    /// `ln((1 − c)/(1 − c∞)) = (1/(2μ) + O(μ⁻²))/ε₀`; `P* → P*ₛ(1 − δ₀/2)`
+    /// below the full-stick `P*ₛ = artanh(γ)/γ` (docs/hertz_asymptotics.md).
     ThinSlip {
-        /// `exp(−k·π/artanh γ)` for `k = 1.37` and `k = 1.20`.
-        one_minus_c_infinity_heuristic: (f64, f64),
+        /// `δ₀(1 − δ₀/2)`, see [`large_friction_asymptotics`].
+        one_minus_c_infinity: f64,
+        /// `P*ₛ(1 − δ₀/2)`, the compliance as μ → ∞.
+        compliance_infinity: f64,
         /// The full-stick compliance `artanh(γ)/γ`, an upper bound of P*.
         compliance_full_stick: f64,
     },
     /// A given stick radius beyond `c∞(ν)`, the limit of c as μ → ∞: no
     /// finite μ has it.
     BeyondLargeFriction {
-        /// The heuristic `1 − c∞(ν)` range, as in [`Limit::ThinSlip`].
-        one_minus_c_infinity_heuristic: (f64, f64),
+        /// `c∞(ν) = 1 − δ₀(1 − δ₀/2)`, as in [`Limit::ThinSlip`].
+        c_infinity: f64,
     },
 }
 
@@ -280,10 +291,14 @@ fn gamma_of(nu: f64) -> f64 {
     (1.0 - 2.0 * nu) / (2.0 - 2.0 * nu)
 }
 
-/// The heuristic range of `1 − c∞(ν)` (docs/hertz_asymptotics.md).
-fn thin_slip_heuristic(gamma: f64) -> (f64, f64) {
+/// The large-μ limit derived in docs/hertz_asymptotics.md (steps L1–L5):
+/// `(1 − c∞, ε₀)` with `ε₀ = artanh(γ)/π` and
+/// `1 − c∞ = δ₀(1 − δ₀/2) + O(δ₀³)`, `δ₀ = 8·exp(−π/(2ε₀))` (`δ₀` derived;
+/// the `−δ₀/2` derived up to one assumption and measured).
+pub fn large_friction_asymptotics(gamma: f64) -> (f64, f64) {
     let eps0 = gamma.atanh() / PI;
-    ((-1.37 / eps0).exp(), (-1.20 / eps0).exp())
+    let d0 = 8.0 * (-PI / (2.0 * eps0)).exp();
+    (d0 * (1.0 - d0 / 2.0), eps0)
 }
 
 impl Limit {
@@ -318,9 +333,12 @@ impl Limit {
         match given {
             Given::Mu(mu) if mu > 0.0 && mu.is_finite() => {
                 if no_sign_change && at_end.is_some_and(|r| r.end == RangeEnd::Upper) {
+                    let (one_minus_c_infinity, _) = large_friction_asymptotics(gamma);
+                    let full_stick = gamma.atanh() / gamma;
                     return Some(Limit::ThinSlip {
-                        one_minus_c_infinity_heuristic: thin_slip_heuristic(gamma),
-                        compliance_full_stick: gamma.atanh() / gamma,
+                        one_minus_c_infinity,
+                        compliance_infinity: full_stick * (1.0 - one_minus_c_infinity / 2.0),
+                        compliance_full_stick: full_stick,
                     });
                 }
                 let (a, c0) = small_friction_asymptotics(gamma);
@@ -330,7 +348,9 @@ impl Limit {
                 (c_hi <= 1e-8).then(|| Limit::SmallFriction {
                     exponent: a,
                     c_asymptotic: (c_at(klo), c_hi),
-                    compliance_asymptotic: 1.0 + gamma * mu * (1.0 - FRAC_2_PI),
+                    compliance_asymptotic: 1.0
+                        + gamma * mu * (1.0 - FRAC_2_PI)
+                        + gamma * gamma * SMALL_FRICTION_COMPLIANCE_J * mu * mu,
                     mu_resolved: a / (c0 / RESOLVED_STICK).ln(),
                 })
             }
@@ -338,7 +358,7 @@ impl Limit {
                 let r = at_end.filter(|_| no_sign_change)?;
                 (r.end == RangeEnd::Upper || r.levels_off(RangeEnd::Lower, 1e-6)).then(|| {
                     Limit::BeyondLargeFriction {
-                        one_minus_c_infinity_heuristic: thin_slip_heuristic(gamma),
+                        c_infinity: 1.0 - large_friction_asymptotics(gamma).0,
                     }
                 })
             }
@@ -403,33 +423,45 @@ impl Limit {
                      (ν, μ) = ({nu}, {mu}) is in the small-friction limit, where \
                      c = C₀·exp(−a/μ)·(1 + O(μ)) with a = −ln(1−γ²)/γ = {exponent:.4} and C₀ = 4(1−γ²)^(1−2 ln 2) (derived), \
                      so c ≈ {c_lo:.2e}–{c_hi:.2e} (the range is the measured O(μ) term; c reaches {RESOLVED_STICK:.0e} near μ ≈ {mu_resolved:.3}); \
-                     P* = 1 + γμ(1−2/π) + O(μ²) = {compliance_asymptotic:.8} + O(μ²) (derived; the O(μ²) remainder is not estimated). \
+                     P* = 1 + γμ(1−2/π) + γ²Jμ² + O(μ³) = {compliance_asymptotic:.8} + O(μ³) (derived, J = −0.0243953; the O(μ³) remainder is measured at about −0.08γ³μ³). \
                      These asymptotic values are not refined to the tolerance, so no answer is given \
                      (docs/hertz_asymptotics.md)"
                 )
             }
             Limit::ThinSlip {
-                one_minus_c_infinity_heuristic: (lo, hi),
+                one_minus_c_infinity,
+                compliance_infinity,
                 compliance_full_stick,
-            } => format!(
-                "1 − c is below {RESOLVED:.0e}, which the solver does not resolve: near-full stick \
-                 (ν = {nu}, γ = {gamma:.4}); as μ → ∞ a slip annulus of width 1 − c∞(ν) remains, \
-                 heuristically {lo:.0e}–{hi:.0e} (exp(−k·π/artanh γ), k = 1.20–1.37 measured, not derived), \
-                 and P* < artanh(γ)/γ = {compliance_full_stick:.10} (full stick). No answer is given \
-                 (docs/hertz_asymptotics.md)"
-            ),
-            Limit::BeyondLargeFriction {
-                one_minus_c_infinity_heuristic: (lo, hi),
             } => {
+                let eps0 = gamma.atanh() / PI;
+                let rate = match given {
+                    Given::Mu(m) => format!(
+                        "; at μ = {m}, ln((1 − c)/(1 − c∞)) = (1/(2μ) + O(μ⁻²))/ε₀ ≈ {:.4} to first order \
+                         (the 1/2 computed, not proved; the O(μ⁻²) term is about 0.25/(γμ²), measured)",
+                        1.0 / (2.0 * eps0 * m)
+                    ),
+                    Given::C(_) => String::new(),
+                };
+                format!(
+                    "1 − c is below {RESOLVED:.0e}, which the solver does not resolve: near-full stick \
+                     (ν = {nu}, γ = {gamma:.4}, ε₀ = artanh(γ)/π = {eps0:.5}); as μ → ∞ a slip annulus of width \
+                     1 − c∞(ν) = δ₀(1 − δ₀/2 + O(δ₀²)) = {one_minus_c_infinity:.3e} remains, δ₀ = 8·exp(−π/(2ε₀)) \
+                     (derived){rate}, and P* → P*ₛ(1 − δ₀/2) = {compliance_infinity:.10}, below the \
+                     full-stick P*ₛ = artanh(γ)/γ = {compliance_full_stick:.10} by {:.3e}. These asymptotic \
+                     values are not refined to the tolerance, so no answer is given (docs/hertz_asymptotics.md)",
+                    compliance_full_stick - compliance_infinity
+                )
+            }
+            Limit::BeyondLargeFriction { c_infinity } => {
                 let c = match given {
                     Given::C(c) => c,
                     Given::Mu(_) => f64::NAN,
                 };
                 format!(
                     "no μ the solver reaches (up to about 1e12) gives c = {c} at ν = {nu}: as μ → ∞ the \
-                     stick radius tends to c∞(ν) < 1 (a slip annulus remains; 1 − c∞ heuristically \
-                     {lo:.0e}–{hi:.0e}, not derived), so c is beyond c∞(ν) or within the solver's \
-                     resolution of it (docs/hertz_asymptotics.md)"
+                     stick radius tends to c∞(ν) < 1 (a slip annulus remains; 1 − c∞ = δ₀(1 − δ₀/2 + O(δ₀²)), \
+                     δ₀ = 8·exp(−π/(2ε₀)), ε₀ = artanh(γ)/π (derived), so c∞ = {c_infinity:.12}), so c is \
+                     beyond c∞(ν) or within the solver's resolution of it (docs/hertz_asymptotics.md)"
                 )
             }
         };
