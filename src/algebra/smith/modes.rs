@@ -381,6 +381,85 @@ fn form_only_report(
     }
 }
 
+/// The report of a certified decomposition with transforms `[D, U, V]`.
+#[allow(clippy::too_many_arguments)]
+fn transforms_report<R: crate::algebra::ring::EuclideanDomain>(
+    name: &str,
+    a_poly: &Matrix<PolyRing>,
+    [d, u, v]: [&Matrix<R>; 3],
+    cert: Certificate,
+    algorithm: &str,
+    mode: Mode,
+    ring_name: String,
+    note: String,
+    opts: &SmithOptions,
+) -> SmithReport {
+    let r = &d.ring;
+    let inv: Vec<R::Elem> = d
+        .diagonal()
+        .into_iter()
+        .filter(|e| !r.is_zero(e))
+        .collect();
+    let latex = opts.latex.then(|| LatexForms {
+        a: rows_of(a_poly, true),
+        invariant_factors: inv.iter().map(|e| r.latex(e)).collect(),
+        d: Some(rows_of(d, true)),
+        u: Some(rows_of(u, true)),
+        v: Some(rows_of(v, true)),
+    });
+    SmithReport {
+        matrix: name.to_string(),
+        ring: ring_name,
+        mode,
+        mode_note: note,
+        algorithm: algorithm.to_string(),
+        a: rows_of(a_poly, false),
+        invariant_factors: inv.iter().map(|e| r.lmx(e)).collect(),
+        rank: inv.len(),
+        d: rows_of(d, false),
+        u: Some(rows_of(u, false)),
+        v: Some(rows_of(v, false)),
+        verified: true,
+        certificate: cert.checks,
+        invariant_factor_coefficients: None,
+        denominator_free: None,
+        latex,
+    }
+}
+
+/// The small-input fast path ([`super::small`]): `None` when it does not
+/// apply or its certificate does not hold (the caller goes on).
+fn small_report(
+    name: &str,
+    a_poly: &Matrix<PolyRing>,
+    au: &Matrix<QxRing>,
+    ring: &str,
+    note: &str,
+    opts: &SmithOptions,
+) -> Option<SmithReport> {
+    let (dec, p) = super::small::small_hermite(au)?;
+    opts.progress
+        .phase("certifying U·A·V = D, V·V⁻¹ = I, det U constant from degrees");
+    let cert = super::small::certify_small(au, &dec, p);
+    if !cert.verified() {
+        return None;
+    }
+    opts.progress.phase("formatting the report");
+    Some(transforms_report(
+        name,
+        a_poly,
+        [&dec.d, &dec.u, &dec.v],
+        cert,
+        SMALL_ALGORITHM,
+        Mode::OneSymbol,
+        ring.to_string(),
+        note.to_string(),
+        opts,
+    ))
+}
+
+const SMALL_ALGORITHM: &str = "small nonsingular path: det and adj by images mod word primes and CRT; Hermite structure W·A = [[I, h], [0, f]] computed mod word primes and rebuilt by rational reconstruction (checked on one more prime); certified exactly (U·A·V = D over Z[x], det U constant since deg det A = deg f)";
+
 #[allow(clippy::too_many_arguments)]
 fn generic_report<R: crate::algebra::ring::EuclideanDomain>(
     name: &str,
@@ -398,33 +477,18 @@ fn generic_report<R: crate::algebra::ring::EuclideanDomain>(
         .phase("certifying U·A·V = D, U·U⁻¹ = I, V·V⁻¹ = I");
     let cert = dec.certify_with(a, check);
     fail_if_unverified(&cert)?;
-    let inv = dec.invariant_factors();
-    let r = &a.ring;
-    let latex = opts.latex.then(|| LatexForms {
-        a: rows_of(a_poly, true),
-        invariant_factors: inv.iter().map(|e| r.latex(e)).collect(),
-        d: Some(rows_of(&dec.d, true)),
-        u: Some(rows_of(&dec.u, true)),
-        v: Some(rows_of(&dec.v, true)),
-    });
-    let report = SmithReport {
-        matrix: name.to_string(),
-        ring: ring_name,
+    opts.progress.phase("formatting the report");
+    let report = transforms_report(
+        name,
+        a_poly,
+        [&dec.d, &dec.u, &dec.v],
+        cert,
+        algorithm,
         mode,
-        mode_note: note,
-        algorithm: algorithm.to_string(),
-        a: rows_of(a_poly, false),
-        invariant_factors: inv.iter().map(|e| r.lmx(e)).collect(),
-        rank: inv.len(),
-        d: rows_of(&dec.d, false),
-        u: Some(rows_of(&dec.u, false)),
-        v: Some(rows_of(&dec.v, false)),
-        verified: true,
-        certificate: cert.checks,
-        invariant_factor_coefficients: None,
-        denominator_free: None,
-        latex,
-    };
+        ring_name,
+        note,
+        opts,
+    );
     Ok((report, dec))
 }
 
@@ -468,6 +532,9 @@ fn one_symbol(
             opts,
         )
     {
+        return Ok(report);
+    }
+    if let Some(report) = small_report(name, a, &au, &ring, &note, opts) {
         return Ok(report);
     }
     let (dec, alg) = match super::nonsingular::try_fast(&au, TRANSFORM_LIMIT_BITS) {
