@@ -427,20 +427,24 @@ fn transforms_report<R: crate::algebra::ring::EuclideanDomain>(
     }
 }
 
-/// The small-input fast path ([`super::small`]): `None` when it does not
-/// apply or its certificate does not hold (the caller goes on).
-fn small_report(
+/// The nonsingular path's decomposition (U with primitive integer rows)
+/// certified by [`super::small::certify_small`] (det U constant from
+/// degrees, so no `U·U⁻¹` product); `None` when that certificate does not
+/// apply (the caller certifies the usual way).
+fn degree_certified_report(
     name: &str,
     a_poly: &Matrix<PolyRing>,
     au: &Matrix<QxRing>,
+    dec: &SmithDecomposition<QxRing>,
     ring: &str,
     note: &str,
     opts: &SmithOptions,
 ) -> Option<SmithReport> {
-    let (dec, p) = super::small::small_hermite(au)?;
     opts.progress
         .phase("certifying U·A·V = D, V·V⁻¹ = I, det U constant from degrees");
-    let cert = super::small::certify_small(au, &dec, p);
+    let small = super::small::SmallDecomposition::from_decomposition(dec);
+    let p = super::small::certificate_prime()?;
+    let cert = super::small::certify_small(au, &small, p);
     if !cert.verified() {
         return None;
     }
@@ -450,7 +454,7 @@ fn small_report(
         a_poly,
         [&dec.d, &dec.u, &dec.v],
         cert,
-        SMALL_ALGORITHM,
+        NONSINGULAR_ALGORITHM,
         Mode::OneSymbol,
         ring.to_string(),
         note.to_string(),
@@ -458,7 +462,6 @@ fn small_report(
     ))
 }
 
-const SMALL_ALGORITHM: &str = "small nonsingular path: det and adj by images mod word primes and CRT; Hermite structure W·A = [[I, h], [0, f]] computed mod word primes and rebuilt by rational reconstruction (checked on one more prime); certified exactly (U·A·V = D over Z[x], det U constant since deg det A = deg f)";
 
 #[allow(clippy::too_many_arguments)]
 fn generic_report<R: crate::algebra::ring::EuclideanDomain>(
@@ -534,12 +537,12 @@ fn one_symbol(
     {
         return Ok(report);
     }
-    if let Some(report) = small_report(name, a, &au, &ring, &note, opts) {
-        return Ok(report);
-    }
     let (dec, alg) = match super::nonsingular::try_fast(&au, TRANSFORM_LIMIT_BITS) {
         Some(FastPath::Decomposition(mut d)) => {
             super::trailing::integral_rows(&mut d);
+            if let Some(report) = degree_certified_report(name, a, &au, &d, &ring, &note, opts) {
+                return Ok(report);
+            }
             (d, NONSINGULAR_ALGORITHM)
         }
         Some(FastPath::FormOnly { c, b, bits }) => {
