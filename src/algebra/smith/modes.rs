@@ -395,11 +395,7 @@ fn transforms_report<R: crate::algebra::ring::EuclideanDomain>(
     opts: &SmithOptions,
 ) -> SmithReport {
     let r = &d.ring;
-    let inv: Vec<R::Elem> = d
-        .diagonal()
-        .into_iter()
-        .filter(|e| !r.is_zero(e))
-        .collect();
+    let inv: Vec<R::Elem> = d.diagonal().into_iter().filter(|e| !r.is_zero(e)).collect();
     let latex = opts.latex.then(|| LatexForms {
         a: rows_of(a_poly, true),
         invariant_factors: inv.iter().map(|e| r.latex(e)).collect(),
@@ -461,7 +457,6 @@ fn degree_certified_report(
         opts,
     ))
 }
-
 
 #[allow(clippy::too_many_arguments)]
 fn generic_report<R: crate::algebra::ring::EuclideanDomain>(

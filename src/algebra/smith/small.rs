@@ -95,7 +95,12 @@ fn leading_nonsingular(f: Fp, at: &[Vec<Vec<BigInt>>]) -> Option<usize> {
     let n = at.len();
     let degs: Vec<usize> = at
         .iter()
-        .map(|row| row.iter().map(|p| p.len().saturating_sub(1)).max().unwrap_or(0))
+        .map(|row| {
+            row.iter()
+                .map(|p| p.len().saturating_sub(1))
+                .max()
+                .unwrap_or(0)
+        })
         .collect();
     let mut m = vec![0u64; n * n];
     for (i, row) in at.iter().enumerate() {
@@ -329,7 +334,11 @@ pub fn small_hermite(a: &Matrix<QxRing>) -> Option<(SmallDecomposition, u64)> {
         // A full attempt only once the first h reconstructs (cheap probe).
         if added >= next_try && reconstruct_vec(&crt.h[0], &crt.m).is_some() {
             next_try = added + added.div_ceil(4);
-            let rows: Option<Vec<_>> = crt.rows.iter().map(|c| reconstruct_vec(c, &crt.m)).collect();
+            let rows: Option<Vec<_>> = crt
+                .rows
+                .iter()
+                .map(|c| reconstruct_vec(c, &crt.m))
+                .collect();
             let hs: Option<Vec<_>> = crt.h.iter().map(|c| reconstruct_vec(c, &crt.m)).collect();
             if let (Some(rows), Some(hs)) = (rows, hs) {
                 candidate = Some((rows, hs));
@@ -426,17 +435,12 @@ pub fn certify_small(a: &Matrix<QxRing>, s: &SmallDecomposition, p: u64) -> Cert
         .iter()
         .all(|m| m.rows() == n && m.cols() == n)
         && a.cols() == n;
-    push(
-        "shapes",
-        shapes,
-        format!("A, U, D, V are {n}×{n} (square)"),
-    );
+    push("shapes", shapes, format!("A, U, D, V are {n}×{n} (square)"));
     if !shapes {
         return Certificate { checks };
     }
-    let tri = (0..n).all(|i| {
-        (0..i).all(|j| s.v.get(i, j).is_zero()) && s.v.get(i, i).degree() == Some(0)
-    });
+    let tri = (0..n)
+        .all(|i| (0..i).all(|j| s.v.get(i, j).is_zero()) && s.v.get(i, i).degree() == Some(0));
     let (at, _) = integral(a);
     let big_n = leading_nonsingular(Fp::new(p), &at);
     let f = s.d.get(n - 1, n - 1);
@@ -446,18 +450,22 @@ pub fn certify_small(a: &Matrix<QxRing>, s: &SmallDecomposition, p: u64) -> Cert
     push(
         "U·A·V = D",
         prod,
-        if prod { "holds exactly" } else { "not established" }.to_string(),
+        if prod {
+            "holds exactly"
+        } else {
+            "not established"
+        }
+        .to_string(),
     );
-    let diag_ok = s.d.is_diagonal()
-        && (0..n - 1).all(|i| r.is_one(s.d.get(i, i)))
-        && r.normalize(f) == *f;
+    let diag_ok =
+        s.d.is_diagonal() && (0..n - 1).all(|i| r.is_one(s.d.get(i, i))) && r.normalize(f) == *f;
     push(
         "D diagonal",
         diag_ok,
         "D = diag(1, …, 1, f) with f monic".to_string(),
     );
-    let vinv = degrees
-        && ClearedQx.product_equals(&[&s.v, &s.v_inv], &Matrix::identity(r.clone(), n));
+    let vinv =
+        degrees && ClearedQx.product_equals(&[&s.v, &s.v_inv], &Matrix::identity(r.clone(), n));
     push(
         "V unimodular",
         tri && vinv,
@@ -519,7 +527,14 @@ mod tests {
     #[test]
     fn modular_hermite_equals_the_exact_route_and_is_certified() {
         let mut compared = 0;
-        for (n, deg, seed) in [(2, 1, 1), (3, 2, 2), (5, 1, 3), (8, 1, 1), (6, 3, 4), (12, 1, 5)] {
+        for (n, deg, seed) in [
+            (2, 1, 1),
+            (3, 2, 2),
+            (5, 1, 3),
+            (8, 1, 1),
+            (6, 3, 4),
+            (12, 1, 5),
+        ] {
             let a = random(n, deg, seed);
             let (s, p) = small_hermite(&a).expect("generic input");
             let cert = certify_small(&a, &s, p);
