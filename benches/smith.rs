@@ -117,5 +117,23 @@ fn large(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, peers, seed, scale, large);
+/// The small end of issue 15's grid (n ≤ 12, one symbol, with transforms
+/// and certificate): dense 8×8 and 12×12 of degree 1 (the nonsingular path,
+/// certified from degrees) and an 8×8 B·diag(1, …, x − 1, (x − 1)(x + 2),
+/// (x − 1)(x + 2)x)·C (the trailing Hermite route).
+fn small(c: &mut Criterion) {
+    let mut g = c.benchmark_group("smith_small");
+    g.sample_size(20);
+    for case in ["dense_8_1", "dense_12_1", "bdc3_8_1"] {
+        let a = first_matrix(&format!("benches/data/small_{case}.lmx"));
+        g.bench_function(case, |b| {
+            b.iter(|| {
+                smith_report("A", black_box(&a), &SmithOptions::default()).expect("certified")
+            })
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, peers, seed, scale, large, small);
 criterion_main!(benches);

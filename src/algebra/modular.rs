@@ -134,23 +134,45 @@ pub fn is_prime(n: u64) -> bool {
 /// How many primes [`primes`] offers.
 pub const NPRIMES: usize = 512;
 
-/// The largest [`NPRIMES`] primes below 2^62, descending (computed once).
+/// The largest [`NPRIMES`] primes below 2^62, descending. They are found
+/// lazily, as far as some caller has asked, and kept for the process (a
+/// small input needs two or three of them; finding all 512 costs a few
+/// milliseconds, which used to be most of a small `smith` run).
 pub fn primes() -> impl Iterator<Item = u64> {
-    static PRIMES: std::sync::OnceLock<Vec<u64>> = std::sync::OnceLock::new();
-    PRIMES
-        .get_or_init(|| {
-            let mut out = Vec::with_capacity(NPRIMES);
-            let mut n: u64 = (1 << 62) - 1;
-            while out.len() < NPRIMES {
-                if is_prime(n) {
-                    out.push(n);
-                }
-                n -= 2;
-            }
-            out
-        })
-        .iter()
-        .copied()
+    Primes(0)
+}
+
+/// The k-th of [`primes`] (0-based), `None` beyond [`NPRIMES`].
+pub fn prime(k: usize) -> Option<u64> {
+    if k >= NPRIMES {
+        return None;
+    }
+    static FOUND: std::sync::Mutex<Vec<u64>> = std::sync::Mutex::new(Vec::new());
+    let mut found = FOUND.lock().unwrap_or_else(|e| e.into_inner());
+    while found.len() <= k {
+        let mut n = found.last().map_or((1 << 62) - 1, |&p| p - 2);
+        while !is_prime(n) {
+            n -= 2;
+        }
+        found.push(n);
+    }
+    Some(found[k])
+}
+
+/// The iterator behind [`primes`].
+struct Primes(usize);
+
+impl Iterator for Primes {
+    type Item = u64;
+    fn next(&mut self) -> Option<u64> {
+        let p = prime(self.0)?;
+        self.0 += 1;
+        Some(p)
+    }
+    fn size_hint(&self) -> (usize, Option<usize>) {
+        let left = NPRIMES.saturating_sub(self.0);
+        (left, Some(left))
+    }
 }
 
 /// A small deterministic generator of evaluation points.
@@ -379,6 +401,19 @@ mod tests {
         let ps: Vec<u64> = primes().take(5).collect();
         assert!(ps.windows(2).all(|w| w[0] > w[1]));
         assert!(ps.iter().all(|&p| is_prime(p) && p < 1 << 62));
+        // Lazily found, yet the same sequence: the first five are the five
+        // largest primes below 2^62 (no prime is skipped between them).
+        let mut n = (1u64 << 62) - 1;
+        for &p in &ps {
+            while !is_prime(n) {
+                n -= 2;
+            }
+            assert_eq!(p, n);
+            n -= 2;
+        }
+        assert_eq!(primes().count(), NPRIMES);
+        assert_eq!(prime(NPRIMES - 1), primes().last());
+        assert_eq!(prime(NPRIMES), None);
         assert!(!is_prime(3_215_031_751)); // strong pseudoprime to 2, 3, 5, 7
         assert!(is_prime(1_000_000_007));
     }

@@ -104,9 +104,20 @@ pub fn report(
         bar.enable_steady_tick(std::time::Duration::from_millis(200));
         bar
     });
+    let timings = timings_enabled();
     let hook = spinner.clone().map(|bar| {
-        std::sync::Arc::new(move |phase: &str| bar.set_message(phase.to_string()))
-            as std::sync::Arc<dyn Fn(&str) + Send + Sync>
+        std::sync::Arc::new(move |phase: &str| {
+            if timings {
+                timing(phase);
+            }
+            bar.set_message(phase.to_string())
+        }) as std::sync::Arc<dyn Fn(&str) + Send + Sync>
+    });
+    let hook = hook.or_else(|| {
+        timings.then(|| {
+            std::sync::Arc::new(|phase: &str| timing(phase))
+                as std::sync::Arc<dyn Fn(&str) + Send + Sync>
+        })
     });
     let opts = SmithOptions {
         principal,
@@ -118,6 +129,28 @@ pub fn report(
         bar.finish_and_clear();
     }
     Ok(r?)
+}
+
+/// Whether `LAMBDAMAT_TIMINGS` asks for phase timings on stderr (a
+/// debugging aid for the speed work on small inputs; off by default).
+fn timings_enabled() -> bool {
+    std::env::var_os("LAMBDAMAT_TIMINGS").is_some_and(|v| !v.is_empty() && v != "0")
+}
+
+/// Prints `[timings] <CPU ms> <wall ms> <what starts now>` to stderr: the
+/// main thread's CPU time from `/proc/thread-self/schedstat` (nanoseconds;
+/// `-` where unavailable) and the wall time since the first call.
+fn timing(what: &str) {
+    static START: std::sync::OnceLock<std::time::Instant> = std::sync::OnceLock::new();
+    let t0 = START.get_or_init(std::time::Instant::now);
+    let cpu = std::fs::read_to_string("/proc/thread-self/schedstat")
+        .ok()
+        .and_then(|s| s.split_whitespace().next()?.parse::<f64>().ok())
+        .map_or_else(|| "-".to_string(), |ns| format!("{:.3}", ns / 1e6));
+    eprintln!(
+        "[timings] cpu {cpu:>9} ms  wall {:9.3} ms  {what}",
+        t0.elapsed().as_secs_f64() * 1e3
+    );
 }
 
 /// The report of a `check smith A with U, D, V` directive.
@@ -142,6 +175,10 @@ pub fn print_report(r: &SmithReport, out: &OutputArgs, w: &mut dyn Write) -> Res
 
 /// `lambdamat smith FILE`.
 pub fn smith_command(a: &SmithArgs, w: &mut dyn Write) -> Result<(), CliError> {
+    let timings = timings_enabled();
+    if timings {
+        timing("parsing and lowering");
+    }
     let p = load(&a.file)?;
     let principal = principal(&p, a.principal.as_deref())?;
     let targets: Vec<usize> = match &a.matrix {
@@ -186,6 +223,14 @@ pub fn smith_command(a: &SmithArgs, w: &mut dyn Write) -> Result<(), CliError> {
         .iter()
         .map(|&i| report(&p, i, principal, a.out.latex))
         .collect::<Result<Vec<_>, _>>()?;
+    if timings {
+        timing("printing");
+    }
+    let done = || {
+        if timings {
+            timing("done");
+        }
+    };
     if a.out.json {
         let v = if reports.len() == 1 {
             serde_json::to_value(&reports[0])
@@ -194,6 +239,7 @@ pub fn smith_command(a: &SmithArgs, w: &mut dyn Write) -> Result<(), CliError> {
         }
         .map_err(|e| CliError::Invalid(e.to_string()))?;
         super::output::write_json(w, &v)?;
+        done();
         return Ok(());
     }
     for (k, r) in reports.iter().enumerate() {
@@ -202,5 +248,6 @@ pub fn smith_command(a: &SmithArgs, w: &mut dyn Write) -> Result<(), CliError> {
         }
         print_report(r, &a.out, w)?;
     }
+    done();
     Ok(())
 }

@@ -20,6 +20,7 @@ pub mod elimination;
 pub mod modes;
 pub mod nonsingular;
 pub mod several;
+pub mod small;
 pub mod trailing;
 
 use crate::algebra::matrix::Matrix;

@@ -381,6 +381,83 @@ fn form_only_report(
     }
 }
 
+/// The report of a certified decomposition with transforms `[D, U, V]`.
+#[allow(clippy::too_many_arguments)]
+fn transforms_report<R: crate::algebra::ring::EuclideanDomain>(
+    name: &str,
+    a_poly: &Matrix<PolyRing>,
+    [d, u, v]: [&Matrix<R>; 3],
+    cert: Certificate,
+    algorithm: &str,
+    mode: Mode,
+    ring_name: String,
+    note: String,
+    opts: &SmithOptions,
+) -> SmithReport {
+    let r = &d.ring;
+    let inv: Vec<R::Elem> = d.diagonal().into_iter().filter(|e| !r.is_zero(e)).collect();
+    let latex = opts.latex.then(|| LatexForms {
+        a: rows_of(a_poly, true),
+        invariant_factors: inv.iter().map(|e| r.latex(e)).collect(),
+        d: Some(rows_of(d, true)),
+        u: Some(rows_of(u, true)),
+        v: Some(rows_of(v, true)),
+    });
+    SmithReport {
+        matrix: name.to_string(),
+        ring: ring_name,
+        mode,
+        mode_note: note,
+        algorithm: algorithm.to_string(),
+        a: rows_of(a_poly, false),
+        invariant_factors: inv.iter().map(|e| r.lmx(e)).collect(),
+        rank: inv.len(),
+        d: rows_of(d, false),
+        u: Some(rows_of(u, false)),
+        v: Some(rows_of(v, false)),
+        verified: true,
+        certificate: cert.checks,
+        invariant_factor_coefficients: None,
+        denominator_free: None,
+        latex,
+    }
+}
+
+/// The nonsingular path's decomposition (U with primitive integer rows)
+/// certified by [`super::small::certify_small`] (det U constant from
+/// degrees, so no `U·U⁻¹` product); `None` when that certificate does not
+/// apply (the caller certifies the usual way).
+fn degree_certified_report(
+    name: &str,
+    a_poly: &Matrix<PolyRing>,
+    au: &Matrix<QxRing>,
+    dec: &SmithDecomposition<QxRing>,
+    ring: &str,
+    note: &str,
+    opts: &SmithOptions,
+) -> Option<SmithReport> {
+    opts.progress
+        .phase("certifying U·A·V = D, V·V⁻¹ = I, det U constant from degrees");
+    let small = super::small::SmallDecomposition::from_decomposition(dec);
+    let p = super::small::certificate_prime()?;
+    let cert = super::small::certify_small(au, &small, p);
+    if !cert.verified() {
+        return None;
+    }
+    opts.progress.phase("formatting the report");
+    Some(transforms_report(
+        name,
+        a_poly,
+        [&dec.d, &dec.u, &dec.v],
+        cert,
+        NONSINGULAR_ALGORITHM,
+        Mode::OneSymbol,
+        ring.to_string(),
+        note.to_string(),
+        opts,
+    ))
+}
+
 #[allow(clippy::too_many_arguments)]
 fn generic_report<R: crate::algebra::ring::EuclideanDomain>(
     name: &str,
@@ -398,33 +475,18 @@ fn generic_report<R: crate::algebra::ring::EuclideanDomain>(
         .phase("certifying U·A·V = D, U·U⁻¹ = I, V·V⁻¹ = I");
     let cert = dec.certify_with(a, check);
     fail_if_unverified(&cert)?;
-    let inv = dec.invariant_factors();
-    let r = &a.ring;
-    let latex = opts.latex.then(|| LatexForms {
-        a: rows_of(a_poly, true),
-        invariant_factors: inv.iter().map(|e| r.latex(e)).collect(),
-        d: Some(rows_of(&dec.d, true)),
-        u: Some(rows_of(&dec.u, true)),
-        v: Some(rows_of(&dec.v, true)),
-    });
-    let report = SmithReport {
-        matrix: name.to_string(),
-        ring: ring_name,
+    opts.progress.phase("formatting the report");
+    let report = transforms_report(
+        name,
+        a_poly,
+        [&dec.d, &dec.u, &dec.v],
+        cert,
+        algorithm,
         mode,
-        mode_note: note,
-        algorithm: algorithm.to_string(),
-        a: rows_of(a_poly, false),
-        invariant_factors: inv.iter().map(|e| r.lmx(e)).collect(),
-        rank: inv.len(),
-        d: rows_of(&dec.d, false),
-        u: Some(rows_of(&dec.u, false)),
-        v: Some(rows_of(&dec.v, false)),
-        verified: true,
-        certificate: cert.checks,
-        invariant_factor_coefficients: None,
-        denominator_free: None,
-        latex,
-    };
+        ring_name,
+        note,
+        opts,
+    );
     Ok((report, dec))
 }
 
@@ -473,6 +535,9 @@ fn one_symbol(
     let (dec, alg) = match super::nonsingular::try_fast(&au, TRANSFORM_LIMIT_BITS) {
         Some(FastPath::Decomposition(mut d)) => {
             super::trailing::integral_rows(&mut d);
+            if let Some(report) = degree_certified_report(name, a, &au, &d, &ring, &note, opts) {
+                return Ok(report);
+            }
             (d, NONSINGULAR_ALGORITHM)
         }
         Some(FastPath::FormOnly { c, b, bits }) => {
