@@ -17,6 +17,7 @@ pub mod certify_several;
 pub mod detadj;
 pub mod divisors;
 pub mod elimination;
+pub mod hermite_cert;
 pub mod modes;
 pub mod nonsingular;
 pub mod several;

@@ -256,7 +256,7 @@ pub const DIAGONAL_FORM_ONLY: usize = 32;
 
 /// From this size on, a nonsingular one-symbol input whose (n−1)-th
 /// determinantal divisor is not 1 gets its invariant factors without
-/// transforms when [`super::certify::certify_two_factors`] establishes
+/// transforms when [`super::hermite_cert::certify_factors`] establishes
 /// them (the general elimination with transforms grows fast: 8×8 of
 /// B·diag(1, …, x − 1, (x − 1)(x + 2))·C in 0.5 s, 12×12 in 13.6 s).
 pub const TWO_FACTOR_MIN: usize = 10;
@@ -268,8 +268,8 @@ fn last_only(a: &Matrix<QxRing>, f: QPoly) -> Vec<QPoly> {
     v
 }
 
-/// The form-only report with two non-trivial invariant factors, when
-/// [`super::certify::certify_two_factors`] establishes them.
+/// The form-only report with two or more non-trivial invariant factors,
+/// when [`super::hermite_cert::certify_factors`] establishes them.
 #[allow(clippy::too_many_arguments)]
 fn two_factor_report(
     name: &str,
@@ -281,9 +281,10 @@ fn two_factor_report(
     note: String,
     opts: &SmithOptions,
 ) -> Option<SmithReport> {
-    opts.progress
-        .phase("certifying the invariant factors (A·B = c·I, gcd of adj, Jacobi minors)");
-    let (cert, factors) = super::certify::certify_two_factors(au, c, b);
+    opts.progress.phase(
+        "certifying the invariant factors (A·B = c·I, gcd of B, deg det A, Hermite basis modulo the repeated part)",
+    );
+    let (cert, factors) = super::hermite_cert::certify_factors(au, c, b);
     if !cert.verified() || factors.len() != au.rows() {
         return None;
     }
@@ -294,7 +295,7 @@ fn two_factor_report(
         factors,
         cert,
         ring.to_string(),
-        "det and adj by images mod word primes (CRT above a proved bound); invariant factors from A·B = c·I: f_(n−1) = gcd of adj's entries (exact Euclid, quotients coprime mod p), f_n = det/f_(n−1), d_(n−2) = 1 from 2×2 minors of adj divided by det (Jacobi)",
+        super::hermite_cert::ALGORITHM,
         note,
         opts,
     ))
@@ -334,7 +335,7 @@ fn last_factor_report(
 
 /// A one-symbol report with D alone (`factors` its diagonal), certified by
 /// [`super::certify::certify_last_factor`] or
-/// [`super::certify::certify_two_factors`].
+/// [`super::hermite_cert::certify_factors`].
 #[allow(clippy::too_many_arguments)]
 fn form_only_report(
     name: &str,
@@ -476,7 +477,10 @@ fn one_symbol(
             (d, NONSINGULAR_ALGORITHM)
         }
         Some(FastPath::FormOnly { c, b, bits }) => {
-            if let Some(report) = last_factor_report(
+            // Without coprime entries in B that certificate fails anyway,
+            // after an expensive product check.
+            if super::hermite_cert::entries_coprime(&b)
+                && let Some(report) = last_factor_report(
                 name,
                 a,
                 &au,
@@ -499,8 +503,9 @@ fn one_symbol(
             if let Some(report) = two_factor_report(name, a, &au, &c, &b, &ring, why, opts) {
                 return Ok(report);
             }
-            // Three or more non-trivial factors: the Hermite-basis route
-            // (large transforms, but far cheaper than the elimination).
+            // The form-only certificate declined (e.g. a trailing block
+            // beyond its size): the Hermite-basis route with (large)
+            // transforms, far cheaper than the elimination.
             match super::trailing::trailing_hermite(&au, &c, &b) {
                 Some(d) => (d, TRAILING_ALGORITHM),
                 None => (SmithDecomposition::new(&au), ELIMINATION_ALGORITHM),
