@@ -325,7 +325,7 @@ pub fn mul_cleared(x: &Matrix<QxRing>, y: &Matrix<QxRing>) -> Option<Matrix<QxRi
                 if acc.len() < len {
                     acc.resize(len, BigInt::zero());
                 }
-                if a.len().min(b.len()) >= crate::algebra::qx::KRONECKER_MIN_LEN {
+                if crate::algebra::qx::kronecker_pays(a, b) {
                     for (s, c) in acc.iter_mut().zip(crate::algebra::qx::conv(a, b)) {
                         *s += c;
                     }

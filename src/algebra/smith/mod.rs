@@ -22,6 +22,7 @@ pub mod modes;
 pub mod nonsingular;
 pub mod several;
 pub mod trailing;
+pub mod two_by_two;
 
 use crate::algebra::matrix::Matrix;
 use crate::algebra::ring::EuclideanDomain;

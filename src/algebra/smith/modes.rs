@@ -471,6 +471,12 @@ fn one_symbol(
     {
         return Ok(report);
     }
+    if let Some(d) = super::two_by_two::bezout_2x2(&au) {
+        let alg = super::two_by_two::ALGORITHM;
+        let check = super::two_by_two::RightFirst;
+        let mode = Mode::OneSymbol;
+        return Ok(generic_report(name, a, &au, d, alg, mode, ring, note, opts, &check)?.0);
+    }
     let (dec, alg) = match super::nonsingular::try_fast(&au, TRANSFORM_LIMIT_BITS) {
         Some(FastPath::Decomposition(mut d)) => {
             super::trailing::integral_rows(&mut d);
