@@ -9,7 +9,8 @@
 //! certified without transforms), and a 12×12 B·diag·C with two
 //! non-trivial invariant factors (gcd of adj and Jacobi minors); and the
 //! several-symbol inputs certified from det and adj without elimination
-//! or minors (a 10×10 over Q[x, y], a random 4×4 over Q[x, y, z]).
+//! or minors (a 10×10 over Q[x, y], a random 4×4 over Q[x, y, z]); and a
+//! 24×24 with three non-trivial factors certified without transforms.
 
 mod common;
 
@@ -90,7 +91,9 @@ fn principal_and_determinantal_modes_agree_on_the_four_by_four() {
 }
 
 #[test]
-fn qx_two_by_two_of_degree_100_takes_the_modular_nonsingular_path() {
+fn qx_two_by_two_of_degree_100_takes_the_bezout_route() {
+    // One Bezout identity on the first row (modular inverse, early
+    // termination proved by exact division); U·A·V = D certified.
     let v = json(&["smith", "tests/data/issue15_qx_2x2_deg100.lmx"]);
     assert_eq!(v["mode"], "one-symbol");
     assert_eq!(v["verified"], true);
@@ -98,10 +101,15 @@ fn qx_two_by_two_of_degree_100_takes_the_modular_nonsingular_path() {
         v["algorithm"]
             .as_str()
             .expect("text")
-            .starts_with("nonsingular path"),
+            .starts_with("2×2 with a coprime first row"),
         "{}",
         v["algorithm"]
     );
+    assert!(v["U"].is_array() && v["V"].is_array());
+    let names = check_names(&v);
+    for want in ["U·A·V = D", "U unimodular", "V unimodular"] {
+        assert!(names.iter().any(|n| n == want), "{want} missing: {names:?}");
+    }
     let inv = strings(&v["invariant_factors"]);
     assert_eq!(inv[0], "1");
     assert!(inv[1].starts_with("x^200"), "degree 200 expected");
@@ -324,4 +332,33 @@ fn three_nontrivial_factors_get_certified_transforms() {
     assert_eq!(inv[7], "x - 1");
     assert_eq!(inv[8], "x^2 + x - 2");
     assert!(inv[9].starts_with("x^23 "), "{}", inv[9]);
+}
+
+#[test]
+fn three_nontrivial_factors_certified_without_transforms_at_24() {
+    // The bdc3 shape at 24×24: transforms would be huge (the Hermite-basis
+    // route with U, V took 109 s at 32×32), so D alone is certified from
+    // A·B = c·I: f_n = c/gcd(B), deg det A modulo a prime, and the Smith
+    // form of the 3×3 trailing block of a Hermite basis modulo the
+    // repeated part, with L(A) ⊆ L(H) and the degrees adding up.
+    let v = json(&["smith", "tests/data/issue15_bdc3_24.lmx"]);
+    assert_eq!(v["verified"], true);
+    assert!(v["U"].is_null() && v["V"].is_null());
+    let inv = strings(&v["invariant_factors"]);
+    assert_eq!(inv.len(), 24);
+    assert!(inv[..21].iter().all(|f| f == "1"), "{inv:?}");
+    assert_eq!(inv[21], "x - 1");
+    assert_eq!(inv[22], "x^2 + x - 2");
+    // deg det A = 24·1 (B) + 1 + 2 + 3 (chain) + 24·1 (C) = 54, minus 3.
+    assert!(inv[23].starts_with("x^51 "), "{}", inv[23]);
+    let names = check_names(&v);
+    for want in [
+        "A·B = c·I",
+        "f_n = c/gcd(B)",
+        "deg det A = D",
+        "Smith form of the trailing block T",
+        "L(A) ⊆ L(H)",
+    ] {
+        assert!(names.iter().any(|n| n == want), "{want} missing: {names:?}");
+    }
 }

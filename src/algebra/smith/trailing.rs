@@ -317,7 +317,7 @@ pub fn trailing_hermite(
                     acc = r.add(&acc, &r.mul(ht, b.get(t, col)));
                 }
             }
-            w.set(i, col, r.div_exact(&acc, c)?);
+            w.set(i, col, super::two_by_two::exact_quotient(&r, &acc, c)?);
         }
     }
     // Smith form of the trailing block T.
@@ -362,7 +362,7 @@ pub fn trailing_hermite(
         let dj = d.get(j, j).clone();
         for i in 0..n {
             let e = r.dot(&mut (0..n).map(|q| (a.get(i, q), v.get(q, j))));
-            u_inv.set(i, j, r.div_exact(&e, &dj)?);
+            u_inv.set(i, j, super::two_by_two::exact_quotient(&r, &e, &dj)?);
         }
     }
     let mut dec = SmithDecomposition {

@@ -162,7 +162,7 @@ fn primitive_scale(line: &[&QPoly]) -> Option<Q> {
 /// `x / y` when exact: integer division of the numerators (no
 /// pseudo-division, whose scaling by powers of lc(y) would blow up the
 /// coefficients), the ring's division when that declines.
-fn exact_quotient(r: &QxRing, x: &QPoly, y: &QPoly) -> Option<QPoly> {
+pub(super) fn exact_quotient(r: &QxRing, x: &QPoly, y: &QPoly) -> Option<QPoly> {
     if let Some(q) = crate::algebra::modgcd::int_div_exact(x.num(), y.num()) {
         // x = X/dx, y = Y/dy: x/y = (X/Y)·dy/dx.
         return Some(QPoly::new(
