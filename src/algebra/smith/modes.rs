@@ -487,19 +487,20 @@ fn one_symbol(
             // after an expensive product check.
             if super::hermite_cert::entries_coprime(&b)
                 && let Some(report) = last_factor_report(
-                name,
-                a,
-                &au,
-                (&c, &b),
-                &ring,
-                "det and adj by images mod word primes (CRT above a proved bound); invariant factors from A·B = c·I, the gcd of B's entries and deg c",
-                format!(
-                    "{note}; transforms omitted: U would hold about {:.1e} digits of coefficients (limit {:.1e}); the invariant factors alone are certified",
-                    bits as f64 * std::f64::consts::LOG10_2,
-                    TRANSFORM_LIMIT_BITS as f64 * std::f64::consts::LOG10_2
-                ),
-                opts,
-            ) {
+                    name,
+                    a,
+                    &au,
+                    (&c, &b),
+                    &ring,
+                    "det and adj by images mod word primes (CRT above a proved bound); invariant factors from A·B = c·I, the gcd of B's entries and deg c",
+                    format!(
+                        "{note}; transforms omitted: U would hold about {:.1e} digits of coefficients (limit {:.1e}); the invariant factors alone are certified",
+                        bits as f64 * std::f64::consts::LOG10_2,
+                        TRANSFORM_LIMIT_BITS as f64 * std::f64::consts::LOG10_2
+                    ),
+                    opts,
+                )
+            {
                 return Ok(report);
             }
             let why = format!(

@@ -143,9 +143,9 @@ fn bezout_early(r: &QxRing, a: &QPoly, b: &QPoly) -> Option<(QPoly, QPoly)> {
 
 /// The positive constant making `λ·(p, q)` primitive integer polynomials.
 fn primitive_scale(line: &[&QPoly]) -> Option<Q> {
-    let l = line
-        .iter()
-        .fold(BigInt::one(), |l, e| crate::algebra::intgcd::lcm(&l, e.den()));
+    let l = line.iter().fold(BigInt::one(), |l, e| {
+        crate::algebra::intgcd::lcm(&l, e.den())
+    });
     let mut g = BigInt::zero();
     for e in line {
         let f = &l / e.den();
@@ -242,12 +242,7 @@ mod tests {
     #[test]
     fn random_two_by_two_gets_a_certified_decomposition() {
         let r = QxRing::new("x");
-        let a = Matrix::new(
-            r.clone(),
-            2,
-            2,
-            (0..4).map(|i| seeded(40, 3 + i)).collect(),
-        );
+        let a = Matrix::new(r.clone(), 2, 2, (0..4).map(|i| seeded(40, 3 + i)).collect());
         let dec = bezout_2x2(&a).expect("coprime first row");
         assert!(dec.certify(&a).verified());
         let det = a.det().expect("square");
