@@ -18,6 +18,7 @@ pub mod detadj;
 pub mod divisors;
 pub mod elimination;
 pub mod hermite_cert;
+pub mod minors_cert;
 pub mod modes;
 pub mod nonsingular;
 pub mod several;
