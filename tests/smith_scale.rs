@@ -1,16 +1,17 @@
 //! Regression tests for inputs that used to stall the Smith engine (issue
 //! 15), kept small enough to run in seconds: the principal-mode 4×4 in
 //! three symbols that spent minutes in the rational-coefficient PRS gcd,
-//! a 2×2 of degree 100 over Q[x] (the modular inverse in the nonsingular
-//! path), and a 9×9 in two symbols whose minors are too many to enumerate
+//! a 2×2 of degree 100 over Q[x] (now one Bezout identity by a modular
+//! inverse), and a 9×9 in two symbols whose minors are too many to enumerate
 //! (the determinantal mode then goes through one Smith form per symbol);
 //! and the large one-symbol shapes: a constant 60×60 (unimodular path), a
 //! 40×40 diagonal and a dense 40×40 of degree 1 (invariant factors
 //! certified without transforms), and a 12×12 B·diag·C with two
-//! non-trivial invariant factors (gcd of adj and Jacobi minors); and the
+//! non-trivial invariant factors (Hermite basis, with transforms); and the
 //! several-symbol inputs certified from det and adj without elimination
 //! or minors (a 10×10 over Q[x, y], a random 4×4 over Q[x, y, z]); and a
-//! 24×24 with three non-trivial factors certified without transforms.
+//! 24×24 with three non-trivial factors certified without transforms, the
+//! issue's 50×50 of degree 1 without the adjugate.
 
 mod common;
 
@@ -361,4 +362,27 @@ fn three_nontrivial_factors_certified_without_transforms_at_24() {
     ] {
         assert!(names.iter().any(|n| n == want), "{want} missing: {names:?}");
     }
+}
+
+#[test]
+fn fifty_by_fifty_of_degree_one_without_the_adjugate() {
+    // The issue's 50×50 row (> 180 s and 892 MB at first): from 48×48 on
+    // a generic input gets det by images and two coprime (n−1)-minors.
+    let v = json(&["smith", "tests/data/issue15_qx_50x50_deg1.lmx"]);
+    assert_eq!(v["verified"], true);
+    assert!(v["U"].is_null());
+    assert!(
+        v["algorithm"]
+            .as_str()
+            .expect("text")
+            .contains("two (n−1)-minors coprime"),
+        "{}",
+        v["algorithm"]
+    );
+    let inv = strings(&v["invariant_factors"]);
+    assert_eq!(inv.len(), 50);
+    assert!(inv[..49].iter().all(|f| f == "1"));
+    assert!(inv[49].starts_with("x^50 "), "{}", inv[49]);
+    let names = check_names(&v);
+    assert!(names.iter().any(|n| n == "d_(n−1)(A) = 1"), "{names:?}");
 }

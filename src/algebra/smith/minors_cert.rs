@@ -96,13 +96,7 @@ fn det_mod(f: Fp, m: &mut [u64], n: usize) -> u64 {
 
 /// The polynomial mod p of degree ≤ `deg` equal to det of the submatrix
 /// at `x = 0, …, deg` (Newton interpolation).
-fn minor_mod(
-    f: Fp,
-    img: &[Vec<Vec<u64>>],
-    rows: &[usize],
-    cols: &[usize],
-    deg: usize,
-) -> Vec<u64> {
+fn minor_mod(f: Fp, img: &[Vec<Vec<u64>>], rows: &[usize], cols: &[usize], deg: usize) -> Vec<u64> {
     let k = rows.len();
     let mut m = vec![0u64; k * k];
     let mut vals = Vec::with_capacity(deg + 1);

@@ -477,7 +477,9 @@ fn one_symbol(
             "{note}; transforms omitted for a {n}×{n} input of positive degree (U would be dense, with coefficients of the size of det's): the invariant factors alone are certified"
         );
         let (alg, f) = (super::minors_cert::ALGORITHM, last_only(&au, f));
-        return Ok(form_only_report(name, a, &au, f, cert, ring, alg, why, opts));
+        return Ok(form_only_report(
+            name, a, &au, f, cert, ring, alg, why, opts,
+        ));
     }
     if let Some(d) = super::two_by_two::bezout_2x2(&au) {
         let alg = super::two_by_two::ALGORITHM;
