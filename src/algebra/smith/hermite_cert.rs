@@ -106,7 +106,7 @@ fn entry_gcd(b: &Matrix<QxRing>) -> Option<(Vec<BigInt>, Vec<QPoly>)> {
 
 /// N: the least of the sums of row and of column degrees of A, a bound on
 /// `deg det A`.
-fn degree_bound(a: &Matrix<QxRing>) -> usize {
+pub fn degree_bound(a: &Matrix<QxRing>) -> usize {
     let n = a.rows();
     let deg = |p: &QPoly| p.degree().unwrap_or(0);
     let row_sum: usize = (0..n)
