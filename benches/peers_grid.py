@@ -10,7 +10,8 @@ CPU-time limit (RLIMIT_CPU, --timeout seconds) and are reported as "> T". The in
 peer finished.
 
 Usage: peers_grid.py BIN OUTDIR [--ns 8,12,...] [--ds 1,2,3]
-       [--shapes dense,bdc2,bdc3] [--timeout 60] [--no-singular] [--no-pari]
+       [--shapes dense,bdc2,bdc3] [--timeout 60] [--singular-timeout 30]
+       [--ours-timeout 600] [--no-singular] [--no-pari]
 """
 import argparse, json, os, re, resource, subprocess, sys, time
 
@@ -121,7 +122,9 @@ def run_pari(m, timeout):
         return {"cpu": None}
     out = [l for l in p.stdout.splitlines() if l.strip()]
     if len(out) < 2:
-        return {"cpu": None, "error": (p.stderr or p.stdout)[:200]}
+        if p.returncode < 0:  # killed at the CPU limit
+            return {"cpu": None}
+        return {"cpu": None, "error": (p.stderr or p.stdout)[-2000:]}
     return {"cpu": int(out[0]) / 1000.0, "degs": json.loads(out[1])}
 
 
@@ -144,13 +147,27 @@ def run_singular(m, timeout):
         return {"cpu": None}
     lines = [l for l in p.stdout.splitlines() if l.strip()]
     if len(lines) < 2:
-        return {"cpu": None, "error": (p.stderr or p.stdout)[:200]}
+        if p.returncode < 0:  # killed at the CPU limit
+            return {"cpu": None}
+        return {"cpu": None, "error": (p.stderr or p.stdout)[-2000:]}
     degs = sorted(int(x) for x in lines[1].split())
     return {"cpu": int(lines[0]) / 1000.0, "degs": degs}
 
 
 def fmt(t, timeout):
     return f"> {timeout:.0f}" if t is None else f"{t:.3f}"
+
+
+def peer_cell(r, timeout):
+    """A peer's time, "> T" at its CPU limit, or the reason it failed (e.g.
+    PARI's stack overflow at -s 1G), which is not a time."""
+    if r.get("skipped"):
+        return "–"
+    err = r.get("error")
+    if err is not None:
+        clean = re.sub(r"\x1b\[[0-9;]*m", "", err)
+        return "fails: stack overflow" if "stack overflows" in clean else "fails"
+    return fmt(r["cpu"], timeout)
 
 
 def ratio(peer, ours, timeout):
@@ -170,6 +187,8 @@ def main():
     ap.add_argument("--shapes", default="dense,bdc3")
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--timeout", type=float, default=60)
+    ap.add_argument("--singular-timeout", type=float, default=None,
+                    help="Singular's CPU limit (default: --timeout)")
     ap.add_argument("--ours-timeout", type=float, default=600)
     ap.add_argument("--no-singular", action="store_true")
     ap.add_argument("--no-pari", action="store_true")
@@ -186,7 +205,8 @@ def main():
                     f.write(lmx(m))
                 ours = run_lambdamat(a.binary, path, a.ours_timeout)
                 pari = {"cpu": None, "skipped": True} if a.no_pari else run_pari(m, a.timeout)
-                sing = {"cpu": None, "skipped": True} if a.no_singular else run_singular(m, a.timeout)
+                st = a.singular_timeout or a.timeout
+                sing = {"cpu": None, "skipped": True} if a.no_singular else run_singular(m, st)
                 agree = []
                 for name, r in (("PARI", pari), ("Singular", sing)):
                     if "degs" in r and "degs" in ours:
@@ -194,10 +214,10 @@ def main():
                 nontriv = [x for x in ours.get("degs", []) if x > 0]
                 uv = "yes" if ours.get("uv") else "no"
                 mb = f"{ours['kb'] / 1024:.0f}" if "kb" in ours else "–"
-                ps = "–" if pari.get("skipped") else fmt(pari["cpu"], a.timeout)
-                ss = "–" if sing.get("skipped") else fmt(sing["cpu"], a.timeout)
-                pr = "–" if pari.get("skipped") else ratio(pari["cpu"], ours["cpu"], a.timeout)
-                sr = "–" if sing.get("skipped") else ratio(sing["cpu"], ours["cpu"], a.timeout)
+                ps = peer_cell(pari, a.timeout)
+                ss = peer_cell(sing, st)
+                pr = "–" if pari.get("skipped") or "error" in pari else ratio(pari["cpu"], ours["cpu"], a.timeout)
+                sr = "–" if sing.get("skipped") or "error" in sing else ratio(sing["cpu"], ours["cpu"], st)
                 status = "" if ours.get("rc") == 0 else f" (exit {ours.get('rc')})"
                 print(f"| {shape} | {n} | {d} | {fmt(ours['cpu'], a.ours_timeout)}{status} | {mb} | {uv} | {ps} | {pr} | {ss} | {sr} | "
                       f"{', '.join(agree) or '–'}; non-trivial degrees {nontriv} |", flush=True)

@@ -96,7 +96,9 @@ fn scale(c: &mut Criterion) {
 /// The large one-symbol shapes of issue 15: a 200×200 constant matrix
 /// (det/adj mod primes, U = I/det, V = adj, certified), a 200×200 diagonal
 /// and a 50×50 of degree 1 (invariant factors certified without
-/// transforms).
+/// transforms); B·diag·C with two (12×12) and three (16×16 with
+/// transforms, 32×32 without) non-trivial factors; a 2×2 of degree 500
+/// (Bezout route, against PARI's 3.0 s) and a 64×64 of degree 1 (D only).
 fn large(c: &mut Criterion) {
     let mut g = c.benchmark_group("smith_large");
     g.sample_size(10);
@@ -106,6 +108,9 @@ fn large(c: &mut Criterion) {
         "qx_50x50_deg1",
         "bdc_12",
         "bdc3_16",
+        "bdc3_32",
+        "qx_2x2_deg500",
+        "qx_64x64_deg1",
     ] {
         let a = first_matrix(&format!("benches/data/issue15_{case}.lmx"));
         g.bench_function(case, |b| {

@@ -1,15 +1,17 @@
 //! Regression tests for inputs that used to stall the Smith engine (issue
 //! 15), kept small enough to run in seconds: the principal-mode 4×4 in
 //! three symbols that spent minutes in the rational-coefficient PRS gcd,
-//! a 2×2 of degree 100 over Q[x] (the modular inverse in the nonsingular
-//! path), and a 9×9 in two symbols whose minors are too many to enumerate
+//! a 2×2 of degree 100 over Q[x] (now one Bezout identity by a modular
+//! inverse), and a 9×9 in two symbols whose minors are too many to enumerate
 //! (the determinantal mode then goes through one Smith form per symbol);
 //! and the large one-symbol shapes: a constant 60×60 (unimodular path), a
 //! 40×40 diagonal and a dense 40×40 of degree 1 (invariant factors
 //! certified without transforms), and a 12×12 B·diag·C with two
-//! non-trivial invariant factors (gcd of adj and Jacobi minors); and the
+//! non-trivial invariant factors (Hermite basis, with transforms); and the
 //! several-symbol inputs certified from det and adj without elimination
-//! or minors (a 10×10 over Q[x, y], a random 4×4 over Q[x, y, z]).
+//! or minors (a 10×10 over Q[x, y], a random 4×4 over Q[x, y, z]); and a
+//! 24×24 with three non-trivial factors certified without transforms, the
+//! issue's 50×50 of degree 1 without the adjugate.
 
 mod common;
 
@@ -90,7 +92,9 @@ fn principal_and_determinantal_modes_agree_on_the_four_by_four() {
 }
 
 #[test]
-fn qx_two_by_two_of_degree_100_takes_the_modular_nonsingular_path() {
+fn qx_two_by_two_of_degree_100_takes_the_bezout_route() {
+    // One Bezout identity on the first row (modular inverse, early
+    // termination proved by exact division); U·A·V = D certified.
     let v = json(&["smith", "tests/data/issue15_qx_2x2_deg100.lmx"]);
     assert_eq!(v["mode"], "one-symbol");
     assert_eq!(v["verified"], true);
@@ -98,10 +102,15 @@ fn qx_two_by_two_of_degree_100_takes_the_modular_nonsingular_path() {
         v["algorithm"]
             .as_str()
             .expect("text")
-            .starts_with("nonsingular path"),
+            .starts_with("2×2 with a coprime first row"),
         "{}",
         v["algorithm"]
     );
+    assert!(v["U"].is_array() && v["V"].is_array());
+    let names = check_names(&v);
+    for want in ["U·A·V = D", "U unimodular", "V unimodular"] {
+        assert!(names.iter().any(|n| n == want), "{want} missing: {names:?}");
+    }
     let inv = strings(&v["invariant_factors"]);
     assert_eq!(inv[0], "1");
     assert!(inv[1].starts_with("x^200"), "degree 200 expected");
@@ -324,4 +333,56 @@ fn three_nontrivial_factors_get_certified_transforms() {
     assert_eq!(inv[7], "x - 1");
     assert_eq!(inv[8], "x^2 + x - 2");
     assert!(inv[9].starts_with("x^23 "), "{}", inv[9]);
+}
+
+#[test]
+fn three_nontrivial_factors_certified_without_transforms_at_24() {
+    // The bdc3 shape at 24×24: transforms would be huge (the Hermite-basis
+    // route with U, V took 109 s at 32×32), so D alone is certified from
+    // A·B = c·I: f_n = c/gcd(B), deg det A modulo a prime, and the Smith
+    // form of the 3×3 trailing block of a Hermite basis modulo the
+    // repeated part, with L(A) ⊆ L(H) and the degrees adding up.
+    let v = json(&["smith", "tests/data/issue15_bdc3_24.lmx"]);
+    assert_eq!(v["verified"], true);
+    assert!(v["U"].is_null() && v["V"].is_null());
+    let inv = strings(&v["invariant_factors"]);
+    assert_eq!(inv.len(), 24);
+    assert!(inv[..21].iter().all(|f| f == "1"), "{inv:?}");
+    assert_eq!(inv[21], "x - 1");
+    assert_eq!(inv[22], "x^2 + x - 2");
+    // deg det A = 24·1 (B) + 1 + 2 + 3 (chain) + 24·1 (C) = 54, minus 3.
+    assert!(inv[23].starts_with("x^51 "), "{}", inv[23]);
+    let names = check_names(&v);
+    for want in [
+        "A·B = c·I",
+        "f_n = c/gcd(B)",
+        "deg det A = D",
+        "Smith form of the trailing block T",
+        "L(A) ⊆ L(H)",
+    ] {
+        assert!(names.iter().any(|n| n == want), "{want} missing: {names:?}");
+    }
+}
+
+#[test]
+fn fifty_by_fifty_of_degree_one_without_the_adjugate() {
+    // The issue's 50×50 row (> 180 s and 892 MB at first): from 48×48 on
+    // a generic input gets det by images and two coprime (n−1)-minors.
+    let v = json(&["smith", "tests/data/issue15_qx_50x50_deg1.lmx"]);
+    assert_eq!(v["verified"], true);
+    assert!(v["U"].is_null());
+    assert!(
+        v["algorithm"]
+            .as_str()
+            .expect("text")
+            .contains("two (n−1)-minors coprime"),
+        "{}",
+        v["algorithm"]
+    );
+    let inv = strings(&v["invariant_factors"]);
+    assert_eq!(inv.len(), 50);
+    assert!(inv[..49].iter().all(|f| f == "1"));
+    assert!(inv[49].starts_with("x^50 "), "{}", inv[49]);
+    let names = check_names(&v);
+    assert!(names.iter().any(|n| n == "d_(n−1)(A) = 1"), "{names:?}");
 }

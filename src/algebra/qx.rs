@@ -172,11 +172,25 @@ fn add_vec(
     out
 }
 
+/// Whether the Kronecker product beats the schoolbook one: both factors
+/// long, and not one with word-size coefficients against one with
+/// coefficients of many words (packing would pad the small side to the
+/// big side's width, and the schoolbook products are then one-word
+/// scalings).
+pub(crate) fn kronecker_pays(a: &[BigInt], b: &[BigInt]) -> bool {
+    if a.len().min(b.len()) < KRONECKER_MIN_LEN {
+        return false;
+    }
+    let bits = |v: &[BigInt]| v.iter().map(|c| c.bits()).max().unwrap_or(0);
+    let (ba, bb) = (bits(a), bits(b));
+    !(ba.min(bb) <= 64 && ba.max(bb) >= 64 * 16)
+}
+
 pub(crate) fn conv(a: &[BigInt], b: &[BigInt]) -> Vec<BigInt> {
     if a.is_empty() || b.is_empty() {
         return Vec::new();
     }
-    if a.len().min(b.len()) >= KRONECKER_MIN_LEN {
+    if kronecker_pays(a, b) {
         return super::kronecker::mul(a, b);
     }
     let mut c = vec![BigInt::zero(); a.len() + b.len() - 1];

@@ -325,7 +325,7 @@ pub fn mul_cleared(x: &Matrix<QxRing>, y: &Matrix<QxRing>) -> Option<Matrix<QxRi
                 if acc.len() < len {
                     acc.resize(len, BigInt::zero());
                 }
-                if a.len().min(b.len()) >= crate::algebra::qx::KRONECKER_MIN_LEN {
+                if crate::algebra::qx::kronecker_pays(a, b) {
                     for (s, c) in acc.iter_mut().zip(crate::algebra::qx::conv(a, b)) {
                         *s += c;
                     }
@@ -369,7 +369,7 @@ impl ProductCheck<QxRing> for ClearedQx {
 /// degree, so the primitive gcd g over Z (which divides the first entry's
 /// numerator, by Gauss's lemma) keeps its degree mod p, and that degree is
 /// at most the image gcd's. Tries the first three word primes.
-fn coprime_mod_p(entries: &[&QPoly]) -> Option<(u64, usize)> {
+pub(super) fn coprime_mod_p(entries: &[&QPoly]) -> Option<(u64, usize)> {
     let first = entries.first()?;
     for p in crate::algebra::modular::primes().take(3) {
         let f = Fp::new(p);
@@ -396,7 +396,7 @@ fn coprime_mod_p(entries: &[&QPoly]) -> Option<(u64, usize)> {
 
 /// Checks `A·B = c·I` exactly (integer products with cleared
 /// denominators) when `shaped`, and records it in `cert`.
-fn push_product_check(
+pub(super) fn push_product_check(
     cert: &mut Certificate,
     a: &Matrix<QxRing>,
     c: &QPoly,

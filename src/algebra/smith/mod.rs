@@ -17,11 +17,14 @@ pub mod certify_several;
 pub mod detadj;
 pub mod divisors;
 pub mod elimination;
+pub mod hermite_cert;
+pub mod minors_cert;
 pub mod modes;
 pub mod nonsingular;
 pub mod several;
 pub mod small;
 pub mod trailing;
+pub mod two_by_two;
 
 use crate::algebra::matrix::Matrix;
 use crate::algebra::ring::EuclideanDomain;

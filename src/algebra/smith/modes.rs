@@ -256,10 +256,16 @@ pub const DIAGONAL_FORM_ONLY: usize = 32;
 
 /// From this size on, a nonsingular one-symbol input whose (n−1)-th
 /// determinantal divisor is not 1 gets its invariant factors without
-/// transforms when [`super::certify::certify_two_factors`] establishes
+/// transforms when [`super::hermite_cert::certify_factors`] establishes
 /// them (the general elimination with transforms grows fast: 8×8 of
 /// B·diag(1, …, x − 1, (x − 1)(x + 2))·C in 0.5 s, 12×12 in 13.6 s).
 pub const TWO_FACTOR_MIN: usize = 10;
+
+/// Above this degree bound of det A (least of the sums of row and column
+/// degrees), an input with several non-trivial invariant factors gets D
+/// alone: the Hermite-basis transforms took 10.7 s on B·diag(…)·C 16×16 of
+/// degree 7 (bound 112), 6.1 s at 20×20 of degree 5 (bound 100).
+pub const NO_HERMITE_TRANSFORM_DEGREE: usize = 100;
 
 /// The diagonal 1, …, 1, f.
 fn last_only(a: &Matrix<QxRing>, f: QPoly) -> Vec<QPoly> {
@@ -268,8 +274,8 @@ fn last_only(a: &Matrix<QxRing>, f: QPoly) -> Vec<QPoly> {
     v
 }
 
-/// The form-only report with two non-trivial invariant factors, when
-/// [`super::certify::certify_two_factors`] establishes them.
+/// The form-only report with two or more non-trivial invariant factors,
+/// when [`super::hermite_cert::certify_factors`] establishes them.
 #[allow(clippy::too_many_arguments)]
 fn two_factor_report(
     name: &str,
@@ -281,9 +287,10 @@ fn two_factor_report(
     note: String,
     opts: &SmithOptions,
 ) -> Option<SmithReport> {
-    opts.progress
-        .phase("certifying the invariant factors (A·B = c·I, gcd of adj, Jacobi minors)");
-    let (cert, factors) = super::certify::certify_two_factors(au, c, b);
+    opts.progress.phase(
+        "certifying the invariant factors (A·B = c·I, gcd of B, deg det A, Hermite basis modulo the repeated part)",
+    );
+    let (cert, factors) = super::hermite_cert::certify_factors(au, c, b);
     if !cert.verified() || factors.len() != au.rows() {
         return None;
     }
@@ -294,7 +301,7 @@ fn two_factor_report(
         factors,
         cert,
         ring.to_string(),
-        "det and adj by images mod word primes (CRT above a proved bound); invariant factors from A·B = c·I: f_(n−1) = gcd of adj's entries (exact Euclid, quotients coprime mod p), f_n = det/f_(n−1), d_(n−2) = 1 from 2×2 minors of adj divided by det (Jacobi)",
+        super::hermite_cert::ALGORITHM,
         note,
         opts,
     ))
@@ -334,7 +341,7 @@ fn last_factor_report(
 
 /// A one-symbol report with D alone (`factors` its diagonal), certified by
 /// [`super::certify::certify_last_factor`] or
-/// [`super::certify::certify_two_factors`].
+/// [`super::hermite_cert::certify_factors`].
 #[allow(clippy::too_many_arguments)]
 fn form_only_report(
     name: &str,
@@ -532,6 +539,22 @@ fn one_symbol(
     {
         return Ok(report);
     }
+    if let Some((cert, f)) = super::minors_cert::certify_generic(&au) {
+        let n = au.rows();
+        let why = format!(
+            "{note}; transforms omitted for a {n}×{n} input of positive degree (U would be dense, with coefficients of the size of det's): the invariant factors alone are certified"
+        );
+        let (alg, f) = (super::minors_cert::ALGORITHM, last_only(&au, f));
+        return Ok(form_only_report(
+            name, a, &au, f, cert, ring, alg, why, opts,
+        ));
+    }
+    if let Some(d) = super::two_by_two::bezout_2x2(&au) {
+        let alg = super::two_by_two::ALGORITHM;
+        let check = super::two_by_two::RightFirst;
+        let mode = Mode::OneSymbol;
+        return Ok(generic_report(name, a, &au, d, alg, mode, ring, note, opts, &check)?.0);
+    }
     let (dec, alg) = match super::nonsingular::try_fast(&au, TRANSFORM_LIMIT_BITS) {
         Some(FastPath::Decomposition(mut d)) => {
             super::trailing::integral_rows(&mut d);
@@ -541,20 +564,24 @@ fn one_symbol(
             (d, NONSINGULAR_ALGORITHM)
         }
         Some(FastPath::FormOnly { c, b, bits }) => {
-            if let Some(report) = last_factor_report(
-                name,
-                a,
-                &au,
-                (&c, &b),
-                &ring,
-                "det and adj by images mod word primes (CRT above a proved bound); invariant factors from A·B = c·I, the gcd of B's entries and deg c",
-                format!(
-                    "{note}; transforms omitted: U would hold about {:.1e} digits of coefficients (limit {:.1e}); the invariant factors alone are certified",
-                    bits as f64 * std::f64::consts::LOG10_2,
-                    TRANSFORM_LIMIT_BITS as f64 * std::f64::consts::LOG10_2
-                ),
-                opts,
-            ) {
+            // Without coprime entries in B that certificate fails anyway,
+            // after an expensive product check.
+            if super::hermite_cert::entries_coprime(&b)
+                && let Some(report) = last_factor_report(
+                    name,
+                    a,
+                    &au,
+                    (&c, &b),
+                    &ring,
+                    "det and adj by images mod word primes (CRT above a proved bound); invariant factors from A·B = c·I, the gcd of B's entries and deg c",
+                    format!(
+                        "{note}; transforms omitted: U would hold about {:.1e} digits of coefficients (limit {:.1e}); the invariant factors alone are certified",
+                        bits as f64 * std::f64::consts::LOG10_2,
+                        TRANSFORM_LIMIT_BITS as f64 * std::f64::consts::LOG10_2
+                    ),
+                    opts,
+                )
+            {
                 return Ok(report);
             }
             let why = format!(
@@ -564,14 +591,32 @@ fn one_symbol(
             if let Some(report) = two_factor_report(name, a, &au, &c, &b, &ring, why, opts) {
                 return Ok(report);
             }
-            // Three or more non-trivial factors: the Hermite-basis route
-            // (large transforms, but far cheaper than the elimination).
+            // The form-only certificate declined (e.g. a trailing block
+            // beyond its size): the Hermite-basis route with (large)
+            // transforms, far cheaper than the elimination.
             match super::trailing::trailing_hermite(&au, &c, &b) {
                 Some(d) => (d, TRAILING_ALGORITHM),
                 None => (SmithDecomposition::new(&au), ELIMINATION_ALGORITHM),
             }
         }
         Some(FastPath::NoHermite { c, b }) => {
+            let big = super::hermite_cert::degree_bound(&au) > NO_HERMITE_TRANSFORM_DEGREE;
+            if big
+                && let Some(report) = two_factor_report(
+                    name,
+                    a,
+                    &au,
+                    &c,
+                    &b,
+                    &ring,
+                    format!(
+                        "{note}; transforms omitted: several non-trivial invariant factors and a degree bound of det above {NO_HERMITE_TRANSFORM_DEGREE} (the Hermite-basis transforms take over 10 s there); the invariant factors alone are certified"
+                    ),
+                    opts,
+                )
+            {
+                return Ok(report);
+            }
             opts.progress
                 .phase("Hermite basis from A·B = c·I: rank-one part and HNF modulo the repeated part, Smith of the trailing block");
             if let Some(d) = super::trailing::trailing_hermite(&au, &c, &b) {

@@ -264,7 +264,7 @@ pub fn try_fast(a: &Matrix<QxRing>, limit_bits: u64) -> Option<FastPath> {
         for (k, (bk, lk)) in adj_row.iter().zip(&last).enumerate() {
             let b = QPoly::from_ints(bk.clone());
             let num = r.add(&b, &r.mul(&hi, lk));
-            w.set(i, k, r.div_exact(&num, &det_q)?);
+            w.set(i, k, super::two_by_two::exact_quotient(&r, &num, &det_q)?);
         }
         h.push(hi);
     }
@@ -292,7 +292,7 @@ pub fn try_fast(a: &Matrix<QxRing>, limit_bits: u64) -> Option<FastPath> {
         for (k, hk) in h.iter().enumerate() {
             acc = r.sub(&acc, &r.mul(a.get(i, k), hk));
         }
-        u_inv.set(i, n - 1, r.div_exact(&acc, &f)?);
+        u_inv.set(i, n - 1, super::two_by_two::exact_quotient(&r, &acc, &f)?);
     }
     Some(FastPath::Decomposition(SmithDecomposition {
         d,

@@ -174,6 +174,56 @@ pub fn hnf_mod(r: &QxRing, rows: &[Vec<QPoly>], m: &QPoly) -> Option<Vec<Vec<QPo
     Some(h)
 }
 
+/// `f = c_loc·c_gen` (both monic, f monic): `c_loc` the part of f
+/// supported on the roots of `g` (with f's multiplicities), `c_gen`
+/// coprime to g.
+pub fn repeated_part(r: &QxRing, f: &QPoly, g: &QPoly) -> Option<(QPoly, QPoly)> {
+    let mut c_loc = r.one();
+    let mut c_gen = f.clone();
+    let mut u = gcd_q(r, &c_gen, g);
+    while u.degree().is_some_and(|d| d > 0) {
+        c_loc = r.mul(&c_loc, &u);
+        c_gen = r.div_exact(&c_gen, &u)?;
+        u = gcd_q(r, &c_gen, &u);
+    }
+    Some((r.normalize(&c_loc), r.normalize(&c_gen)))
+}
+
+/// The Hermite basis of the row lattice `L(A) + c_loc·Q[x]ⁿ` ([`hnf_mod`],
+/// `c_loc` monic and a multiple of that lattice's determinant), reduced:
+/// entries above a unit pivot cleared, entries above a trailing pivot
+/// reduced modulo it, all modulo `c_loc`. Returns the rows and `first`,
+/// the index of the first pivot that is not 1 (rows before it are
+/// `e_i + (entries in columns ≥ first)`).
+pub fn local_hermite(a: &Matrix<QxRing>, c_loc: &QPoly) -> Option<(Vec<Vec<QPoly>>, usize)> {
+    let r = a.ring.clone();
+    let n = a.rows();
+    let rows: Vec<Vec<QPoly>> = (0..n).map(|i| a.row(i).to_vec()).collect();
+    let mut h_loc = hnf_mod(&r, &rows, c_loc)?;
+    let first = (0..n).find(|&i| h_loc[i][i].degree() != Some(0))?;
+    // Pivot columns in increasing order, so later columns are reduced
+    // after they change.
+    for j in 0..n {
+        let (top, rest) = h_loc.split_at_mut(j);
+        let pivot = &rest[0];
+        for row in top.iter_mut() {
+            if row[j].is_zero() || row[j].degree() < pivot[j].degree() {
+                continue;
+            }
+            let q = if j < first {
+                row[j].clone()
+            } else {
+                r.div_rem(&row[j], &pivot[j]).0
+            };
+            for t in j..n {
+                row[t] = r.sub(&row[t], &r.mul(&q, &pivot[t]));
+            }
+            reduce_row(&r, row, c_loc);
+        }
+    }
+    Some((h_loc, first))
+}
+
 /// The decomposition described in the module documentation, or `None`.
 /// `c = det Ã` and `B = adj(Ã)·Δ` with `A·B = c·I`.
 pub fn trailing_hermite(
@@ -195,48 +245,14 @@ pub fn trailing_hermite(
             return None;
         }
     }
-    // f = c_loc·c_gen, c_gen coprime to g.
-    let mut c_loc = r.one();
-    let mut c_gen = f.clone();
-    let mut u = gcd_q(&r, &c_gen, &g);
-    while u.degree().is_some_and(|d| d > 0) {
-        c_loc = r.mul(&c_loc, &u);
-        c_gen = r.div_exact(&c_gen, &u)?;
-        u = gcd_q(&r, &c_gen, &u);
-    }
+    let (c_loc, c_gen) = repeated_part(&r, &f, &g)?;
     if c_loc.degree()? > MAX_LOCAL_DEGREE {
         return None;
     }
-    let c_gen = r.normalize(&c_gen);
-    let c_loc = r.normalize(&c_loc);
-    // Modulo c_loc: the Hermite basis of L + c_loc·Q[x]ⁿ.
-    let rows: Vec<Vec<QPoly>> = (0..n).map(|i| a.row(i).to_vec()).collect();
-    let mut h_loc = hnf_mod(&r, &rows, &c_loc)?;
-    let first = (0..n).find(|&i| h_loc[i][i].degree() != Some(0))?;
+    let (h_loc, first) = local_hermite(a, &c_loc)?;
     let k = n - first;
     if !(2..=MAX_TRAILING).contains(&k) {
         return None;
-    }
-    // Hermite reduction modulo c_loc: entries above a unit pivot cleared,
-    // entries above a trailing pivot reduced modulo it (pivot columns in
-    // increasing order, so later columns are reduced after they change).
-    for j in 0..n {
-        let (top, rest) = h_loc.split_at_mut(j);
-        let pivot = &rest[0];
-        for row in top.iter_mut() {
-            if row[j].is_zero() || row[j].degree() < pivot[j].degree() {
-                continue;
-            }
-            let q = if j < first {
-                row[j].clone()
-            } else {
-                r.div_rem(&row[j], &pivot[j]).0
-            };
-            for t in j..n {
-                row[t] = r.sub(&row[t], &r.mul(&q, &pivot[t]));
-            }
-            reduce_row(&r, row, &c_loc);
-        }
     }
     // H = [[I, h], [0, T]]: row i (< n) is d_i·e_i plus h_loc's entries in
     // the trailing columns before the last; the last entry x is glued by
@@ -301,7 +317,7 @@ pub fn trailing_hermite(
                     acc = r.add(&acc, &r.mul(ht, b.get(t, col)));
                 }
             }
-            w.set(i, col, r.div_exact(&acc, c)?);
+            w.set(i, col, super::two_by_two::exact_quotient(&r, &acc, c)?);
         }
     }
     // Smith form of the trailing block T.
@@ -346,7 +362,7 @@ pub fn trailing_hermite(
         let dj = d.get(j, j).clone();
         for i in 0..n {
             let e = r.dot(&mut (0..n).map(|q| (a.get(i, q), v.get(q, j))));
-            u_inv.set(i, j, r.div_exact(&e, &dj)?);
+            u_inv.set(i, j, super::two_by_two::exact_quotient(&r, &e, &dj)?);
         }
     }
     let mut dec = SmithDecomposition {
