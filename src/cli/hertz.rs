@@ -201,13 +201,14 @@ fn limit_info(l: &Limit) -> String {
             compliance_asymptotic,
             ..
         } => format!(
-            "small-friction limit (information, not refined): c = C₀·exp(−a/μ)·(1 + O(μ)), a = {exponent:.4} (derived) gives c ≈ {lo:.2e}–{hi:.2e} (the range is the measured O(μ) term); P* = 1 + γμ(1−2/π) + O(μ²) = {compliance_asymptotic:.8} + O(μ²) (derived)"
+            "small-friction limit (information, not refined): c = C₀·exp(−a/μ)·(1 + O(μ)), a = {exponent:.4} (derived) gives c ≈ {lo:.2e}–{hi:.2e} (the range is the measured O(μ) term); P* = 1 + γμ(1−2/π) + γ²Jμ² + O(μ³) = {compliance_asymptotic:.8} + O(μ³) (derived)"
         ),
         Limit::ThinSlip {
-            one_minus_c_infinity_heuristic: (lo, hi),
+            one_minus_c_infinity,
+            compliance_infinity,
             compliance_full_stick,
         } => format!(
-            "near-full stick (information): as μ → ∞ a slip annulus 1 − c∞ ≈ {lo:.0e}–{hi:.0e} remains (heuristic), and P* < artanh(γ)/γ = {compliance_full_stick:.10} (full stick)"
+            "near-full stick (information, not refined): as μ → ∞ a slip annulus 1 − c∞ = δ₀(1 − δ₀/2 + O(δ₀²)) = {one_minus_c_infinity:.3e} remains, δ₀ = 8·exp(−π/(2ε₀)) (derived), and P* → P*ₛ(1 − δ₀/2) = {compliance_infinity:.10} < artanh(γ)/γ = {compliance_full_stick:.10} (full stick)"
         ),
         Limit::BeyondLargeFriction { .. } => String::new(),
     }

@@ -302,6 +302,33 @@ pub fn large_friction_asymptotics(gamma: f64) -> (f64, f64) {
 }
 
 impl Limit {
+    /// The small-friction limit at `(γ, μ)` with its derived asymptotics
+    /// (docs/hertz_asymptotics.md): c to O(μ), P* to O(μ³).
+    fn small_friction(gamma: f64, mu: f64) -> Limit {
+        let (a, c0) = small_friction_asymptotics(gamma);
+        let (klo, khi) = SMALL_FRICTION_CORRECTION;
+        let c_at = |k: f64| c0 * (-a / mu + k * gamma * mu).exp();
+        Limit::SmallFriction {
+            exponent: a,
+            c_asymptotic: (c_at(klo), c_at(khi)),
+            compliance_asymptotic: 1.0
+                + gamma * mu * (1.0 - FRAC_2_PI)
+                + gamma * gamma * SMALL_FRICTION_COMPLIANCE_J * mu * mu,
+            mu_resolved: a / (c0 / RESOLVED_STICK).ln(),
+        }
+    }
+
+    /// The near-full-stick limit at `γ` with its derived values as μ → ∞.
+    fn thin_slip(gamma: f64) -> Limit {
+        let (one_minus_c_infinity, _) = large_friction_asymptotics(gamma);
+        let full_stick = gamma.atanh() / gamma;
+        Limit::ThinSlip {
+            one_minus_c_infinity,
+            compliance_infinity: full_stick * (1.0 - one_minus_c_infinity / 2.0),
+            compliance_full_stick: full_stick,
+        }
+    }
+
     /// The limit a refusal of `(nu, given)` lies in, if any: only the
     /// split solver's structured "root at an end" refusals
     /// ([`PlanError::RootAtEnd`]) and the front's own spurious-root refusal
@@ -333,26 +360,16 @@ impl Limit {
         match given {
             Given::Mu(mu) if mu > 0.0 && mu.is_finite() => {
                 if no_sign_change && at_end.is_some_and(|r| r.end == RangeEnd::Upper) {
-                    let (one_minus_c_infinity, _) = large_friction_asymptotics(gamma);
-                    let full_stick = gamma.atanh() / gamma;
-                    return Some(Limit::ThinSlip {
-                        one_minus_c_infinity,
-                        compliance_infinity: full_stick * (1.0 - one_minus_c_infinity / 2.0),
-                        compliance_full_stick: full_stick,
-                    });
+                    return Some(Limit::thin_slip(gamma));
                 }
-                let (a, c0) = small_friction_asymptotics(gamma);
-                let (klo, khi) = SMALL_FRICTION_CORRECTION;
-                let c_at = |k: f64| c0 * (-a / mu + k * gamma * mu).exp();
-                let c_hi = c_at(khi);
-                (c_hi <= 1e-8).then(|| Limit::SmallFriction {
-                    exponent: a,
-                    c_asymptotic: (c_at(klo), c_hi),
-                    compliance_asymptotic: 1.0
-                        + gamma * mu * (1.0 - FRAC_2_PI)
-                        + gamma * gamma * SMALL_FRICTION_COMPLIANCE_J * mu * mu,
-                    mu_resolved: a / (c0 / RESOLVED_STICK).ln(),
-                })
+                let small = Limit::small_friction(gamma, mu);
+                match small {
+                    Limit::SmallFriction {
+                        c_asymptotic: (_, c_hi),
+                        ..
+                    } if c_hi <= 1e-8 => Some(small),
+                    _ => None,
+                }
             }
             Given::C(_) => {
                 let r = at_end.filter(|_| no_sign_change)?;
@@ -374,21 +391,8 @@ impl Limit {
         }
         let gamma = gamma_of(nu);
         match (given, end) {
-            (Given::Mu(mu), RangeEnd::Lower) if mu > 0.0 => {
-                let (a, c0) = small_friction_asymptotics(gamma);
-                let (klo, khi) = SMALL_FRICTION_CORRECTION;
-                let c_at = |k: f64| c0 * (-a / mu + k * gamma * mu).exp();
-                Some(Limit::SmallFriction {
-                    exponent: a,
-                    c_asymptotic: (c_at(klo), c_at(khi)),
-                    compliance_asymptotic: 1.0 + gamma * mu * (1.0 - FRAC_2_PI),
-                    mu_resolved: a / (c0 / RESOLVED_STICK).ln(),
-                })
-            }
-            (Given::Mu(_), RangeEnd::Upper) => Some(Limit::ThinSlip {
-                one_minus_c_infinity_heuristic: thin_slip_heuristic(gamma),
-                compliance_full_stick: gamma.atanh() / gamma,
-            }),
+            (Given::Mu(mu), RangeEnd::Lower) if mu > 0.0 => Some(Limit::small_friction(gamma, mu)),
+            (Given::Mu(_), RangeEnd::Upper) => Some(Limit::thin_slip(gamma)),
             _ => None,
         }
     }
