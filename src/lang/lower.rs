@@ -7,7 +7,7 @@
 //! becomes an internal error. It must not check user errors itself.
 
 use num_rational::BigRational;
-use num_traits::{One, ToPrimitive, Zero};
+use num_traits::{One, Signed, ToPrimitive, Zero};
 
 use super::ast::{BinOp, Expr, ExprKind, File, Ident, IntVar, Sign, Stmt};
 use super::error::{ErrorKind, LangError};
@@ -661,14 +661,18 @@ pub(crate) fn constant(e: &Expr, scope: &Scope) -> Option<BigRational> {
                     (!y.is_zero()).then(|| x / y)
                 }
                 BinOp::Pow => {
-                    let (neg, lit) = match &b.kind {
-                        ExprKind::Neg(inner) => (true, inner.as_ref()),
-                        _ => (false, b.as_ref()),
-                    };
-                    let k = match &lit.kind {
-                        ExprKind::Number(q) if q.is_integer() => q.to_integer().to_u32()?,
-                        _ => return None,
-                    };
+                    // Any constant integer exponent folds, however it is
+                    // written (`2^(-24)` and `2^(-12*2)` lower alike, so
+                    // the printed program reads back as the same program).
+                    let e = constant(b, scope)?;
+                    if !e.is_integer() {
+                        return None;
+                    }
+                    let neg = e.is_negative();
+                    let k = e.abs().to_integer().to_u32()?;
+                    if k > super::validate::MAX_EXPONENT {
+                        return None;
+                    }
                     let mut acc = BigRational::one();
                     for _ in 0..k {
                         acc *= &x;

@@ -6,6 +6,7 @@
 use std::collections::HashMap;
 
 use num_rational::BigRational;
+use num_traits::Signed;
 
 use super::ast::{BinOp, Expr, ExprKind, Span};
 
@@ -182,12 +183,16 @@ impl Scope {
             ),
             ExprKind::Neg(a) => self.is_rational_const(a),
             ExprKind::Binary(BinOp::Pow, a, b) => {
-                let lit = match &b.kind {
-                    ExprKind::Neg(inner) => inner.as_ref(),
-                    _ => b.as_ref(),
-                };
-                matches!(&lit.kind, ExprKind::Number(q) if q.is_integer())
-                    && self.is_rational_const(a)
+                // Any constant integer exponent within the limit, however
+                // written (`2^(-24)` or `2^(-12*2)`), as `lower::constant`
+                // folds it: the printed program then reads back the same.
+                self.is_rational_const(a)
+                    && self.is_rational_const(b)
+                    && super::lower::constant(b, self).is_some_and(|q| {
+                        q.is_integer()
+                            && q.abs().to_integer()
+                                <= num_bigint::BigInt::from(super::validate::MAX_EXPONENT)
+                    })
             }
             ExprKind::Binary(_, a, b) => self.is_rational_const(a) && self.is_rational_const(b),
             _ => false,
