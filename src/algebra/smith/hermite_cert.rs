@@ -118,37 +118,6 @@ pub fn degree_bound(a: &Matrix<QxRing>) -> usize {
     row_sum.min(col_sum)
 }
 
-/// Determinant mod p of an n×n matrix (row-major), by elimination.
-fn det_mod(f: Fp, m: &mut [u64], n: usize) -> u64 {
-    let mut det = 1u64;
-    for k in 0..n {
-        let Some(p) = (k..n).find(|&i| m[i * n + k] != 0) else {
-            return 0;
-        };
-        if p != k {
-            for j in 0..n {
-                m.swap(p * n + j, k * n + j);
-            }
-            det = f.neg(det);
-        }
-        let pk = m[k * n + k];
-        det = f.mul(det, pk);
-        let inv = f.inv(pk);
-        for i in k + 1..n {
-            let q = m[i * n + k];
-            if q == 0 {
-                continue;
-            }
-            let q = f.mul(q, inv);
-            for j in k..n {
-                let t = f.mul(q, m[k * n + j]);
-                m[i * n + j] = f.sub(m[i * n + j], t);
-            }
-        }
-    }
-    det
-}
-
 /// The degree of the polynomial of degree ≤ N taking `values[i]` at
 /// `i = 0, …, N` over Z_p (Newton's divided differences; `None` for zero).
 fn degree_from_values(f: Fp, values: &[u64]) -> Option<usize> {
@@ -201,7 +170,7 @@ fn det_degree(a: &Matrix<QxRing>, b: &Matrix<QxRing>, c: &QPoly) -> Option<(usiz
         for (s, e) in m.iter_mut().zip(&img) {
             *s = modular::eval(f, e, x);
         }
-        values.push(det_mod(f, &mut m, n));
+        values.push(super::minors_cert::det_mod(f, &mut m, n));
     }
     Some((degree_from_values(f, &values)?, p))
 }

@@ -64,7 +64,9 @@ fn bound(m: &[Vec<Vec<BigInt>>], rows: &[usize], cols: &[usize]) -> usize {
     r.min(c)
 }
 
-fn det_mod(f: Fp, m: &mut [u64], n: usize) -> u64 {
+/// Determinant mod p of an n×n matrix (row-major, overwritten), by
+/// elimination with prepared multipliers.
+pub(super) fn det_mod(f: Fp, m: &mut [u64], n: usize) -> u64 {
     let mut det = 1u64;
     for k in 0..n {
         let Some(p) = (k..n).find(|&i| m[i * n + k] != 0) else {
