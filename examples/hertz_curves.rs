@@ -86,7 +86,7 @@ fn ten_digits(x: f64) -> String {
 /// A refusal for a table cell: the limit it names, else its last clause.
 fn short(e: &str) -> String {
     if e.contains("closer to the end 1") {
-        return "refused: 1 − c below 1e-10 (the slip annulus is thinner than the solver resolves)"
+        return "refused: 1 − c below about 1e-12 (the slip annulus is thinner than the solver resolves)"
             .into();
     }
     if e.contains("closer than") {
