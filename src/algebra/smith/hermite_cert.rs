@@ -438,29 +438,7 @@ mod tests {
         QPoly::from_ints(c.iter().map(|&x| BigInt::from(x)).collect())
     }
 
-    /// B·diag(1, …, 1, chain)·C with B, C seeded integer matrices of degree 1.
-    fn planted(n: usize, chain: &[QPoly], seed: u64) -> Matrix<QxRing> {
-        let r = QxRing::new("x");
-        let mut s = seed;
-        let mut next = || {
-            s = s
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            ((s >> 33) % 19) as i64 - 9
-        };
-        let mut rand = || {
-            let data: Vec<QPoly> = (0..n * n).map(|_| p(&[next(), next()])).collect();
-            Matrix::new(r.clone(), n, n, data)
-        };
-        let bm = rand();
-        let cm = rand();
-        let mut dm = Matrix::identity(r.clone(), n);
-        for (s, f) in chain.iter().enumerate() {
-            let i = n - chain.len() + s;
-            dm.set(i, i, f.clone());
-        }
-        bm.mul(&dm).and_then(|x| x.mul(&cm)).expect("shapes")
-    }
+    use crate::algebra::smith::trailing::tests::planted;
 
     fn cb(a: &Matrix<QxRing>) -> (QPoly, Matrix<QxRing>) {
         match try_fast(a, 0) {

@@ -426,7 +426,7 @@ fn make_primitive(row: &mut [QPoly]) {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
     use num_bigint::BigInt;
 
@@ -435,8 +435,8 @@ mod tests {
     }
 
     /// B·diag(1, …, 1, chain)·C with B, C small seeded integer matrices of
-    /// degree 1.
-    fn planted(n: usize, chain: &[QPoly], seed: u64) -> Matrix<QxRing> {
+    /// degree 1 (shared with `hermite_cert`'s tests).
+    pub(crate) fn planted(n: usize, chain: &[QPoly], seed: u64) -> Matrix<QxRing> {
         let r = QxRing::new("x");
         let mut s = seed;
         let mut next = || {
