@@ -317,6 +317,14 @@ fn text(s: &HertzResult, given_c: bool) -> String {
                 .collect::<Vec<_>>()
                 .join(", ")
         );
+    } else if let Some(u) = &s.unrefined_at_c {
+        let _ = writeln!(
+            o,
+            "          at c: not checked: {}; the last level there gives shear jump q(c⁻) - μp(c) = {:.1e}, E2 residual at c (÷c) = {:.1e}",
+            u.describe(),
+            s.shear_jump_at_c,
+            s.residual_c
+        );
     } else {
         let _ = writeln!(
             o,
