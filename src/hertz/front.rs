@@ -237,21 +237,18 @@ where
     F: Fn(&Fields<'a>) -> f64,
 {
     let prev = lf.previous.as_ref()?;
-    let width = |f: &Fields<'a>, side: Approach| {
+    let shape = |f: &Fields<'a>, side: Approach| {
         let c = own_c(f);
-        f.panel(c, side).map(|(a, b)| b - a)
+        f.panel_shape(c, side).map(|(a, b, n)| (b - a, n))
     };
-    let same = |a: f64, b: f64| (a - b).abs() <= 1e-9 * a.abs().max(b.abs());
-    let below = width(&lf.last, Approach::Below)?;
-    let above = width(&lf.last, Approach::Above)?;
-    let unchanged = |w: f64, side| width(prev, side).is_some_and(|v| same(w, v));
-    (unchanged(below, Approach::Below) || unchanged(above, Approach::Above)).then(|| {
-        UnrefinedAtC {
-            panel_below: below,
-            panel_above: above,
-            one_minus_c: 1.0 - own_c(&lf.last),
-            jump_relative,
-        }
+    let below = shape(&lf.last, Approach::Below)?;
+    let above = shape(&lf.last, Approach::Above)?;
+    let unchanged = |w: (f64, usize), side| shape(prev, side).is_some_and(|v| same_shape(w, v));
+    (unchanged(below, Approach::Below) || unchanged(above, Approach::Above)).then(|| UnrefinedAtC {
+        panel_below: below.0,
+        panel_above: above.0,
+        one_minus_c: 1.0 - own_c(&lf.last),
+        jump_relative,
     })
 }
 
@@ -281,6 +278,13 @@ fn beyond_c_infinity(
             u.describe()
         ))
     }))
+}
+
+/// Two panels `(width, nodes)` of two levels are the same discretisation:
+/// the same node count and widths equal to 1e-9 (each level's panels sit
+/// at its own c, which moves the ends by rounding).
+fn same_shape(a: (f64, usize), b: (f64, usize)) -> bool {
+    a.1 == b.1 && (a.0 - b.0).abs() <= 1e-9 * a.0.abs().max(b.0.abs())
 }
 
 fn invalid(s: String) -> PlanError {
@@ -973,6 +977,16 @@ impl HertzResult {
             }
         };
         let u_prev = other(&lf.previous, &flat)?;
+        let frozen = |x: f64| {
+            let shape = |f: &Fields| {
+                f.panel_shape(x, Approach::Above)
+                    .map(|(a, b, n)| (b - a, n))
+            };
+            match (&lf.previous, shape(&lf.last)) {
+                (Some(prev), Some(last)) => shape(prev).is_some_and(|v| same_shape(last, v)),
+                _ => false,
+            }
+        };
         let mut at = 0;
         xs.iter()
             .zip(&windows)
@@ -995,16 +1009,20 @@ impl HertzResult {
                 if let Some(end) = lf.moving_end(x, Approach::Above) {
                     u_err += LevelFields::shift_term(x, end, u_last[range.start], 0.0);
                 }
+                // Where the panel holding x is the same on both levels (the
+                // grading toward c or 1 stopped, see `UnrefinedAtC`), their
+                // difference at x is no estimate.
+                let no = |e: f64| if frozen(x) { f64::INFINITY } else { e };
                 Ok(Sample {
                     x,
                     p: p.value,
-                    p_err: p.error,
+                    p_err: no(p.error),
                     q: q.value,
-                    q_err: q.error,
+                    q_err: no(q.error),
                     mu_p: mu_p.value,
-                    mu_p_err: mu_p.error,
+                    mu_p_err: no(mu_p.error),
                     u: u_last[range.start],
-                    u_err,
+                    u_err: no(u_err),
                 })
             })
             .collect()

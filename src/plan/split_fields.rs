@@ -300,6 +300,14 @@ impl<'a> Fields<'a> {
     /// The smallest panel of this level's bases that contains `x`
     /// (approached from `side`), as `(a, b)`.
     pub fn panel(&self, x: f64, side: Approach) -> Option<(f64, f64)> {
+        self.panel_shape(x, side).map(|(a, b, _)| (a, b))
+    }
+
+    /// The smallest panel containing `x` (from `side`), as in
+    /// [`Fields::panel`], with its number of nodes: `(a, b, n)`. Two
+    /// levels with the same shape there have the same discretisation at
+    /// `x`, so their difference there holds only what other panels changed.
+    pub fn panel_shape(&self, x: f64, side: Approach) -> Option<(f64, f64, usize)> {
         self.d
             .bases
             .iter()
@@ -312,7 +320,7 @@ impl<'a> Fields<'a> {
                         Approach::Below => x > p.a && x <= p.b,
                         Approach::Above => x >= p.a && x < p.b,
                     })
-                    .map(|p| (p.a, p.b))
+                    .map(|p| (p.a, p.b, p.nodes.len()))
             })
             .min_by(|u, v| (u.1 - u.0).total_cmp(&(v.1 - v.0)))
     }
