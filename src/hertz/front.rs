@@ -266,7 +266,7 @@ fn beyond_c_infinity(
     scalars: &[crate::plan::split_solve::Estimate],
     u: &UnrefinedAtC,
 ) -> Result<Option<PlanError>, PlanError> {
-    if !matches!(given, Given::Mu(_)) || !(nu > -1.0 && nu < 0.5) || c <= 0.5 {
+    if !(matches!(given, Given::Mu(_)) && nu > -1.0 && nu < 0.5 && c > 0.5) {
         return Ok(None);
     }
     let (one_minus_c_inf, _) = large_friction_asymptotics(gamma);
