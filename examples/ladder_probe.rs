@@ -5,7 +5,9 @@
 //! and `dc ≈ −ΔB/(dB/dc)`, the error of c that ΔB implies. It found the
 //! parity effect of the degree cap at c → 1 (issue 13's hand-over note:
 //! with one node more per level the error of P alternates in size
-//! between levels, so the honest estimate needs extra levels).
+//! between levels, so the honest estimate needed extra levels; the
+//! default ladder now steps the cap by two, so `nmax2` and `layers3` are
+//! the default and `nmax+1` shows the old parity).
 //!
 //! ```text
 //! cargo run --release --example ladder_probe -- NU MU C [VARIANT]

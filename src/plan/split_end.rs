@@ -49,8 +49,7 @@ use serde::Serialize;
 use super::error::{EndReason, PlanError, RangeEnd, RootAtEnd};
 use super::split::{SplitLevel, SplitProblem};
 use super::split_solve::{
-    Estimate, Level, S_LIMIT, S_LIMIT_LO, SplitOptions, SplitSolution, history, level_estimate,
-    report,
+    Estimate, Level, S_LIMIT, S_LIMIT_LO, SplitOptions, SplitSolution, estimate_of, report,
 };
 
 /// An answer at an end of a scalar's range: the scalar is bounded, not
@@ -322,13 +321,14 @@ pub fn answer_at_end(
         let lvl = SplitLevel::level(k);
         let (outputs, coefficients, d) = values_at(&problem, x1, &lvl)?;
         let this = Level {
+            dim: SplitProblem::size(&d),
             scalars: vec![x1],
             slope: 0.0,
             outputs,
             coefficients,
         };
         let est = (0..n_out)
-            .map(|i| level_estimate(&history(&levels, &this, &|l| &l.outputs, i)))
+            .map(|i| estimate_of(&levels, &this, &|l| &l.outputs, i))
             .fold(0.0f64, f64::max);
         let done = !levels.is_empty() && est + worst0 <= opts.tol;
         if done || k == opts.max_level {
