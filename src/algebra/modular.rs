@@ -89,7 +89,7 @@ impl Fp {
     /// `a⁻¹` (`a` nonzero), by the extended Euclidean algorithm (several
     /// times faster than `a^(p−2)`).
     pub fn inv(self, a: u64) -> u64 {
-        debug_assert!(a % self.p != 0);
+        debug_assert!(!a.is_multiple_of(self.p));
         // |t| ≤ p < 2^62 throughout, so i64 suffices.
         let (mut r0, mut r1) = (self.p as i64, (a % self.p) as i64);
         let (mut t0, mut t1) = (0i64, 1i64);

@@ -515,8 +515,8 @@ impl EuclideanDomain for QxRing {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::algebra::rational::{q, qi};
     use crate::algebra::print::{PrintOptions, print};
+    use crate::algebra::rational::{q, qi};
 
     fn p(c: &[Q]) -> (QPoly, UPoly<Q>) {
         let u = UPoly(c.to_vec());

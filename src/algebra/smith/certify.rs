@@ -832,10 +832,14 @@ mod tests {
             let big = |x: u64, y: u64, z: u64| -> BigInt {
                 let v = (BigInt::from(x) << 128) + (BigInt::from(y) << 64) + BigInt::from(z);
                 let v: BigInt = v >> (x % 190) as usize;
-                if y % 2 == 0 { -v } else { v }
+                if y.is_multiple_of(2) { -v } else { v }
             };
             let xs: Vec<Vec<BigInt>> = (0..k)
-                .map(|t| (0..(t + round) % 4).map(|_| big(next(), next(), next())).collect())
+                .map(|t| {
+                    (0..(t + round) % 4)
+                        .map(|_| big(next(), next(), next()))
+                        .collect()
+                })
                 .collect();
             let ys: Vec<Vec<i64>> = (0..k)
                 .map(|t| {

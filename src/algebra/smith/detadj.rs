@@ -225,8 +225,8 @@ impl Garner {
         for i in 0..k {
             let f = self.ps[i];
             let mut t = res[i];
-            for j in 0..i {
-                t = f.mul_pre(self.inv[i][j], f.sub(t, v[j] % f.p));
+            for (&inv, &vj) in self.inv[i].iter().zip(v.iter()) {
+                t = f.mul_pre(inv, f.sub(t, vj % f.p));
             }
             v[i] = t;
         }

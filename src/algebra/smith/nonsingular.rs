@@ -244,7 +244,7 @@ pub fn try_fast(a: &Matrix<QxRing>, limit_bits: u64) -> Option<FastPath> {
         return Some(FastPath::Decomposition(d));
     }
     match exact_hermite(a, det_q.num(), &adj_t, &delta)? {
-        Hermite::Decomposition(d) => Some(FastPath::Decomposition(d)),
+        Hermite::Decomposition(d) => Some(FastPath::Decomposition(*d)),
         Hermite::NoColumn => {
             let b = scaled_adjugate(&r, &adj_t, &delta);
             Some(FastPath::NoHermite { c: det_q, b })
@@ -255,7 +255,7 @@ pub fn try_fast(a: &Matrix<QxRing>, limit_bits: u64) -> Option<FastPath> {
 /// What [`exact_hermite`] found.
 pub enum Hermite {
     /// The decomposition (not yet certified).
-    Decomposition(SmithDecomposition<QxRing>),
+    Decomposition(Box<SmithDecomposition<QxRing>>),
     /// No entry of adj's last row is invertible modulo det.
     NoColumn,
 }
@@ -326,13 +326,13 @@ pub fn exact_hermite(
         }
         u_inv.set(i, n - 1, super::two_by_two::exact_quotient(&r, &acc, &f)?);
     }
-    Some(Hermite::Decomposition(SmithDecomposition {
+    Some(Hermite::Decomposition(Box::new(SmithDecomposition {
         d,
         u,
         v,
         u_inv,
         v_inv,
-    }))
+    })))
 }
 
 /// False when the images of `a` and `m` modulo a prime that keeps m's

@@ -1,26 +1,27 @@
-//! A cheaper exact certificate for the generic one-symbol decomposition
-//! (invariant factors 1, …, 1, f; `U` with primitive integer rows,
-//! `V = [[I, −h], [0, 1]]·Λ⁻¹`, `D = diag(1, …, 1, f)`), and a modular way
-//! of computing that decomposition.
+//! The generic one-symbol decomposition (invariant factors 1, …, 1, f)
+//! computed with integer and word-size modular arithmetic only, and a
+//! cheaper exact certificate for it.
 //!
-//! [`certify_small`] (used by the driver for the nonsingular path) checks
-//! `U·A·V = D` over Z[x] (denominators cleared), `V·V⁻¹ = I` with V upper
-//! triangular with a nonzero constant diagonal, and proves det U a nonzero
+//! [`hermite_from_adjugate`] (called by [`super::nonsingular::try_fast`])
+//! takes det Ã and adj Ã (exact, from [`super::detadj`]) and builds
+//! `U` with primitive integer rows, `V = [[I, −h], [0, 1]]·Λ⁻¹`,
+//! `D = diag(1, …, 1, f)`: h by rational reconstruction from its images
+//! modulo word primes (early termination: a further prime must agree), U's
+//! rows by Garner's CRT from their images (same rule), V, V⁻¹ and U⁻¹
+//! with one normalisation per entry. Its output is the exact Q[x] route's
+//! (`nonsingular::exact_hermite` + `trailing::integral_rows`) entry for
+//! entry (tested); the route is a candidate generator, the certificate
+//! decides.
+//!
+//! [`certify_small`] (used by the driver for this path) checks `V·V⁻¹ = I`
+//! with V upper triangular with a nonzero constant diagonal, and
+//! `U·A = D·V⁻¹` over Z[x] (so `U·A·V = D`), and proves det U a nonzero
 //! constant from degrees: the matrix of the rows' leading coefficients of
 //! A is nonsingular modulo a prime, so deg det A = N (the sum of the row
 //! degrees) = deg f, and `det U·det A·det V = f`. This replaces the
-//! `U·U⁻¹ = I` product (half the certificate's cost) where it applies;
-//! where it does not, the caller certifies the usual way.
-//!
-//! [`small_hermite`] computes the same decomposition with W and h modulo
-//! word primes from the images of det A and adj A, rebuilt by rational
-//! reconstruction (one common denominator per row) and checked on one more
-//! prime. It agrees with [`super::nonsingular`] (tested) but is **not used
-//! by the driver**: measured slower than the exact route except at 8×8 of
-//! degree 1 (12×12 of degree 2: 104 ms against 54 ms, the cost in the
-//! per-prime CRT and the exact divisions by det mod p). It is kept as the
-//! starting point for that work. This module must not print, and it does
-//! not touch the other routes.
+//! `U·U⁻¹ = I` product where it applies; where it does not, the caller
+//! certifies the usual way. This module must not print, and it does not
+//! touch the other routes.
 
 use super::certify::{Certificate, Check, mul_cleared};
 use super::detadj::IntPoly;
@@ -31,10 +32,6 @@ use crate::algebra::rational::Q;
 use crate::algebra::ring::{GcdDomain, Ring};
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
-
-/// Inputs up to this size take this path (larger ones: see
-/// [`super::nonsingular`] and [`super::trailing`]).
-pub const SMALL_MAX: usize = 12;
 
 /// A decomposition `U·A·V = D` with `V⁻¹` (no `U⁻¹`: U's unimodularity is
 /// certified from degrees, see [`certify_small`]).
@@ -226,7 +223,8 @@ fn reconstruct_h(
         if k > 200 {
             return None;
         }
-        let basis = super::detadj::Garner::new(&images[..k].iter().map(|i| i.f).collect::<Vec<_>>());
+        let basis =
+            super::detadj::Garner::new(&images[..k].iter().map(|i| i.f).collect::<Vec<_>>());
         let check = &images[k];
         let lift = |i: usize| -> Vec<BigInt> {
             let mut res = vec![0u64; k];
@@ -258,13 +256,6 @@ fn reconstruct_h(
             out.push((nums, den));
         }
         if out.len() == check.h.len() {
-            if std::env::var_os("SMALL8_DEBUG").is_some() {
-                let nb = out.iter().flat_map(|(nu, _)| nu.iter()).map(|c| c.bits()).max();
-                let db = out.iter().map(|(_, d)| d.bits()).max();
-                let detb = det.iter().map(|c| c.bits()).max();
-                let adjb = adj[adj.len() - 1].iter().flatten().map(|c| c.bits()).max();
-                eprintln!("h: {} primes (k = {k}), num bits {nb:?}, den bits {db:?}, N = {}, det bits {detb:?}, adj_n bits {adjb:?}", images.len(), det.len() - 1);
-            }
             return Some(out);
         }
     }
@@ -322,9 +313,7 @@ fn row_image(
         let mut out = vec![0u64; n * wlen];
         for (k, (bk, lk)) in row.iter().zip(&last).enumerate() {
             // x = den·adj_ik + num·adj_nk (mod p), products summed in u128.
-            let len = bk
-                .len()
-                .max((nump.len() + lk.len()).saturating_sub(1));
+            let len = bk.len().max((nump.len() + lk.len()).saturating_sub(1));
             acc.clear();
             acc.resize(len, 0);
             for (t, c) in bk.iter().enumerate() {
@@ -436,11 +425,11 @@ fn lift_rows(
         }
         let mut rows = vec![probe];
         let mut ok = true;
-        for i in 1..images[0].len() {
+        for (i, check_row) in images[k].iter().enumerate().skip(1) {
             let row: Vec<BigInt> = (0..len).map(|t| lift(i, t)).collect();
             if row
                 .iter()
-                .zip(&images[k][i])
+                .zip(check_row)
                 .any(|(x, &y)| reduce_int(check, x) != y)
             {
                 ok = false;
@@ -449,10 +438,6 @@ fn lift_rows(
             rows.push(row);
         }
         if ok {
-            if std::env::var_os("SMALL8_DEBUG").is_some() {
-                let b = rows.iter().flatten().map(|c| c.bits()).max();
-                eprintln!("rows: {} primes (start {start}), bits {b:?}", fps.len());
-            }
             return Some(rows);
         }
     }
@@ -493,7 +478,13 @@ pub fn hermite_from_adjugate(
     let h = reconstruct_h(det, adj, &order)?;
     debug_assert!(h.iter().all(|(nu, _)| nu.len() == big_n));
     let (cont, pp) = content_split(det);
-    let wlen = adj.iter().flatten().map(|p| p.len()).max().unwrap_or(1).max(1);
+    let wlen = adj
+        .iter()
+        .flatten()
+        .map(|p| p.len())
+        .max()
+        .unwrap_or(1)
+        .max(1);
     let rows = lift_rows(&pp, adj, delta, &h, wlen)?;
     let mut u = Matrix::zeros(r.clone(), n, n);
     let mut lambda = Vec::with_capacity(n);
@@ -504,7 +495,11 @@ pub fn hermite_from_adjugate(
             return None;
         }
         for k in 0..n {
-            u.set(i, k, QPoly::from_ints(prim[k * wlen..(k + 1) * wlen].to_vec()));
+            u.set(
+                i,
+                k,
+                QPoly::from_ints(prim[k * wlen..(k + 1) * wlen].to_vec()),
+            );
         }
         lambda.push(Q::new(den * &cont, g.clone()));
         gs.push(g);
@@ -522,7 +517,11 @@ pub fn hermite_from_adjugate(
         return None;
     }
     for k in 0..n {
-        u.set(n - 1, k, QPoly::from_ints(prim[k * wlen..(k + 1) * wlen].to_vec()));
+        u.set(
+            n - 1,
+            k,
+            QPoly::from_ints(prim[k * wlen..(k + 1) * wlen].to_vec()),
+        );
     }
     lambda.push(Q::new(lc.abs(), g.clone()));
     // V = [[I, −h], [0, 1]]·Λ⁻¹ and V⁻¹ = Λ·[[I, h], [0, 1]], each entry
@@ -531,9 +530,9 @@ pub fn hermite_from_adjugate(
     let lc_abs = lc.abs();
     let mut v = Matrix::zeros(r.clone(), n, n);
     let mut v_inv = Matrix::zeros(r.clone(), n, n);
-    for i in 0..n {
-        v.set(i, i, QPoly::constant(&lambda[i].recip()));
-        v_inv.set(i, i, QPoly::constant(&lambda[i]));
+    for (i, l) in lambda.iter().enumerate() {
+        v.set(i, i, QPoly::constant(&l.recip()));
+        v_inv.set(i, i, QPoly::constant(l));
     }
     for (i, (nu, de)) in h.iter().enumerate() {
         v.set(
@@ -554,9 +553,9 @@ pub fn hermite_from_adjugate(
     // the last is (A_n − Σ_k A_k·h_k)/(f·λ_n) = Y_r·sign(lc)·g_n/(δ_r·E·cont)
     // with E = lcm(den_k), H_k = h_k·E and Y_r = (Ã_rn·E − Σ_k Ã_rk·H_k)/pp(c)
     // (exact over Z by Gauss's lemma).
-    let e = h
-        .iter()
-        .fold(BigInt::one(), |l, (_, de)| crate::algebra::intgcd::lcm(&l, de));
+    let e = h.iter().fold(BigInt::one(), |l, (_, de)| {
+        crate::algebra::intgcd::lcm(&l, de)
+    });
     let hs: Vec<Vec<BigInt>> = h
         .iter()
         .map(|(nu, de)| {
@@ -596,7 +595,11 @@ pub fn hermite_from_adjugate(
             x.pop();
         }
         let y = crate::algebra::modgcd::int_div_exact(&x, &pp)?;
-        let scale = if lc.is_negative() { -g.clone() } else { g.clone() };
+        let scale = if lc.is_negative() {
+            -g.clone()
+        } else {
+            g.clone()
+        };
         u_inv.set(
             row,
             n - 1,
@@ -690,8 +693,7 @@ pub fn certify_small(a: &Matrix<QxRing>, s: &SmallDecomposition, p: u64) -> Cert
     // (V, V⁻¹ square) gives V⁻¹·V = I, so U·A·V = D follows from
     // U·A = D·V⁻¹, which avoids multiplying U·A by V's large last column.
     let vinv = degrees && sparse_product(&s.v, &s.v_inv) == Matrix::identity(r.clone(), n);
-    let prod = vinv
-        && mul_cleared(&s.u, a).is_some_and(|ua| ua == sparse_product(&s.d, &s.v_inv));
+    let prod = vinv && mul_cleared(&s.u, a).is_some_and(|ua| ua == sparse_product(&s.d, &s.v_inv));
     push(
         "U·A·V = D",
         prod,
@@ -750,8 +752,8 @@ pub fn certify_small(a: &Matrix<QxRing>, s: &SmallDecomposition, p: u64) -> Cert
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::algebra::smith::certify::ProductCheck;
     use crate::algebra::smith::SmithDecomposition;
+    use crate::algebra::smith::certify::ProductCheck;
     use crate::algebra::smith::nonsingular::{FastPath, Hermite, exact_hermite, try_fast};
     use crate::algebra::smith::trailing::integral_rows;
 
@@ -774,14 +776,19 @@ mod tests {
         let (at, delta) = integral(a);
         let bound = at
             .iter()
-            .map(|row| row.iter().map(|p| p.len().saturating_sub(1)).max().unwrap_or(0))
+            .map(|row| {
+                row.iter()
+                    .map(|p| p.len().saturating_sub(1))
+                    .max()
+                    .unwrap_or(0)
+            })
             .sum();
         let (det, adj) = super::super::detadj::det_adj(&at, bound).expect("nonsingular");
         let Some(Hermite::Decomposition(mut d)) = exact_hermite(a, &det, &adj, &delta) else {
             panic!("the exact route applies");
         };
         integral_rows(&mut d);
-        d
+        *d
     }
 
     #[test]
