@@ -86,10 +86,20 @@ impl Fp {
         }
         r
     }
-    /// `a⁻¹` (`a` nonzero).
+    /// `a⁻¹` (`a` nonzero), by the extended Euclidean algorithm (several
+    /// times faster than `a^(p−2)`).
     pub fn inv(self, a: u64) -> u64 {
-        debug_assert!(a != 0);
-        self.pow(a, self.p - 2)
+        debug_assert!(!a.is_multiple_of(self.p));
+        // |t| ≤ p < 2^62 throughout, so i64 suffices.
+        let (mut r0, mut r1) = (self.p as i64, (a % self.p) as i64);
+        let (mut t0, mut t1) = (0i64, 1i64);
+        while r1 != 0 {
+            let q = r0 / r1;
+            (r0, r1) = (r1, r0 - q * r1);
+            (t0, t1) = (t1, t0 - q * t1);
+        }
+        debug_assert_eq!(r0, 1);
+        t0.rem_euclid(self.p as i64) as u64
     }
     /// The residue of a big integer.
     pub fn reduce(self, a: &BigInt) -> u64 {
@@ -427,6 +437,20 @@ mod tests {
         assert_eq!(gcd(f, &a, &b), vec![1, 1]);
         let (q, r) = div_rem(f, &a, &[1, 1]);
         assert_eq!((q, r), (vec![2, 1], vec![]));
+    }
+
+    #[test]
+    fn inverses_by_euclid() {
+        for p in primes().take(3).chain([3, 1_000_000_007]) {
+            let f = Fp::new(p);
+            for a in [1, 2, 3, p - 1, p / 2, p / 3 + 7, 123_456_789 % p] {
+                if a % p == 0 {
+                    continue;
+                }
+                assert_eq!(f.mul(a % p, f.inv(a)), 1, "p = {p}, a = {a}");
+                assert_eq!(f.inv(a), f.pow(a % p, p - 2));
+            }
+        }
     }
 
     #[test]

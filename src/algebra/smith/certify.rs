@@ -9,7 +9,7 @@ use crate::algebra::modular::{self, Fp};
 use crate::algebra::qx::{QPoly, QxRing};
 use crate::algebra::ring::{GcdDomain, Ring};
 use num_bigint::BigInt;
-use num_traits::{One, Zero};
+use num_traits::{One, Signed, ToPrimitive, Zero};
 use serde::Serialize;
 
 /// One checked property.
@@ -301,6 +301,108 @@ fn clear_line<'a>(line: impl Iterator<Item = &'a QPoly> + Clone) -> (Vec<Vec<Big
     (nums, l)
 }
 
+/// The line's integer polynomials as `i64` coefficients, if all fit.
+fn small_line(line: &[Vec<BigInt>]) -> Option<Vec<Vec<i64>>> {
+    line.iter()
+        .map(|p| p.iter().map(|c| c.to_i64()).collect::<Option<Vec<i64>>>())
+        .collect()
+}
+
+/// `Σ_t a_t·b_t` over Z[x] for integer polynomials `a_t` and `b_t` with
+/// word-size coefficients, accumulated in fixed-width two's complement
+/// words wide enough for every partial sum (no allocation per term; this
+/// is the inner loop of `U·A` with a large U and a small A).
+fn dot_small(xs: &[Vec<BigInt>], ys: &[Vec<i64>]) -> Vec<BigInt> {
+    let (mut len, mut bits, mut terms) = (0usize, 0u64, 0u64);
+    for (a, b) in xs.iter().zip(ys) {
+        if a.is_empty() || b.is_empty() {
+            continue;
+        }
+        len = len.max(a.len() + b.len() - 1);
+        bits = bits.max(a.iter().map(|c| c.bits()).max().unwrap_or(0));
+        terms += a.len().min(b.len()) as u64;
+    }
+    if len == 0 {
+        return Vec::new();
+    }
+    // |a·b| < 2^(bits + 63); a sum of `terms` of them per coefficient, and
+    // a sign bit.
+    let w = ((bits + 63 + 64 - (terms + 1).leading_zeros() as u64 + 1) / 64 + 1) as usize;
+    let mut acc = vec![0u64; len * w];
+    let mut mag: Vec<u64> = Vec::with_capacity(w);
+    for (a, b) in xs.iter().zip(ys) {
+        for (i, c) in a.iter().enumerate() {
+            if c.is_zero() {
+                continue;
+            }
+            mag.clear();
+            mag.extend(c.magnitude().iter_u64_digits());
+            let neg_c = c.is_negative();
+            for (j, &q) in b.iter().enumerate() {
+                if q == 0 {
+                    continue;
+                }
+                let neg = neg_c ^ (q < 0);
+                let qm = q.unsigned_abs() as u128;
+                let slot = &mut acc[(i + j) * w..(i + j + 1) * w];
+                let mut pc = 0u64;
+                let mut carry = false;
+                for (k, word) in slot.iter_mut().enumerate() {
+                    let pw = if k < mag.len() {
+                        let t = mag[k] as u128 * qm + pc as u128;
+                        pc = (t >> 64) as u64;
+                        t as u64
+                    } else {
+                        std::mem::take(&mut pc)
+                    };
+                    if k > mag.len() && pw == 0 && !carry {
+                        break;
+                    }
+                    if neg {
+                        let (s1, o1) = word.overflowing_sub(pw);
+                        let (s2, o2) = s1.overflowing_sub(carry as u64);
+                        *word = s2;
+                        carry = o1 || o2;
+                    } else {
+                        let (s1, o1) = word.overflowing_add(pw);
+                        let (s2, o2) = s1.overflowing_add(carry as u64);
+                        *word = s2;
+                        carry = o1 || o2;
+                    }
+                }
+            }
+        }
+    }
+    acc.chunks(w)
+        .map(|slot| {
+            let negative = slot[w - 1] >> 63 == 1;
+            let mut limbs = slot.to_vec();
+            if negative {
+                // Two's complement negation.
+                let mut carry = true;
+                for l in limbs.iter_mut() {
+                    let (v, o) = (!*l).overflowing_add(carry as u64);
+                    *l = v;
+                    carry = o;
+                }
+            }
+            let digits: Vec<u32> = limbs
+                .iter()
+                .flat_map(|&l| [l as u32, (l >> 32) as u32])
+                .collect();
+            let m = num_bigint::BigUint::new(digits);
+            BigInt::from_biguint(
+                if negative {
+                    num_bigint::Sign::Minus
+                } else {
+                    num_bigint::Sign::Plus
+                },
+                m,
+            )
+        })
+        .collect()
+}
+
 /// `X·Y` over Q[x] through an integer product.
 pub fn mul_cleared(x: &Matrix<QxRing>, y: &Matrix<QxRing>) -> Option<Matrix<QxRing>> {
     if x.cols() != y.rows() {
@@ -313,9 +415,19 @@ pub fn mul_cleared(x: &Matrix<QxRing>, y: &Matrix<QxRing>) -> Option<Matrix<QxRi
     let cols: Vec<(Vec<Vec<BigInt>>, BigInt)> = (0..n)
         .map(|j| clear_line((0..k).map(|t| y.get(t, j))))
         .collect();
+    let small_rows: Vec<Option<Vec<Vec<i64>>>> = rows.iter().map(|(l, _)| small_line(l)).collect();
+    let small_cols: Vec<Option<Vec<Vec<i64>>>> = cols.iter().map(|(l, _)| small_line(l)).collect();
     let mut data = Vec::with_capacity(m * n);
-    for (xr, dx) in &rows {
-        for (yc, dy) in &cols {
+    for ((xr, dx), xs) in rows.iter().zip(&small_rows) {
+        for ((yc, dy), ys) in cols.iter().zip(&small_cols) {
+            if let Some(ys) = ys {
+                data.push(QPoly::new(dot_small(xr, ys), dx * dy));
+                continue;
+            }
+            if let Some(xs) = xs {
+                data.push(QPoly::new(dot_small(yc, xs), dx * dy));
+                continue;
+            }
             let mut acc: Vec<BigInt> = Vec::new();
             for (a, b) in xr.iter().zip(yc) {
                 if a.is_empty() || b.is_empty() {
@@ -703,6 +815,65 @@ mod tests {
             num.iter().map(|&c| BigInt::from(c)).collect(),
             BigInt::from(den),
         )
+    }
+
+    #[test]
+    fn word_size_dot_product_agrees_with_bigint_arithmetic() {
+        let mut seed = 99u64;
+        let mut next = || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            seed
+        };
+        let mut checked = 0;
+        for round in 0..40 {
+            let k = 1 + round % 5;
+            let big = |x: u64, y: u64, z: u64| -> BigInt {
+                let v = (BigInt::from(x) << 128) + (BigInt::from(y) << 64) + BigInt::from(z);
+                let v: BigInt = v >> (x % 190) as usize;
+                if y.is_multiple_of(2) { -v } else { v }
+            };
+            let xs: Vec<Vec<BigInt>> = (0..k)
+                .map(|t| {
+                    (0..(t + round) % 4)
+                        .map(|_| big(next(), next(), next()))
+                        .collect()
+                })
+                .collect();
+            let ys: Vec<Vec<i64>> = (0..k)
+                .map(|t| {
+                    (0..(t + 2 * round) % 3 + 1)
+                        .map(|s| match (round + s) % 4 {
+                            0 => i64::MIN,
+                            1 => i64::MAX,
+                            _ => next() as i64 >> (next() % 60),
+                        })
+                        .collect()
+                })
+                .collect();
+            let mut want: Vec<BigInt> = Vec::new();
+            for (a, b) in xs.iter().zip(&ys) {
+                for (i, p) in a.iter().enumerate() {
+                    for (j, q) in b.iter().enumerate() {
+                        if want.len() <= i + j {
+                            want.resize(i + j + 1, BigInt::zero());
+                        }
+                        want[i + j] += p * BigInt::from(*q);
+                    }
+                }
+            }
+            let got = dot_small(&xs, &ys);
+            let trim = |mut v: Vec<BigInt>| {
+                while v.last().is_some_and(|c| c.is_zero()) {
+                    v.pop();
+                }
+                v
+            };
+            assert_eq!(trim(got), trim(want), "round {round}");
+            checked += 1;
+        }
+        assert_eq!(checked, 40);
     }
 
     #[test]

@@ -178,25 +178,79 @@ fn image(f: Fp, m: &[Vec<IntPoly>], deg: usize) -> Option<(Vec<u64>, Vec<Vec<u64
     Some((det, adj))
 }
 
-/// Garner's mixed-radix reconstruction of the residues `res[k] mod ps[k]`
-/// in the symmetric range of `m = Π ps`. `inv[i][j] = ps[j]⁻¹ mod ps[i]`
-/// (prepared), `half = m/2`.
-fn garner(res: &[u64], ps: &[Fp], inv: &[Vec<u64>], m: &BigInt, half: &BigInt) -> BigInt {
-    let k = res.len();
-    let mut v = Vec::with_capacity(k);
-    for i in 0..k {
-        let f = ps[i];
-        let mut t = res[i];
-        for (j, &vj) in v.iter().enumerate() {
-            t = f.mul_pre(inv[i][j], f.sub(t, vj % f.p));
+/// Garner's mixed-radix reconstruction for a fixed list of primes: the
+/// residues `res[k] mod ps[k]` give the integer in the symmetric range of
+/// `m = Π ps` (the inverses and the products are computed once).
+pub struct Garner {
+    ps: Vec<Fp>,
+    /// `inv[i][j] = ps[j]⁻¹ mod ps[i]` (prepared), `j < i`.
+    inv: Vec<Vec<u64>>,
+    /// `m = Π ps`.
+    pub m: BigInt,
+    half: BigInt,
+}
+
+impl Garner {
+    /// The basis of the primes `ps` (distinct).
+    pub fn new(ps: &[Fp]) -> Self {
+        let inv = (0..ps.len())
+            .map(|i| {
+                (0..i)
+                    .map(|j| ps[i].prep(ps[i].inv(ps[j].p % ps[i].p)))
+                    .collect()
+            })
+            .collect();
+        let m = ps.iter().fold(BigInt::from(1), |acc, f| acc * f.p);
+        let half = &m >> 1u32;
+        Garner {
+            ps: ps.to_vec(),
+            inv,
+            m,
+            half,
         }
-        v.push(t);
     }
-    let mut acc = BigInt::zero();
-    for i in (0..k).rev() {
-        acc = acc * ps[i].p + v[i];
+
+    /// The integer in `(−m/2, m/2]` with the residues `res` (one per prime).
+    pub fn lift(&self, res: &[u64]) -> BigInt {
+        let k = res.len();
+        debug_assert_eq!(k, self.ps.len());
+        let mut v = [0u64; 32];
+        let mut v_big = Vec::new();
+        let v: &mut [u64] = if k <= 32 {
+            &mut v[..k]
+        } else {
+            v_big.resize(k, 0);
+            &mut v_big
+        };
+        for i in 0..k {
+            let f = self.ps[i];
+            let mut t = res[i];
+            for (&inv, &vj) in self.inv[i].iter().zip(v.iter()) {
+                t = f.mul_pre(inv, f.sub(t, vj % f.p));
+            }
+            v[i] = t;
+        }
+        // Horner on 64-bit limbs: acc = v[k−1]; acc = acc·p + v[i].
+        let mut limbs: Vec<u64> = Vec::with_capacity(k);
+        for i in (0..k).rev() {
+            let p = self.ps[i].p as u128;
+            let mut carry = v[i] as u128;
+            for l in limbs.iter_mut() {
+                let t = *l as u128 * p + carry;
+                *l = t as u64;
+                carry = t >> 64;
+            }
+            if carry != 0 {
+                limbs.push(carry as u64);
+            }
+        }
+        let digits: Vec<u32> = limbs
+            .iter()
+            .flat_map(|&l| [l as u32, (l >> 32) as u32])
+            .collect();
+        let acc = BigInt::from_biguint(num_bigint::Sign::Plus, num_bigint::BigUint::new(digits));
+        if acc > self.half { acc - &self.m } else { acc }
     }
-    if &acc > half { acc - m } else { acc }
 }
 
 fn trim(mut p: IntPoly) -> IntPoly {
@@ -241,22 +295,13 @@ pub fn det_adj(m: &[Vec<IntPoly>], deg: usize) -> Option<(IntPoly, Vec<Vec<IntPo
     if bits < need {
         return None;
     }
-    let k = fps.len();
-    let inv: Vec<Vec<u64>> = (0..k)
-        .map(|i| {
-            (0..i)
-                .map(|j| fps[i].prep(fps[i].inv(fps[j].p % fps[i].p)))
-                .collect()
-        })
-        .collect();
-    let m_all = fps.iter().fold(BigInt::from(1), |acc, f| acc * f.p);
-    let half = &m_all >> 1u32;
-    let mut res = vec![0u64; k];
+    let basis = Garner::new(&fps);
+    let mut res = vec![0u64; fps.len()];
     let mut lift = |get: &dyn Fn(&(Vec<u64>, Vec<Vec<u64>>)) -> u64| -> BigInt {
         for (r, img) in res.iter_mut().zip(&images) {
             *r = get(img);
         }
-        garner(&res, &fps, &inv, &m_all, &half)
+        basis.lift(&res)
     };
     let det = trim((0..=deg).map(|c| lift(&|img| img.0[c])).collect());
     let adj = (0..n)

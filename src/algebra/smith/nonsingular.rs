@@ -230,7 +230,6 @@ pub fn try_fast(a: &Matrix<QxRing>, limit_bits: u64) -> Option<FastPath> {
     if det_q.is_zero() {
         return None;
     }
-    let f = r.normalize(&det_q);
     if det_q.degree() == Some(0) {
         return Some(FastPath::Decomposition(unimodular(
             a, &det_q, &adj_t, &delta,
@@ -241,6 +240,40 @@ pub fn try_fast(a: &Matrix<QxRing>, limit_bits: u64) -> Option<FastPath> {
         let b = scaled_adjugate(&r, &adj_t, &delta);
         return Some(FastPath::FormOnly { c: det_q, b, bits });
     }
+    if let Some(d) = super::small::hermite_from_adjugate(a, &at, &delta, det_q.num(), &adj_t) {
+        return Some(FastPath::Decomposition(d));
+    }
+    match exact_hermite(a, det_q.num(), &adj_t, &delta)? {
+        Hermite::Decomposition(d) => Some(FastPath::Decomposition(*d)),
+        Hermite::NoColumn => {
+            let b = scaled_adjugate(&r, &adj_t, &delta);
+            Some(FastPath::NoHermite { c: det_q, b })
+        }
+    }
+}
+
+/// What [`exact_hermite`] found.
+pub enum Hermite {
+    /// The decomposition (not yet certified).
+    Decomposition(Box<SmithDecomposition<QxRing>>),
+    /// No entry of adj's last row is invertible modulo det.
+    NoColumn,
+}
+
+/// The Hermite structure over Q[x] (the reference route, and the fallback
+/// when [`super::small::hermite_from_adjugate`] declines): `det` and `adj`
+/// of `Ã = diag(δ)·A` exactly, `δ` the row scales; `None` when an exact
+/// division fails.
+pub fn exact_hermite(
+    a: &Matrix<QxRing>,
+    det: &[BigInt],
+    adj_t: &[Vec<Vec<BigInt>>],
+    delta: &[BigInt],
+) -> Option<Hermite> {
+    let n = a.rows();
+    let r = a.ring.clone();
+    let det_q = QPoly::from_ints(det.to_vec());
+    let f = r.normalize(&det_q);
     let last: Vec<QPoly> = adj_t[n - 1]
         .iter()
         .map(|p| QPoly::from_ints(p.clone()))
@@ -253,8 +286,7 @@ pub fn try_fast(a: &Matrix<QxRing>, limit_bits: u64) -> Option<FastPath> {
         .filter(|&j| may_be_coprime(&last[j], &det_q))
         .find_map(|j| r.inverse_mod(&last[j], &f).map(|s| (j, s)))
     else {
-        let b = scaled_adjugate(&r, &adj_t, &delta);
-        return Some(FastPath::NoHermite { c: det_q, b });
+        return Some(Hermite::NoColumn);
     };
     let mut h = Vec::with_capacity(n - 1);
     let mut w = Matrix::zeros(r.clone(), n, n);
@@ -294,13 +326,13 @@ pub fn try_fast(a: &Matrix<QxRing>, limit_bits: u64) -> Option<FastPath> {
         }
         u_inv.set(i, n - 1, super::two_by_two::exact_quotient(&r, &acc, &f)?);
     }
-    Some(FastPath::Decomposition(SmithDecomposition {
+    Some(Hermite::Decomposition(Box::new(SmithDecomposition {
         d,
         u,
         v,
         u_inv,
         v_inv,
-    }))
+    })))
 }
 
 /// False when the images of `a` and `m` modulo a prime that keeps m's

@@ -1,28 +1,30 @@
-//! A cheaper exact certificate for the generic one-symbol decomposition
-//! (invariant factors 1, …, 1, f; `U` with primitive integer rows,
-//! `V = [[I, −h], [0, 1]]·Λ⁻¹`, `D = diag(1, …, 1, f)`), and a modular way
-//! of computing that decomposition.
+//! The generic one-symbol decomposition (invariant factors 1, …, 1, f)
+//! computed with integer and word-size modular arithmetic only, and a
+//! cheaper exact certificate for it.
 //!
-//! [`certify_small`] (used by the driver for the nonsingular path) checks
-//! `U·A·V = D` over Z[x] (denominators cleared), `V·V⁻¹ = I` with V upper
-//! triangular with a nonzero constant diagonal, and proves det U a nonzero
+//! [`hermite_from_adjugate`] (called by [`super::nonsingular::try_fast`])
+//! takes det Ã and adj Ã (exact, from [`super::detadj`]) and builds
+//! `U` with primitive integer rows, `V = [[I, −h], [0, 1]]·Λ⁻¹`,
+//! `D = diag(1, …, 1, f)`: h by rational reconstruction from its images
+//! modulo word primes (early termination: a further prime must agree), U's
+//! rows by Garner's CRT from their images (same rule), V, V⁻¹ and U⁻¹
+//! with one normalisation per entry. Its output is the exact Q[x] route's
+//! (`nonsingular::exact_hermite` + `trailing::integral_rows`) entry for
+//! entry (tested); the route is a candidate generator, the certificate
+//! decides.
+//!
+//! [`certify_small`] (used by the driver for this path) checks `V·V⁻¹ = I`
+//! with V upper triangular with a nonzero constant diagonal, and
+//! `U·A = D·V⁻¹` over Z[x] (so `U·A·V = D`), and proves det U a nonzero
 //! constant from degrees: the matrix of the rows' leading coefficients of
 //! A is nonsingular modulo a prime, so deg det A = N (the sum of the row
 //! degrees) = deg f, and `det U·det A·det V = f`. This replaces the
-//! `U·U⁻¹ = I` product (half the certificate's cost) where it applies;
-//! where it does not, the caller certifies the usual way.
-//!
-//! [`small_hermite`] computes the same decomposition with W and h modulo
-//! word primes from the images of det A and adj A, rebuilt by rational
-//! reconstruction (one common denominator per row) and checked on one more
-//! prime. It agrees with [`super::nonsingular`] (tested) but is **not used
-//! by the driver**: measured slower than the exact route except at 8×8 of
-//! degree 1 (12×12 of degree 2: 104 ms against 54 ms, the cost in the
-//! per-prime CRT and the exact divisions by det mod p). It is kept as the
-//! starting point for that work. This module must not print, and it does
-//! not touch the other routes.
+//! `U·U⁻¹ = I` product where it applies; where it does not, the caller
+//! certifies the usual way. This module must not print, and it does not
+//! touch the other routes.
 
-use super::certify::{Certificate, Check, ClearedQx, ProductCheck};
+use super::certify::{Certificate, Check, mul_cleared};
+use super::detadj::IntPoly;
 use crate::algebra::matrix::Matrix;
 use crate::algebra::modular::{self, Fp, UP};
 use crate::algebra::qx::{QPoly, QxRing};
@@ -30,10 +32,6 @@ use crate::algebra::rational::Q;
 use crate::algebra::ring::{GcdDomain, Ring};
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
-
-/// Inputs up to this size take this path (larger ones: see
-/// [`super::nonsingular`] and [`super::trailing`]).
-pub const SMALL_MAX: usize = 12;
 
 /// A decomposition `U·A·V = D` with `V⁻¹` (no `U⁻¹`: U's unimodularity is
 /// certified from degrees, see [`certify_small`]).
@@ -112,100 +110,49 @@ fn leading_nonsingular(f: Fp, at: &[Vec<Vec<BigInt>>]) -> Option<usize> {
     (det != 0).then(|| degs.iter().sum())
 }
 
-/// Residues of one prime: `U`'s rows 0..n−1 before the row scaling (each
-/// row's coefficients, flattened) and h.
-struct Image {
-    rows: Vec<Vec<u64>>,
+/// One prime's images of `h_i = −adj_ij·adj_nj⁻¹ mod det` (i < n−1),
+/// each padded to length `N = deg det`.
+struct HImage {
+    f: Fp,
     h: Vec<Vec<u64>>,
 }
 
-/// W·Δ's first n−1 rows and h modulo `f`, with `j` the column of adj's last
-/// row inverted modulo det; `None` for an unlucky prime.
-#[allow(clippy::too_many_arguments)]
-fn image(
-    f: Fp,
-    det: &[BigInt],
-    adj: &[Vec<Vec<BigInt>>],
-    delta: &[BigInt],
-    j: usize,
-    wlen: usize,
-    flen: usize,
-) -> Option<Image> {
+/// The images of h modulo `f` with the first column of `order` whose
+/// entry of adj's last row is invertible modulo det (mod p); `None` when
+/// p divides lc(det) or no such column exists modulo p.
+fn h_image(f: Fp, det: &[BigInt], adj: &[Vec<IntPoly>], order: &[usize]) -> Option<HImage> {
     let n = adj.len();
+    let big_n = det.len() - 1;
     let detp = reduce(f, det);
-    if modular::deg(&detp) != Some(det.len() - 1) {
+    if modular::deg(&detp) != Some(big_n) {
         return None;
     }
     let fp = modular::monic(f, &detp);
-    let last: Vec<UP> = adj[n - 1].iter().map(|p| reduce(f, p)).collect();
-    let (inv, _) = modular::inverse_and_resultant(f, &last[j], &fp)?;
-    let dl: Vec<u64> = delta.iter().map(|d| reduce_int(f, d)).collect();
-    let mut rows = Vec::with_capacity(n - 1);
-    let mut hs = Vec::with_capacity(n - 1);
-    for row in adj.iter().take(n - 1) {
-        let bij = reduce(f, &row[j]);
-        let hi = modular::sub(
-            f,
-            &[],
-            &modular::div_rem(f, &modular::mul(f, &bij, &inv), &fp).1,
-        );
-        let mut out = vec![0u64; n * wlen];
-        for (k, (bk, lk)) in row.iter().zip(&last).enumerate() {
-            let num = modular::add(f, &reduce(f, bk), &modular::mul(f, &hi, lk));
-            let (q, r) = modular::div_rem(f, &num, &detp);
-            if !r.is_empty() || q.len() > wlen {
-                return None;
-            }
-            for (t, c) in q.iter().enumerate() {
-                out[k * wlen + t] = f.mul(*c, dl[k]);
-            }
-        }
-        let mut hv = vec![0u64; flen];
-        if hi.len() > flen {
-            return None;
-        }
-        hv[..hi.len()].copy_from_slice(&hi);
-        rows.push(out);
-        hs.push(hv);
-    }
-    Some(Image { rows, h: hs })
+    let (j, inv) = order.iter().find_map(|&j| {
+        let a = reduce(f, &adj[n - 1][j]);
+        modular::inverse_and_resultant(f, &a, &fp).map(|(s, _)| (j, s))
+    })?;
+    let h = adj
+        .iter()
+        .take(n - 1)
+        .map(|row| {
+            let prod = modular::mul(f, &reduce(f, &row[j]), &inv);
+            let r = modular::div_rem(f, &prod, &fp).1;
+            let mut v: Vec<u64> = r.iter().map(|&c| f.neg(c)).collect();
+            v.resize(big_n, 0);
+            v
+        })
+        .collect();
+    Some(HImage { f, h })
 }
 
-/// Residues combined so far, in `0..m`.
-struct Crt {
-    m: BigInt,
-    rows: Vec<Vec<BigInt>>,
-    h: Vec<Vec<BigInt>>,
-}
-
-impl Crt {
-    fn add(&mut self, f: Fp, img: &Image) {
-        let minv = f.inv(f.reduce(&self.m));
-        let comb = |acc: &mut Vec<BigInt>, r: &[u64], m: &BigInt| {
-            if acc.is_empty() {
-                acc.extend(r.iter().map(|&x| BigInt::from(x)));
-            } else {
-                for (c, &x) in acc.iter_mut().zip(r) {
-                    *c = modular::crt(c, m, x, f, minv);
-                }
-            }
-        };
-        for (acc, r) in self.rows.iter_mut().zip(&img.rows) {
-            comb(acc, r, &self.m);
-        }
-        for (acc, r) in self.h.iter_mut().zip(&img.h) {
-            comb(acc, r, &self.m);
-        }
-        self.m *= f.p;
-    }
-}
-
-/// Rational reconstruction of a vector with one common denominator:
-/// `(numerators, denominator)` with every |numerator| and the denominator
-/// at most √(m/2), or `None`.
-fn reconstruct_vec(c: &[BigInt], m: &BigInt) -> Option<(Vec<BigInt>, BigInt)> {
+/// Rational reconstruction of a vector with one common denominator,
+/// starting from the candidate denominator `l`: `(numerators,
+/// denominator)` with every |numerator| and the denominator at most
+/// √(m/2), or `None`.
+fn reconstruct_vec(c: &[BigInt], m: &BigInt, l: &BigInt) -> Option<(Vec<BigInt>, BigInt)> {
     let bound = (m >> 1u32).sqrt();
-    let mut l = BigInt::one();
+    let mut l = l.clone();
     let mut nums: Vec<BigInt> = Vec::with_capacity(c.len());
     for x in c {
         let t = modular::symmetric(&(x * &l), m);
@@ -229,53 +176,308 @@ fn reconstruct_vec(c: &[BigInt], m: &BigInt) -> Option<(Vec<BigInt>, BigInt)> {
 
 /// Whether the rational vector `nums/den` reduces to `r` modulo `f`.
 fn agrees(f: Fp, nums: &[BigInt], den: &BigInt, r: &[u64]) -> bool {
-    let d = f.reduce(den);
+    let d = reduce_int(f, den);
     if d == 0 {
         return false;
     }
     let dm = f.prep(d);
     nums.iter()
         .zip(r)
-        .all(|(x, &y)| f.reduce(x) == f.mul_pre(dm, y))
+        .all(|(x, &y)| reduce_int(f, x) == f.mul_pre(dm, y))
 }
 
-/// The positive scale and primitive integer form of a row given as
-/// integer numerators over a positive common denominator `den`: returns
-/// `(λ, numerators / g)` with `λ = den/g`, g the numerators' content.
-fn primitive(nums: Vec<BigInt>, den: &BigInt) -> (Q, Vec<BigInt>) {
-    let g = nums
+/// The rational vectors `h_i` (numerators, positive denominator, not yet
+/// in lowest terms) from images modulo word primes: rational
+/// reconstruction over the first k primes, accepted when the next prime's
+/// image agrees (early termination; the caller's exact checks and the
+/// certificate decide).
+#[allow(clippy::type_complexity)]
+fn reconstruct_h(
+    det: &[BigInt],
+    adj: &[Vec<IntPoly>],
+    order: &[usize],
+) -> Option<Vec<(Vec<BigInt>, BigInt)>> {
+    // Measured on random dense inputs (n = 8, 12; degree 1–3), h's
+    // numerators and common denominator each have about 0.85·(N − 1)·b
+    // bits, b the bits of det's coefficients: reconstruction is first tried
+    // a little below that (an early try only costs a failed attempt, a
+    // late one a few cheap images).
+    let big_n = det.len() - 1;
+    let detbits = det.iter().map(|c| c.bits()).max().unwrap_or(0) as usize;
+    let first_try = (3 * big_n.saturating_sub(1) * detbits / 2) / 61;
+    let mut images: Vec<HImage> = Vec::new();
+    let mut unlucky = 0;
+    for p in modular::primes() {
+        let Some(img) = h_image(Fp::new(p), det, adj, order) else {
+            unlucky += 1;
+            if unlucky > 3 {
+                return None;
+            }
+            continue;
+        };
+        images.push(img);
+        let k = images.len() - 1;
+        if k < first_try.max(1) {
+            continue;
+        }
+        if k > 200 {
+            return None;
+        }
+        let basis =
+            super::detadj::Garner::new(&images[..k].iter().map(|i| i.f).collect::<Vec<_>>());
+        let check = &images[k];
+        let lift = |i: usize| -> Vec<BigInt> {
+            let mut res = vec![0u64; k];
+            (0..images[0].h[i].len())
+                .map(|t| {
+                    for (r, img) in res.iter_mut().zip(&images[..k]) {
+                        *r = img.h[i][t];
+                    }
+                    basis.lift(&res)
+                })
+                .collect()
+        };
+        // A cheap probe on h_0 first.
+        let Some((nums, den)) = reconstruct_vec(&lift(0), &basis.m, &BigInt::one()) else {
+            continue;
+        };
+        if !agrees(check.f, &nums, &den, &check.h[0]) {
+            continue;
+        }
+        let mut out = vec![(nums, den)];
+        for i in 1..check.h.len() {
+            let l = out[i - 1].1.clone();
+            let Some((nums, den)) = reconstruct_vec(&lift(i), &basis.m, &l) else {
+                break;
+            };
+            if !agrees(check.f, &nums, &den, &check.h[i]) {
+                break;
+            }
+            out.push((nums, den));
+        }
+        if out.len() == check.h.len() {
+            return Some(out);
+        }
+    }
+    None
+}
+
+/// `(content, primitive part)` of an integer vector (content ≥ 0; the
+/// zero vector is returned unchanged with content 0).
+fn content_split(v: &[BigInt]) -> (BigInt, Vec<BigInt>) {
+    let mut g = BigInt::zero();
+    for x in v {
+        if g.is_one() {
+            break;
+        }
+        g = crate::algebra::intgcd::gcd(&g, x);
+    }
+    if g.is_zero() || g.is_one() {
+        return (g, v.to_vec());
+    }
+    (g.clone(), v.iter().map(|x| x / &g).collect())
+}
+
+/// One prime's images of the rows `N_i = (den_i·adj_i + num_i·adj_n)·Δ /
+/// pp(det)` (i < n−1), each entry padded to `wlen`, flattened per row;
+/// `None` when the prime is unusable or a division leaves a remainder
+/// (then h is wrong).
+#[allow(clippy::too_many_arguments)]
+fn row_image(
+    f: Fp,
+    pp: &[BigInt],
+    adj: &[Vec<IntPoly>],
+    delta: &[BigInt],
+    h: &[(Vec<BigInt>, BigInt)],
+    wlen: usize,
+) -> Option<Vec<Vec<u64>>> {
+    let n = adj.len();
+    let ppp = reduce(f, pp);
+    if modular::deg(&ppp) != Some(pp.len() - 1) {
+        return None;
+    }
+    let np = ppp.len() - 1;
+    let inv_lc = f.prep(f.inv(ppp[np]));
+    let last: Vec<UP> = adj[n - 1].iter().map(|p| reduce(f, p)).collect();
+    let dl: Vec<u64> = delta.iter().map(|d| reduce_int(f, d)).collect();
+    let p128 = f.p as u128;
+    let mut acc: Vec<u128> = Vec::new();
+    let mut x: Vec<u64> = Vec::new();
+    let mut rows = Vec::with_capacity(n - 1);
+    for (row, (num, den)) in adj.iter().zip(h) {
+        let denp = reduce_int(f, den);
+        if denp == 0 {
+            return None;
+        }
+        let nump = reduce(f, num);
+        let mut out = vec![0u64; n * wlen];
+        for (k, (bk, lk)) in row.iter().zip(&last).enumerate() {
+            // x = den·adj_ik + num·adj_nk (mod p), products summed in u128.
+            let len = bk.len().max((nump.len() + lk.len()).saturating_sub(1));
+            acc.clear();
+            acc.resize(len, 0);
+            for (t, c) in bk.iter().enumerate() {
+                acc[t] = reduce_int(f, c) as u128 * denp as u128;
+            }
+            for (t, &y) in nump.iter().enumerate() {
+                if y == 0 {
+                    continue;
+                }
+                for (s, &z) in lk.iter().enumerate() {
+                    let v = acc[t + s] + y as u128 * z as u128;
+                    acc[t + s] = if v >= p128 << 64 { v % p128 } else { v };
+                }
+            }
+            x.clear();
+            x.extend(acc.iter().map(|&v| (v % p128) as u64));
+            while x.last() == Some(&0) {
+                x.pop();
+            }
+            // Exact division by pp(c) mod p.
+            if x.len() <= np {
+                if !x.is_empty() {
+                    return None;
+                }
+                continue;
+            }
+            let qlen = x.len() - np;
+            if qlen > wlen {
+                return None;
+            }
+            let dm = f.prep(dl[k]);
+            for t in (0..qlen).rev() {
+                let q = f.mul_pre(inv_lc, x[t + np]);
+                if q == 0 {
+                    continue;
+                }
+                let qm = f.prep(q);
+                for (j, &c) in ppp.iter().enumerate() {
+                    x[t + j] = f.sub(x[t + j], f.mul_pre(qm, c));
+                }
+                out[k * wlen + t] = f.mul_pre(dm, q);
+            }
+            if x[..np].iter().any(|&c| c != 0) {
+                return None;
+            }
+        }
+        rows.push(out);
+    }
+    Some(rows)
+}
+
+/// The integer rows `N_i` of [`row_image`] by Chinese remaindering with
+/// early termination (the last prime checks the others' result).
+fn lift_rows(
+    pp: &[BigInt],
+    adj: &[Vec<IntPoly>],
+    delta: &[BigInt],
+    h: &[(Vec<BigInt>, BigInt)],
+    wlen: usize,
+) -> Option<Vec<Vec<BigInt>>> {
+    let mut fps: Vec<Fp> = Vec::new();
+    let mut images: Vec<Vec<Vec<u64>>> = Vec::new();
+    let mut unlucky = 0;
+    // Start near the size the h numerators suggest.
+    let hbits = h
         .iter()
-        .fold(BigInt::zero(), |g, x| crate::algebra::intgcd::gcd(&g, x));
-    if g.is_zero() {
-        return (Q::from_integer(BigInt::one()), nums);
+        .flat_map(|(nu, de)| nu.iter().chain(std::iter::once(de)))
+        .map(|c| c.bits())
+        .max()
+        .unwrap_or(0);
+    // U's rows have about as many bits as h's denominators.
+    let start = (hbits as usize).div_ceil(61).max(1);
+    for p in modular::primes() {
+        let f = Fp::new(p);
+        let Some(img) = row_image(f, pp, adj, delta, h, wlen) else {
+            unlucky += 1;
+            if unlucky > 3 {
+                return None;
+            }
+            continue;
+        };
+        fps.push(f);
+        images.push(img);
+        let k = images.len() - 1;
+        if k < start {
+            continue;
+        }
+        if k > 200 {
+            return None;
+        }
+        let basis = super::detadj::Garner::new(&fps[..k]);
+        let check = fps[k];
+        let mut res = vec![0u64; k];
+        let mut lift = |i: usize, t: usize| -> BigInt {
+            for (r, img) in res.iter_mut().zip(&images[..k]) {
+                *r = img[i][t];
+            }
+            basis.lift(&res)
+        };
+        // Probe: the first row's coefficients.
+        let len = images[0][0].len();
+        let probe: Vec<BigInt> = (0..len).map(|t| lift(0, t)).collect();
+        if probe
+            .iter()
+            .zip(&images[k][0])
+            .any(|(x, &y)| reduce_int(check, x) != y)
+        {
+            continue;
+        }
+        let mut rows = vec![probe];
+        let mut ok = true;
+        for (i, check_row) in images[k].iter().enumerate().skip(1) {
+            let row: Vec<BigInt> = (0..len).map(|t| lift(i, t)).collect();
+            if row
+                .iter()
+                .zip(check_row)
+                .any(|(x, &y)| reduce_int(check, x) != y)
+            {
+                ok = false;
+                break;
+            }
+            rows.push(row);
+        }
+        if ok {
+            return Some(rows);
+        }
     }
-    let out = nums.into_iter().map(|x| x / &g).collect();
-    (Q::new(den.clone(), g), out)
+    None
 }
 
-fn poly_row(nums: &[BigInt], n: usize, wlen: usize) -> Vec<QPoly> {
-    (0..n)
-        .map(|k| QPoly::from_ints(nums[k * wlen..(k + 1) * wlen].to_vec()))
-        .collect()
-}
-
-/// The decomposition, or `None` (the caller takes another route): A must
-/// be square, 2 ≤ n ≤ [`SMALL_MAX`], nonsingular with `deg det A` equal to
-/// the sum of its row degrees (≥ 1), and some entry of adj A's last row
-/// invertible modulo det A.
-pub fn small_hermite(a: &Matrix<QxRing>) -> Option<(SmallDecomposition, u64)> {
+/// The nonsingular path's decomposition (see [`super::nonsingular`]) with
+/// integer arithmetic only: for `Ã = Δ·A` integral with `c = det Ã` and
+/// `adj = adj Ã` exact, `h_i = −adj_ij·adj_nj⁻¹ mod c` by rational
+/// reconstruction from images modulo word primes, and U's rows
+/// `U_i = N_i/content(N_i)` with `N_i = (den_i·adj_i + num_i·adj_n)·Δ /
+/// pp(c)` by Chinese remaindering, so that `U_i = λ_i·W_i·Δ` for the
+/// Hermite multiplier `W = H·adj/c` and `λ_i = den_i·cont(c)/content(N_i)`
+/// (U's last row: `adj_n·Δ·sign(lc c)/content`). The result is what
+/// [`super::nonsingular::try_fast`]'s exact route followed by
+/// [`super::trailing::integral_rows`] gives (h is unique given deg h_i <
+/// deg c, λ_i is the positive scale making the row primitive integral),
+/// computed without Q[x] arithmetic. Both stages end early (a further
+/// prime agreeing), so the result is a candidate: the caller certifies it.
+/// `None` when some step declines (the caller takes the exact route).
+pub fn hermite_from_adjugate(
+    a: &Matrix<QxRing>,
+    at: &[Vec<IntPoly>],
+    delta: &[BigInt],
+    det: &[BigInt],
+    adj: &[Vec<IntPoly>],
+) -> Option<super::SmithDecomposition<QxRing>> {
     let n = a.rows();
-    if !(2..=SMALL_MAX).contains(&n) || a.cols() != n {
-        return None;
-    }
     let r = a.ring.clone();
-    let (at, delta) = integral(a);
-    let f0 = Fp::new(modular::primes().next()?);
-    let deg_bound = leading_nonsingular(f0, &at)?;
-    let (det, adj) = super::detadj::det_adj(&at, deg_bound)?;
-    if det.len() != deg_bound + 1 || deg_bound == 0 {
+    let big_n = det.len().checked_sub(1).filter(|&d| d >= 1)?;
+    if n < 2 || adj.len() != n {
         return None;
     }
+    let mut order: Vec<usize> = (0..n).filter(|&k| !adj[n - 1][k].is_empty()).collect();
+    order.sort_by_key(|&k| adj[n - 1][k].len());
+    // Each h_i has length N = deg c, so deg h_i < deg c: h is the
+    // canonical one once W = H·adj/c is polynomial.
+    let h = reconstruct_h(det, adj, &order)?;
+    debug_assert!(h.iter().all(|(nu, _)| nu.len() == big_n));
+    let (cont, pp) = content_split(det);
     let wlen = adj
         .iter()
         .flatten()
@@ -283,116 +485,134 @@ pub fn small_hermite(a: &Matrix<QxRing>) -> Option<(SmallDecomposition, u64)> {
         .max()
         .unwrap_or(1)
         .max(1);
-    let flen = deg_bound;
-    // The column j: least degree among the last row's entries invertible
-    // modulo det mod p0, hence coprime to det over Q (p0 ∤ lc det).
-    let p0det = reduce(f0, &det);
-    if modular::deg(&p0det) != Some(deg_bound) {
-        return None;
-    }
-    let fp0 = modular::monic(f0, &p0det);
-    let mut order: Vec<usize> = (0..n).filter(|&k| !adj[n - 1][k].is_empty()).collect();
-    order.sort_by_key(|&k| adj[n - 1][k].len());
-    let j = order.into_iter().find(|&k| {
-        modular::inverse_and_resultant(f0, &reduce(f0, &adj[n - 1][k]), &fp0).is_some()
-    })?;
-    let mut crt = Crt {
-        m: BigInt::one(),
-        rows: vec![Vec::new(); n - 1],
-        h: vec![Vec::new(); n - 1],
-    };
-    let mut unlucky = 0;
-    let mut added = 0usize;
-    let mut next_try = 2usize;
-    #[allow(clippy::type_complexity)]
-    let mut candidate: Option<(Vec<(Vec<BigInt>, BigInt)>, Vec<(Vec<BigInt>, BigInt)>)> = None;
-    for p in modular::primes() {
-        let f = Fp::new(p);
-        let Some(img) = image(f, &det, &adj, &delta, j, wlen, flen) else {
-            unlucky += 1;
-            if unlucky > 3 {
-                return None;
-            }
-            continue;
-        };
-        if let Some((rows, hs)) = &candidate {
-            let ok = rows
-                .iter()
-                .zip(&img.rows)
-                .all(|((nu, de), r)| agrees(f, nu, de, r))
-                && hs
-                    .iter()
-                    .zip(&img.h)
-                    .all(|((nu, de), r)| agrees(f, nu, de, r));
-            if ok {
-                break;
-            }
-            candidate = None;
-        }
-        crt.add(f, &img);
-        added += 1;
-        // A full attempt only once the first h reconstructs (cheap probe).
-        if added >= next_try && reconstruct_vec(&crt.h[0], &crt.m).is_some() {
-            next_try = added + added.div_ceil(4);
-            let rows: Option<Vec<_>> = crt
-                .rows
-                .iter()
-                .map(|c| reconstruct_vec(c, &crt.m))
-                .collect();
-            let hs: Option<Vec<_>> = crt.h.iter().map(|c| reconstruct_vec(c, &crt.m)).collect();
-            if let (Some(rows), Some(hs)) = (rows, hs) {
-                candidate = Some((rows, hs));
-            }
-        }
-        if added > 200 {
-            return None;
-        }
-    }
-    let (rows, hs) = candidate?;
+    let rows = lift_rows(&pp, adj, delta, &h, wlen)?;
     let mut u = Matrix::zeros(r.clone(), n, n);
     let mut lambda = Vec::with_capacity(n);
-    for (i, (nums, den)) in rows.into_iter().enumerate() {
-        let (l, prim) = primitive(nums, &den);
-        for (k, e) in poly_row(&prim, n, wlen).into_iter().enumerate() {
-            u.set(i, k, e);
+    let mut gs = Vec::with_capacity(n);
+    for (i, (row, (_, den))) in rows.into_iter().zip(&h).enumerate() {
+        let (g, prim) = content_split(&row);
+        if g.is_zero() {
+            return None;
         }
-        lambda.push(l);
+        for k in 0..n {
+            u.set(
+                i,
+                k,
+                QPoly::from_ints(prim[k * wlen..(k + 1) * wlen].to_vec()),
+            );
+        }
+        lambda.push(Q::new(den * &cont, g.clone()));
+        gs.push(g);
     }
-    // Last row: W_n = adj_n/lc(det), times Δ.
-    let lc = det.last()?.clone();
+    // Last row: adj_n·Δ/lc(c), made primitive with a positive scale.
+    let lc = det.last()?;
     let mut last = vec![BigInt::zero(); n * wlen];
-    for (k, (p, d)) in adj[n - 1].iter().zip(&delta).enumerate() {
+    for (k, (p, d)) in adj[n - 1].iter().zip(delta).enumerate() {
         for (t, c) in p.iter().enumerate() {
-            last[k * wlen + t] = c * d;
+            last[k * wlen + t] = if lc.is_negative() { -(c * d) } else { c * d };
         }
     }
-    let (l, prim) = primitive(last, &lc.abs());
-    let (l, prim) = if lc.is_negative() {
-        (l, prim.into_iter().map(|x| -x).collect::<Vec<_>>())
-    } else {
-        (l, prim)
-    };
-    for (k, e) in poly_row(&prim, n, wlen).into_iter().enumerate() {
-        u.set(n - 1, k, e);
+    let (g, prim) = content_split(&last);
+    if g.is_zero() {
+        return None;
     }
-    lambda.push(l);
-    let h: Vec<QPoly> = hs.into_iter().map(|(nu, de)| QPoly::new(nu, de)).collect();
+    for k in 0..n {
+        u.set(
+            n - 1,
+            k,
+            QPoly::from_ints(prim[k * wlen..(k + 1) * wlen].to_vec()),
+        );
+    }
+    lambda.push(Q::new(lc.abs(), g.clone()));
+    // V = [[I, −h], [0, 1]]·Λ⁻¹ and V⁻¹ = Λ·[[I, h], [0, 1]], each entry
+    // normalised once: −h_i/λ_n = −num_i·g_n/(den_i·|lc|), h_i·λ_i =
+    // num_i·cont/g_i (λ_i = den_i·cont/g_i).
+    let lc_abs = lc.abs();
     let mut v = Matrix::zeros(r.clone(), n, n);
     let mut v_inv = Matrix::zeros(r.clone(), n, n);
-    let last_inv = lambda[n - 1].recip();
-    for i in 0..n {
-        let li = QPoly::constant(&lambda[i]);
-        v.set(i, i, QPoly::constant(&lambda[i].recip()));
-        v_inv.set(i, i, li.clone());
-        if i < n - 1 {
-            v.set(i, n - 1, r.neg(&h[i].scale(&last_inv)));
-            v_inv.set(i, n - 1, r.mul(&h[i], &li));
-        }
+    for (i, l) in lambda.iter().enumerate() {
+        v.set(i, i, QPoly::constant(&l.recip()));
+        v_inv.set(i, i, QPoly::constant(l));
     }
-    v.set(n - 1, n - 1, QPoly::constant(&last_inv));
+    for (i, (nu, de)) in h.iter().enumerate() {
+        v.set(
+            i,
+            n - 1,
+            QPoly::new(nu.iter().map(|c| -(c * &g)).collect(), de * &lc_abs),
+        );
+        v_inv.set(
+            i,
+            n - 1,
+            QPoly::new(nu.iter().map(|c| c * &cont).collect(), gs[i].clone()),
+        );
+    }
+    let f = r.normalize(&QPoly::from_ints(det.to_vec()));
     let mut d = Matrix::identity(r.clone(), n);
-    d.set(n - 1, n - 1, r.normalize(&QPoly::from_ints(det)));
-    Some((SmallDecomposition { d, u, v, v_inv }, f0.p))
+    d.set(n - 1, n - 1, f);
+    // U⁻¹ = A·V·D⁻¹: column k < n is A's over λ_k, i.e. Ã_rk·g_k/(δ_r·den_k·cont);
+    // the last is (A_n − Σ_k A_k·h_k)/(f·λ_n) = Y_r·sign(lc)·g_n/(δ_r·E·cont)
+    // with E = lcm(den_k), H_k = h_k·E and Y_r = (Ã_rn·E − Σ_k Ã_rk·H_k)/pp(c)
+    // (exact over Z by Gauss's lemma).
+    let e = h.iter().fold(BigInt::one(), |l, (_, de)| {
+        crate::algebra::intgcd::lcm(&l, de)
+    });
+    let hs: Vec<Vec<BigInt>> = h
+        .iter()
+        .map(|(nu, de)| {
+            let s = &e / de;
+            nu.iter().map(|c| c * &s).collect()
+        })
+        .collect();
+    let mut u_inv = Matrix::zeros(r.clone(), n, n);
+    for (row, (ar, dr)) in at.iter().zip(delta).enumerate() {
+        for k in 0..n - 1 {
+            let den = dr * &h[k].1 * &cont;
+            u_inv.set(
+                row,
+                k,
+                QPoly::new(ar[k].iter().map(|c| c * &gs[k]).collect(), den),
+            );
+        }
+        let mut x: Vec<BigInt> = ar[n - 1].iter().map(|c| c * &e).collect();
+        for (ak, hk) in ar.iter().zip(&hs) {
+            if ak.is_empty() || hk.is_empty() {
+                continue;
+            }
+            let len = ak.len() + hk.len() - 1;
+            if x.len() < len {
+                x.resize(len, BigInt::zero());
+            }
+            for (t, c) in ak.iter().enumerate() {
+                if c.is_zero() {
+                    continue;
+                }
+                for (s2, y) in hk.iter().enumerate() {
+                    x[t + s2] -= c * y;
+                }
+            }
+        }
+        while x.last().is_some_and(|c| c.is_zero()) {
+            x.pop();
+        }
+        let y = crate::algebra::modgcd::int_div_exact(&x, &pp)?;
+        let scale = if lc.is_negative() {
+            -g.clone()
+        } else {
+            g.clone()
+        };
+        u_inv.set(
+            row,
+            n - 1,
+            QPoly::new(y.into_iter().map(|c| c * &scale).collect(), dr * &e * &cont),
+        );
+    }
+    Some(super::SmithDecomposition {
+        d,
+        u,
+        v,
+        u_inv,
+        v_inv,
+    })
 }
 
 impl SmallDecomposition {
@@ -412,6 +632,30 @@ impl SmallDecomposition {
 /// matrix.
 pub fn certificate_prime() -> Option<u64> {
     modular::primes().next()
+}
+
+/// `X·Y` over Q[x] summing only the products of nonzero entries (for the
+/// sparse factors V, V⁻¹ and D of this route).
+fn sparse_product(x: &Matrix<QxRing>, y: &Matrix<QxRing>) -> Matrix<QxRing> {
+    let r = &x.ring;
+    let mut out = Matrix::zeros(r.clone(), x.rows(), y.cols());
+    for i in 0..x.rows() {
+        for t in 0..x.cols() {
+            let a = x.get(i, t);
+            if a.is_zero() {
+                continue;
+            }
+            for k in 0..y.cols() {
+                let b = y.get(t, k);
+                if b.is_zero() {
+                    continue;
+                }
+                let e = r.add(out.get(i, k), &r.mul(a, b));
+                out.set(i, k, e);
+            }
+        }
+    }
+    out
 }
 
 /// Certifies a [`SmallDecomposition`] of `a` exactly: `U·A·V = D` over
@@ -445,13 +689,16 @@ pub fn certify_small(a: &Matrix<QxRing>, s: &SmallDecomposition, p: u64) -> Cert
     let big_n = leading_nonsingular(Fp::new(p), &at);
     let f = s.d.get(n - 1, n - 1);
     let degrees = tri && big_n.is_some() && f.degree() == big_n;
-    // The products only when the degree argument can conclude.
-    let prod = degrees && ClearedQx.product_equals(&[&s.u, a, &s.v], &s.d);
+    // The products only when the degree argument can conclude. V·V⁻¹ = I
+    // (V, V⁻¹ square) gives V⁻¹·V = I, so U·A·V = D follows from
+    // U·A = D·V⁻¹, which avoids multiplying U·A by V's large last column.
+    let vinv = degrees && sparse_product(&s.v, &s.v_inv) == Matrix::identity(r.clone(), n);
+    let prod = vinv && mul_cleared(&s.u, a).is_some_and(|ua| ua == sparse_product(&s.d, &s.v_inv));
     push(
         "U·A·V = D",
         prod,
         if prod {
-            "holds exactly"
+            "holds exactly (checked as U·A = D·V⁻¹ with V·V⁻¹ = I)"
         } else {
             "not established"
         }
@@ -464,8 +711,6 @@ pub fn certify_small(a: &Matrix<QxRing>, s: &SmallDecomposition, p: u64) -> Cert
         diag_ok,
         "D = diag(1, …, 1, f) with f monic".to_string(),
     );
-    let vinv =
-        degrees && ClearedQx.product_equals(&[&s.v, &s.v_inv], &Matrix::identity(r.clone(), n));
     push(
         "V unimodular",
         tri && vinv,
@@ -507,7 +752,9 @@ pub fn certify_small(a: &Matrix<QxRing>, s: &SmallDecomposition, p: u64) -> Cert
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::algebra::smith::nonsingular::{FastPath, try_fast};
+    use crate::algebra::smith::SmithDecomposition;
+    use crate::algebra::smith::certify::ProductCheck;
+    use crate::algebra::smith::nonsingular::{FastPath, Hermite, exact_hermite, try_fast};
     use crate::algebra::smith::trailing::integral_rows;
 
     fn random(n: usize, deg: usize, seed: u64) -> Matrix<QxRing> {
@@ -524,6 +771,26 @@ mod tests {
         Matrix::new(QxRing::new("x"), n, n, data)
     }
 
+    /// The old exact route: Q[x] Hermite structure, then integral rows.
+    fn exact_route(a: &Matrix<QxRing>) -> SmithDecomposition<QxRing> {
+        let (at, delta) = integral(a);
+        let bound = at
+            .iter()
+            .map(|row| {
+                row.iter()
+                    .map(|p| p.len().saturating_sub(1))
+                    .max()
+                    .unwrap_or(0)
+            })
+            .sum();
+        let (det, adj) = super::super::detadj::det_adj(&at, bound).expect("nonsingular");
+        let Some(Hermite::Decomposition(mut d)) = exact_hermite(a, &det, &adj, &delta) else {
+            panic!("the exact route applies");
+        };
+        integral_rows(&mut d);
+        *d
+    }
+
     #[test]
     fn modular_hermite_equals_the_exact_route_and_is_certified() {
         let mut compared = 0;
@@ -536,20 +803,30 @@ mod tests {
             (12, 1, 5),
         ] {
             let a = random(n, deg, seed);
-            let (s, p) = small_hermite(&a).expect("generic input");
-            let cert = certify_small(&a, &s, p);
-            assert!(cert.verified(), "{n}×{n}: {cert:?}");
-            let Some(FastPath::Decomposition(mut exact)) = try_fast(&a, u64::MAX) else {
-                panic!("the exact route applies");
+            let Some(FastPath::Decomposition(s)) = try_fast(&a, u64::MAX) else {
+                panic!("the fast path applies");
             };
-            integral_rows(&mut exact);
+            let p = certificate_prime().expect("a prime");
+            let cert = certify_small(&a, &SmallDecomposition::from_decomposition(&s), p);
+            assert!(cert.verified(), "{n}×{n}: {cert:?}");
+            assert!(s.certify(&a).verified(), "{n}×{n}");
+            let exact = exact_route(&a);
             assert_eq!(s.u, exact.u, "{n}×{n} deg {deg}");
             assert_eq!(s.v, exact.v);
             assert_eq!(s.d, exact.d);
             assert_eq!(s.v_inv, exact.v_inv);
+            assert_eq!(s.u_inv, exact.u_inv);
             compared += 1;
         }
         assert_eq!(compared, 6);
+    }
+
+    fn small_hermite(a: &Matrix<QxRing>) -> Option<(SmallDecomposition, u64)> {
+        let Some(FastPath::Decomposition(s)) = try_fast(a, u64::MAX) else {
+            return None;
+        };
+        let s = SmallDecomposition::from_decomposition(&s);
+        Some((s, certificate_prime()?))
     }
 
     #[test]
@@ -587,23 +864,34 @@ mod tests {
         );
         // The tampered triple still satisfies U·A·V = D: only the degree
         // argument rejects it.
-        assert!(ClearedQx.product_equals(&[&bad.u, &a, &bad.v], &bad.d));
+        assert!(super::super::certify::ClearedQx.product_equals(&[&bad.u, &a, &bad.v], &bad.d));
     }
 
     #[test]
     fn degenerate_inputs_are_declined() {
         let r = QxRing::new("x");
-        // Constant matrix (deg det = 0) and a singular leading matrix.
+        let hermite = |a: &Matrix<QxRing>| {
+            let (at, delta) = integral(a);
+            let (det, adj) = super::super::detadj::det_adj(&at, 2).expect("nonsingular");
+            hermite_from_adjugate(a, &at, &delta, &det, &adj)
+        };
+        // Constant matrix (deg det = 0).
         let c = |v: i64| QPoly::from_ints(vec![BigInt::from(v)]);
         let a = Matrix::new(r.clone(), 2, 2, vec![c(1), c(2), c(3), c(4)]);
-        assert!(small_hermite(&a).is_none());
-        let x = |v: i64| QPoly::from_ints(vec![BigInt::from(v), BigInt::one()]);
-        // Rows' leading coefficients [[1, 1], [1, 1]]: det has degree < 2.
-        let a = Matrix::new(r.clone(), 2, 2, vec![x(1), x(2), x(3), x(5)]);
-        assert!(small_hermite(&a).is_none());
+        assert!(hermite(&a).is_none());
         // diag(x, x): d_1 = x, no entry of adj's last row is invertible mod det.
+        let x = |v: i64| QPoly::from_ints(vec![BigInt::from(v), BigInt::one()]);
         let z = QPoly::from_ints(vec![]);
-        let a = Matrix::new(r, 2, 2, vec![x(0), z.clone(), z, x(0)]);
-        assert!(small_hermite(&a).is_none());
+        let a = Matrix::new(r.clone(), 2, 2, vec![x(0), z.clone(), z, x(0)]);
+        assert!(hermite(&a).is_none());
+        // Rows' leading coefficients [[1, 1], [1, 1]]: det has degree < 2.
+        // The decomposition exists and is certified the usual way, but the
+        // degree argument does not apply.
+        let a = Matrix::new(r, 2, 2, vec![x(1), x(2), x(3), x(5)]);
+        let s = hermite(&a).expect("det = x − 1 has degree 1");
+        assert!(s.certify(&a).verified());
+        let p = certificate_prime().expect("a prime");
+        let c = certify_small(&a, &SmallDecomposition::from_decomposition(&s), p);
+        assert!(!c.verified());
     }
 }
