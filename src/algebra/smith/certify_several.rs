@@ -24,13 +24,15 @@
 //! are constants and the same holds over Q[all]: d_(n−1) = 1 and
 //! d_n ~ c.
 
-use super::certify::{Certificate, Check};
+use super::certify::{Certificate, Check, ProductCheck};
 use super::several::degree_bound;
 use crate::algebra::matrix::Matrix;
 use crate::algebra::modular::{self, Fp, Points, UP};
 use crate::algebra::mpoly::{MPoly, Monomial};
 use crate::algebra::polyring::PolyRing;
-use crate::algebra::ring::Ring;
+use crate::algebra::ratfunc::RatFuncField;
+use crate::algebra::ring::{GcdDomain, Ring};
+use crate::algebra::upoly::UPolyRing;
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Zero};
@@ -235,6 +237,241 @@ pub fn certify_last_factor_several(
             "not established".into()
         },
     });
+    Certificate { checks }
+}
+
+/// A lower bound on `deg_λ det A` (λ = symbol `s`): the degree of the
+/// image of det A in Z_p[λ] at a point of the other symbols, det taken at
+/// `N + 1` values of λ (N = [`degree_bound`]) and interpolated. Reduction
+/// and evaluation form a ring map, which can lower degrees, never raise
+/// them. The largest degree over a few primes and points; stops as soon as
+/// it reaches `target`. Returns `(degree, p)`.
+pub fn det_degree_lower_bound(a: &Matrix<PolyRing>, s: usize, target: usize) -> Option<(usize, u64)> {
+    let n = a.rows();
+    if n != a.cols() {
+        return None;
+    }
+    let bound = degree_bound(a, s);
+    let nv = a.ring.nvars();
+    let mut pts = Points::new(0x5eed_0de9_0f00_0015);
+    let mut best: Option<(usize, u64)> = None;
+    for p in modular::primes().take(3) {
+        if (bound as u64) + 1 >= p {
+            return best;
+        }
+        let f = Fp::new(p);
+        for _ in 0..2 {
+            let point: Vec<u64> = (0..nv).map(|_| pts.next(f)).collect();
+            let Some(img): Option<Vec<UP>> =
+                a.entries().iter().map(|e| image_in(f, e, s, &point)).collect()
+            else {
+                break;
+            };
+            let xs: Vec<u64> = (0..=bound as u64).collect();
+            let ys: Vec<u64> = xs
+                .iter()
+                .map(|&x| {
+                    let m: Vec<u64> = img.iter().map(|e| modular::eval(f, e, x)).collect();
+                    det_mod(f, m, n)
+                })
+                .collect();
+            let d = modular::deg(&interpolate(f, &xs, &ys));
+            if let Some(d) = d
+                && best.is_none_or(|(b, _)| d > b)
+            {
+                best = Some((d, p));
+            }
+            if best.is_some_and(|(b, _)| b >= target) {
+                return best;
+            }
+        }
+    }
+    best
+}
+
+/// det of the row-major n×n matrix `m` over Z_p (Gaussian elimination).
+fn det_mod(f: Fp, mut m: Vec<u64>, n: usize) -> u64 {
+    let mut det = 1u64;
+    for k in 0..n {
+        let Some(piv) = (k..n).find(|&i| m[i * n + k] != 0) else {
+            return 0;
+        };
+        if piv != k {
+            for j in 0..n {
+                m.swap(piv * n + j, k * n + j);
+            }
+            det = f.neg(det);
+        }
+        let pk = m[k * n + k];
+        det = f.mul(det, pk);
+        let inv = f.inv(pk);
+        for i in k + 1..n {
+            let c = f.mul(m[i * n + k], inv);
+            if c == 0 {
+                continue;
+            }
+            for j in k..n {
+                let t = f.mul(c, m[k * n + j]);
+                m[i * n + j] = f.sub(m[i * n + j], t);
+            }
+        }
+    }
+    det
+}
+
+/// The polynomial of degree ≤ len − 1 through `(xs[i], ys[i])` over Z_p
+/// (Newton's divided differences), lowest coefficient first, trimmed.
+fn interpolate(f: Fp, xs: &[u64], ys: &[u64]) -> UP {
+    let k = xs.len();
+    let mut c = ys.to_vec();
+    for j in 1..k {
+        for i in (j..k).rev() {
+            let num = f.sub(c[i], c[i - 1]);
+            let den = f.sub(xs[i], xs[i - j]);
+            c[i] = f.mul(num, f.inv(den));
+        }
+    }
+    // Horner on the Newton form: p = c0 + (x − x0)(c1 + (x − x1)(…)).
+    let mut out: UP = vec![0; k];
+    let mut len = 0usize;
+    for i in (0..k).rev() {
+        // out ← out·(x − x_i) + c_i
+        let mut next = vec![0u64; len + 1];
+        for (t, &o) in out.iter().take(len).enumerate() {
+            next[t + 1] = f.add(next[t + 1], o);
+            next[t] = f.sub(next[t], f.mul(o, xs[i]));
+        }
+        next[0] = f.add(next[0], c[i]);
+        len += 1;
+        out[..len].copy_from_slice(&next[..len]);
+    }
+    modular::trim(out)
+}
+
+/// Certifies a Smith decomposition `U·A·V = D` over K[λ], K = Q(others), λ
+/// the symbol with index `s`, of a square A with no zero invariant factor,
+/// without inverse products (`a` over Q[all], `ap` the same matrix over
+/// K[λ]; `check` evaluates the product):
+/// 1. `U·A·V = D` exactly, D diagonal with monic nonzero entries, each
+///    dividing the next (pseudo-remainder in λ over Q[all] of the cleared
+///    entries, zero exactly when the division holds over K[λ]);
+/// 2. `deg_λ det A ≥ Σ deg_λ D_ii` from the image of det A at a point mod
+///    p (a ring map cannot raise the degree).
+///
+/// Then `det U·det A·det V = det D ≠ 0` in the domain K[λ], so `deg det U
+/// + deg det V = Σ deg D_ii − deg det A ≤ 0`: both determinants are nonzero
+/// elements of K, units of K[λ].
+pub fn certify_principal_degrees(
+    a: &Matrix<PolyRing>,
+    s: usize,
+    ap: &Matrix<UPolyRing<RatFuncField>>,
+    [u, d, v]: [&Matrix<UPolyRing<RatFuncField>>; 3],
+    check: &dyn ProductCheck<UPolyRing<RatFuncField>>,
+) -> Certificate {
+    let n = a.rows();
+    let kr = &ap.ring;
+    let mut checks = Vec::new();
+    let mut push = |property: &str, ok: bool, detail: String| {
+        checks.push(Check {
+            property: property.to_string(),
+            ok,
+            detail,
+        })
+    };
+    let shapes = a.cols() == n
+        && ap.rows() == n
+        && ap.cols() == n
+        && [u, d, v].iter().all(|m| m.rows() == n && m.cols() == n);
+    push("shapes", shapes, format!("A, U, D, V are {n}×{n}"));
+    if !shapes {
+        return Certificate { checks };
+    }
+    let diag = d.diagonal();
+    let diag_ok = d.is_diagonal() && diag.iter().all(|e| !kr.is_zero(e));
+    let normalised = diag_ok && diag.iter().all(|e| kr.normalize(e) == *e);
+    let total: usize = diag.iter().map(|e| e.degree().unwrap_or(0)).sum();
+    // Degrees first: the product is evaluated only if they can conclude.
+    let lower = if diag_ok {
+        det_degree_lower_bound(a, s, total)
+    } else {
+        None
+    };
+    let degrees = lower.is_some_and(|(l, _)| l >= total);
+    let prod = degrees && normalised && check.product_equals(&[u, ap, v], d);
+    push(
+        "U·A·V = D",
+        prod,
+        if prod {
+            "holds exactly (denominators cleared, compared over Q[all])"
+        } else {
+            "not established"
+        }
+        .to_string(),
+    );
+    push(
+        "D diagonal",
+        diag_ok,
+        if diag_ok {
+            "yes, with no zero on the diagonal"
+        } else {
+            "D is not diagonal or has a zero on its diagonal"
+        }
+        .to_string(),
+    );
+    let name = &a.ring.names[s];
+    let unimod = prod && degrees;
+    let why = match lower {
+        Some((l, p)) => format!(
+            "det U·det A·det V = det D ≠ 0 in {}, and deg_{name} det A ≥ {l} (its image at a point of the other symbols mod p = {p}) ≥ Σ deg_{name} D_ii = {total}: so deg det U + deg det V ≤ 0",
+            kr.name()
+        ),
+        None => "no degree bound for det A".to_string(),
+    };
+    for m in ["U", "V"] {
+        push(
+            &format!("{m} unimodular"),
+            unimod,
+            if unimod {
+                format!("{why}; det {m} is a nonzero element of {}, a unit", kr.k.name())
+            } else {
+                format!("not established ({why})")
+            },
+        );
+    }
+    push("zeros last", diag_ok, format!("{n} nonzero invariant factor(s)"));
+    push(
+        "invariant factors normalised",
+        normalised,
+        "each diagonal entry is monic in the principal symbol".to_string(),
+    );
+    let cleared: Vec<MPoly> = diag
+        .iter()
+        .map(|e| {
+            let l = e
+                .0
+                .iter()
+                .fold(MPoly::one(a.ring.nvars()), |l, c| crate::algebra::gcd::lcm(&l, c.den()));
+            let cs: Vec<MPoly> = e
+                .0
+                .iter()
+                .map(|c| c.num() * &l.div_exact(c.den()).unwrap_or_else(|| MPoly::zero(a.ring.nvars())))
+                .collect();
+            MPoly::from_coeffs_in(s, &cs, a.ring.nvars())
+        })
+        .collect();
+    let div_ok = diag_ok
+        && cleared
+            .windows(2)
+            .all(|w| crate::algebra::gcd::prem(&w[1], &w[0], s).is_zero());
+    push(
+        "divisibility f1 | f2 | …",
+        div_ok,
+        if div_ok {
+            format!("each invariant factor divides the next (pseudo-remainder in {name} zero over Q[all])")
+        } else {
+            "not established".to_string()
+        },
+    );
     Certificate { checks }
 }
 

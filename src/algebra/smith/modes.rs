@@ -714,14 +714,17 @@ fn principal(
         return Ok(r);
     }
     refuse_if_too_large(a, "the principal mode")?;
-    opts.progress
-        .phase(&format!("elimination over {ring_name}"));
-    let dec = SmithDecomposition::new(&ap);
-    let alg = "elimination over K[λ]: least-degree pivot, division with remainder";
     let check = ClearedDenominators {
         p,
         nvars: a.ring.nvars(),
     };
+    if let Some(r) = principal_fraction_free(name, a, &ap, p, &note, opts, &check)? {
+        return Ok(r);
+    }
+    opts.progress
+        .phase(&format!("elimination over {ring_name}"));
+    let dec = SmithDecomposition::new(&ap);
+    let alg = "elimination over K[λ]: least-degree pivot, division with remainder";
     let (mut report, dec) = generic_report(
         name,
         a,
@@ -741,8 +744,64 @@ fn principal(
             .collect(),
     );
     opts.progress.phase("denominator-free form over Q[all]");
-    report.denominator_free = Some(denominator_free(a, &dec, p)?);
+    report.denominator_free = Some(denominator_free(a, [&dec.u, &dec.d, &dec.v], p)?);
     Ok(report)
+}
+
+/// The principal mode for a square nonsingular input by the fraction-free
+/// elimination over Q[others][λ] ([`super::fraction_free`]), certified
+/// without inverse products
+/// ([`super::certify_several::certify_principal_degrees`]); `Ok(None)`
+/// when that route does not apply or does not certify (the caller takes
+/// the elimination over K[λ]).
+fn principal_fraction_free(
+    name: &str,
+    a: &Matrix<PolyRing>,
+    ap: &Matrix<UPolyRing<RatFuncField>>,
+    p: usize,
+    note: &str,
+    opts: &SmithOptions,
+    check: &ClearedDenominators,
+) -> Result<Option<SmithReport>, SmithError> {
+    let kr = &ap.ring;
+    opts.progress.phase(&format!(
+        "fraction-free elimination over Q[{}][{}]",
+        kr.k.shown.join(", "),
+        a.ring.names[p]
+    ));
+    let Some(ff) = super::fraction_free::eliminate_fraction_free(a, p) else {
+        return Ok(None);
+    };
+    let Some([u, d, v]) = super::fraction_free::over_k(&ff, kr, p) else {
+        return Ok(None);
+    };
+    opts.progress
+        .phase("certifying U·A·V = D and deg det A (no inverse products)");
+    let cert =
+        super::certify_several::certify_principal_degrees(a, p, ap, [&u, &d, &v], check);
+    if !cert.verified() {
+        return Ok(None);
+    }
+    let mut report = transforms_report(
+        name,
+        a,
+        [&d, &u, &v],
+        cert,
+        "fraction-free elimination over Q[others][λ] (pseudo-division in λ, contents in Q[others] removed from each changed line), U = diag(1/lc)·U′, V = V′",
+        Mode::Principal,
+        kr.name(),
+        note.to_string(),
+        opts,
+    );
+    report.invariant_factor_coefficients = Some(
+        d.diagonal()
+            .iter()
+            .map(|f| f.coeffs().iter().map(|c| kr.k.lmx(c)).collect())
+            .collect(),
+    );
+    opts.progress.phase("denominator-free form over Q[all]");
+    report.denominator_free = Some(denominator_free(a, [&u, &d, &v], p)?);
+    Ok(Some(report))
 }
 
 /// From this size on, a square principal-mode input whose (n−1)-th
@@ -925,11 +984,11 @@ fn clearing_scale(line: &[&UPoly<RatFunc>], n: usize) -> (MPoly, MPoly) {
 
 fn denominator_free(
     a: &Matrix<PolyRing>,
-    dec: &SmithDecomposition<UPolyRing<RatFuncField>>,
+    [du, dd, dv]: [&Matrix<UPolyRing<RatFuncField>>; 3],
     p: usize,
 ) -> Result<DenominatorFree, SmithError> {
     let n = a.ring.nvars();
-    let kr = &dec.u.ring;
+    let kr = &du.ring;
     let pr = a.ring.clone();
     let scale_line = |line: Vec<&UPoly<RatFunc>>| -> Vec<MPoly> {
         let (l, g) = clearing_scale(&line, n);
@@ -941,16 +1000,16 @@ fn denominator_free(
             })
             .collect()
     };
-    let m = dec.u.rows();
+    let m = du.rows();
     let mut u_rows = Vec::new();
     for i in 0..m {
-        u_rows.extend(scale_line((0..m).map(|j| dec.u.get(i, j)).collect()));
+        u_rows.extend(scale_line((0..m).map(|j| du.get(i, j)).collect()));
     }
     let u2 = Matrix::new(pr.clone(), m, m, u_rows);
-    let nn = dec.v.cols();
+    let nn = dv.cols();
     let mut v2 = Matrix::zeros(pr.clone(), nn, nn);
     for j in 0..nn {
-        let col = scale_line((0..nn).map(|i| dec.v.get(i, j)).collect());
+        let col = scale_line((0..nn).map(|i| dv.get(i, j)).collect());
         for (i, e) in col.into_iter().enumerate() {
             v2.set(i, j, e);
         }
@@ -1012,7 +1071,11 @@ fn denominator_free(
         ),
     });
     // D′ are associates over K of the certified invariant factors.
-    let inv = dec.invariant_factors();
+    let inv: Vec<UPoly<RatFunc>> = dd
+        .diagonal()
+        .into_iter()
+        .filter(|e| !kr.is_zero(e))
+        .collect();
     let assoc_ok = inv.iter().enumerate().all(|(i, f)| {
         let e = dprim.get(i, i);
         let as_k = kr.trim(e.coeffs_in(p).into_iter().map(RatFunc::from_poly).collect());
