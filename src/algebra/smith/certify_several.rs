@@ -24,15 +24,16 @@
 //! are constants and the same holds over Q[all]: d_(n−1) = 1 and
 //! d_n ~ c.
 
-use super::certify::{Certificate, Check, ProductCheck};
+use super::certify::{Certificate, Check};
 use super::several::degree_bound;
 use crate::algebra::matrix::Matrix;
 use crate::algebra::modular::{self, Fp, Points, UP};
 use crate::algebra::mpoly::{MPoly, Monomial};
 use crate::algebra::polyring::PolyRing;
-use crate::algebra::ratfunc::RatFuncField;
+use crate::algebra::gcd::lcm;
+use crate::algebra::ratfunc::{RatFunc, RatFuncField};
 use crate::algebra::ring::{GcdDomain, Ring};
-use crate::algebra::upoly::UPolyRing;
+use crate::algebra::upoly::{UPoly, UPolyRing};
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Zero};
@@ -348,27 +349,156 @@ fn interpolate(f: Fp, xs: &[u64], ys: &[u64]) -> UP {
     modular::trim(out)
 }
 
+/// The entries of `line` (over K[λ]) times the lcm of their
+/// denominators, as polynomials over Q[all] (λ = symbol `s`).
+fn cleared_line(line: &[&UPoly<RatFunc>], s: usize, nv: usize) -> Vec<MPoly> {
+    let l = line
+        .iter()
+        .flat_map(|e| e.0.iter())
+        .fold(MPoly::one(nv), |l, c| {
+            if c.is_polynomial() { l } else { lcm(&l, c.den()) }
+        });
+    line.iter()
+        .map(|e| {
+            let cs: Vec<MPoly> = e
+                .0
+                .iter()
+                .map(|c| c.num() * &l.div_exact(c.den()).unwrap_or_else(|| MPoly::zero(nv)))
+                .collect();
+            MPoly::from_coeffs_in(s, &cs, nv)
+        })
+        .collect()
+}
+
+/// det of a square matrix over Q[all] by expansion along its row with the
+/// most terms, the minors by fraction-free elimination: a transform whose
+/// rows differ greatly in size (the row of a Bezout step) never enters an
+/// exact division. `None` if not square.
+pub fn det_expanding_largest_row(m: &Matrix<PolyRing>) -> Option<MPoly> {
+    let n = m.rows();
+    if m.cols() != n {
+        return None;
+    }
+    if n <= 2 {
+        return m.det();
+    }
+    let size = |i: usize| m.row(i).iter().map(|e| e.terms().len()).sum::<usize>();
+    let r = (0..n).max_by_key(|&i| size(i))?;
+    let rows: Vec<usize> = (0..n).filter(|&i| i != r).collect();
+    let mut acc = MPoly::zero(m.ring.nvars());
+    for j in 0..n {
+        let e = m.get(r, j);
+        if e.is_zero() {
+            continue;
+        }
+        let cols: Vec<usize> = (0..n).filter(|&c| c != j).collect();
+        let minor = m.submatrix(&rows, &cols).det()?;
+        let t = e * &minor;
+        acc = if (r + j) % 2 == 0 { &acc + &t } else { &acc - &t };
+    }
+    Some(acc)
+}
+
+/// Whether `U·A·V = D` over K[λ] (λ = symbol `s`), evaluated over Q[all]
+/// with each row i of U cleared by δ_i, each column j of V by ε_j and
+/// each entry of D by γ_ij (all in Q[others]): `U′ = diag(δ)·U`, `V′ =
+/// V·diag(ε)`, and `U·A·V = D` ⇔ `γ_ij·(U′·A·V′)_ij = δ_i·ε_j·D̃_ij` for
+/// all i, j. The same statement as clearing whole matrices, with far
+/// smaller scales.
+pub fn product_by_lines(
+    a: &Matrix<PolyRing>,
+    s: usize,
+    [u, d, v]: [&Matrix<UPolyRing<RatFuncField>>; 3],
+) -> bool {
+    let (m, n) = (a.rows(), a.cols());
+    let nv = a.ring.nvars();
+    if u.rows() != m || u.cols() != m || v.rows() != n || v.cols() != n {
+        return false;
+    }
+    if d.rows() != m || d.cols() != n {
+        return false;
+    }
+    let scale_of = |line: &[&UPoly<RatFunc>]| {
+        line.iter()
+            .flat_map(|e| e.0.iter())
+            .fold(MPoly::one(nv), |l, c| {
+                if c.is_polynomial() { l } else { lcm(&l, c.den()) }
+            })
+    };
+    let rows: Vec<(MPoly, Vec<MPoly>)> = (0..m)
+        .map(|i| {
+            let line: Vec<&UPoly<RatFunc>> = (0..m).map(|j| u.get(i, j)).collect();
+            (scale_of(&line), cleared_line(&line, s, nv))
+        })
+        .collect();
+    let cols: Vec<(MPoly, Vec<MPoly>)> = (0..n)
+        .map(|j| {
+            let line: Vec<&UPoly<RatFunc>> = (0..n).map(|i| v.get(i, j)).collect();
+            (scale_of(&line), cleared_line(&line, s, nv))
+        })
+        .collect();
+    // U′·A, row by row.
+    let ua: Vec<Vec<MPoly>> = rows
+        .iter()
+        .map(|(_, r)| {
+            (0..n)
+                .map(|j| {
+                    r.iter()
+                        .enumerate()
+                        .filter(|(k, x)| !x.is_zero() && !a.get(*k, j).is_zero())
+                        .fold(MPoly::zero(nv), |acc, (k, x)| &acc + &(x * a.get(k, j)))
+                })
+                .collect()
+        })
+        .collect();
+    for (i, (di, _)) in rows.iter().enumerate() {
+        for (j, (ej, c)) in cols.iter().enumerate() {
+            let x = ua[i]
+                .iter()
+                .zip(c)
+                .filter(|(p, q)| !p.is_zero() && !q.is_zero())
+                .fold(MPoly::zero(nv), |acc, (p, q)| &acc + &(p * q));
+            let dij = d.get(i, j);
+            if dij.0.is_empty() {
+                if !x.is_zero() {
+                    return false;
+                }
+                continue;
+            }
+            let g = scale_of(&[dij]);
+            let dt = cleared_line(&[dij], s, nv).remove(0);
+            if &g * &x != &(di * ej) * &dt {
+                return false;
+            }
+        }
+    }
+    true
+}
+
 /// Certifies a Smith decomposition `U·A·V = D` over K[λ], K = Q(others), λ
-/// the symbol with index `s`, of a square A with no zero invariant factor,
-/// without inverse products (`a` over Q[all], `ap` the same matrix over
-/// K[λ]; `check` evaluates the product):
-/// 1. `U·A·V = D` exactly, D diagonal with monic nonzero entries, each
-///    dividing the next (pseudo-remainder in λ over Q[all] of the cleared
-///    entries, zero exactly when the division holds over K[λ]);
-/// 2. `deg_λ det A ≥ Σ deg_λ D_ii` from the image of det A at a point mod
-///    p (a ring map cannot raise the degree).
-///
-/// Then `det U·det A·det V = det D ≠ 0` in the domain K[λ], so `deg det U
-/// + deg det V = Σ deg D_ii − deg det A ≤ 0`: both determinants are nonzero
-/// elements of K, units of K[λ].
+/// the symbol with index `s`, without inverse products (`a` over Q[all],
+/// `ap` the same matrix over K[λ]; the product is evaluated by
+/// [`product_by_lines`]):
+/// 1. `U·A·V = D` exactly, D diagonal with monic entries, zeros last, each
+///    nonzero entry dividing the next (pseudo-remainder in λ over Q[all]
+///    of the cleared entries, zero exactly when the division holds over
+///    K[λ]);
+/// 2. for a square A with no zero on D's diagonal: `deg_λ det A ≥ Σ deg_λ
+///    D_ii` from the image of det A at a point mod p (a ring map cannot
+///    raise the degree). Then `det U·det A·det V = det D ≠ 0` in the domain
+///    K[λ], so `deg det U + deg det V ≤ 0`: both determinants are nonzero
+///    elements of K, units of K[λ];
+/// 3. otherwise: U with each row and V with each column cleared of
+///    denominators (by an element of Q[others]) have determinants (fraction
+///    -free elimination over Q[all]) that are nonzero and free of λ.
 pub fn certify_principal_degrees(
     a: &Matrix<PolyRing>,
     s: usize,
     ap: &Matrix<UPolyRing<RatFuncField>>,
     [u, d, v]: [&Matrix<UPolyRing<RatFuncField>>; 3],
-    check: &dyn ProductCheck<UPolyRing<RatFuncField>>,
 ) -> Certificate {
-    let n = a.rows();
+    let (m, n) = (a.rows(), a.cols());
+    let nv = a.ring.nvars();
     let kr = &ap.ring;
     let mut checks = Vec::new();
     let mut push = |property: &str, ok: bool, detail: String| {
@@ -378,26 +508,35 @@ pub fn certify_principal_degrees(
             detail,
         })
     };
-    let shapes = a.cols() == n
-        && ap.rows() == n
+    let shapes = ap.rows() == m
         && ap.cols() == n
-        && [u, d, v].iter().all(|m| m.rows() == n && m.cols() == n);
-    push("shapes", shapes, format!("A, U, D, V are {n}×{n}"));
+        && (u.rows(), u.cols()) == (m, m)
+        && (d.rows(), d.cols()) == (m, n)
+        && (v.rows(), v.cols()) == (n, n);
+    push(
+        "shapes",
+        shapes,
+        format!("A and D are {m}×{n}, U is {m}×{m}, V is {n}×{n}"),
+    );
     if !shapes {
         return Certificate { checks };
     }
     let diag = d.diagonal();
-    let diag_ok = d.is_diagonal() && diag.iter().all(|e| !kr.is_zero(e));
-    let normalised = diag_ok && diag.iter().all(|e| kr.normalize(e) == *e);
+    let rank = diag.iter().take_while(|e| !kr.is_zero(e)).count();
+    let diag_ok = d.is_diagonal();
+    let zeros_last = diag[rank..].iter().all(|e| kr.is_zero(e));
+    let normalised = diag[..rank].iter().all(|e| kr.normalize(e) == *e);
     let total: usize = diag.iter().map(|e| e.degree().unwrap_or(0)).sum();
+    let full = m == n && rank == n;
     // Degrees first: the product is evaluated only if they can conclude.
-    let lower = if diag_ok {
+    let lower = if full && diag_ok {
         det_degree_lower_bound(a, s, total)
     } else {
         None
     };
     let degrees = lower.is_some_and(|(l, _)| l >= total);
-    let prod = degrees && normalised && check.product_equals(&[u, ap, v], d);
+    let structure = diag_ok && zeros_last && normalised;
+    let prod = (degrees || !full) && structure && product_by_lines(a, s, [u, d, v]);
     push(
         "U·A·V = D",
         prod,
@@ -411,58 +550,83 @@ pub fn certify_principal_degrees(
     push(
         "D diagonal",
         diag_ok,
-        if diag_ok {
-            "yes, with no zero on the diagonal"
-        } else {
-            "D is not diagonal or has a zero on its diagonal"
-        }
-        .to_string(),
+        if diag_ok { "yes" } else { "D has a nonzero off-diagonal entry" }.to_string(),
     );
     let name = &a.ring.names[s];
-    let unimod = prod && degrees;
-    let why = match lower {
-        Some((l, p)) => format!(
-            "det U·det A·det V = det D ≠ 0 in {}, and deg_{name} det A ≥ {l} (its image at a point of the other symbols mod p = {p}) ≥ Σ deg_{name} D_ii = {total}: so deg det U + deg det V ≤ 0",
-            kr.name()
-        ),
-        None => "no degree bound for det A".to_string(),
-    };
-    for m in ["U", "V"] {
-        push(
-            &format!("{m} unimodular"),
-            unimod,
-            if unimod {
-                format!("{why}; det {m} is a nonzero element of {}, a unit", kr.k.name())
-            } else {
-                format!("not established ({why})")
-            },
+    if full {
+        let unimod = prod && degrees;
+        let why = match lower {
+            Some((l, p)) => format!(
+                "det U·det A·det V = det D ≠ 0 in {}, and deg_{name} det A ≥ {l} (its image at a point of the other symbols mod p = {p}) ≥ Σ deg_{name} D_ii = {total}: so deg det U + deg det V ≤ 0",
+                kr.name()
+            ),
+            None => "no degree bound for det A".to_string(),
+        };
+        for nm in ["U", "V"] {
+            push(
+                &format!("{nm} unimodular"),
+                unimod,
+                if unimod {
+                    format!("{why}; det {nm} is a nonzero element of {}, a unit", kr.k.name())
+                } else {
+                    format!("not established ({why})")
+                },
+            );
+        }
+    } else {
+        let ring = a.ring.clone();
+        let u2 = Matrix::new(
+            ring.clone(),
+            m,
+            m,
+            (0..m)
+                .flat_map(|i| cleared_line(&(0..m).map(|j| u.get(i, j)).collect::<Vec<_>>(), s, nv))
+                .collect(),
         );
+        let mut v2 = Matrix::zeros(ring, n, n);
+        for j in 0..n {
+            let col = cleared_line(&(0..n).map(|i| v.get(i, j)).collect::<Vec<_>>(), s, nv);
+            for (i, e) in col.into_iter().enumerate() {
+                v2.set(i, j, e);
+            }
+        }
+        for (nm, mat) in [("U", &u2), ("V", &v2)] {
+            let det = if prod { det_expanding_largest_row(mat) } else { None };
+            let ok = det
+                .as_ref()
+                .is_some_and(|x| !x.is_zero() && !x.contains_var(s));
+            push(
+                &format!("{nm} unimodular"),
+                ok,
+                match det {
+                    Some(x) => format!(
+                        "{nm}′ ({nm} with each {} cleared of denominators in Q[others]) has det {} over Q[all]{}",
+                        if nm == "U" { "row" } else { "column" },
+                        a.ring.format(&x),
+                        if ok { format!(", a nonzero element of Q[others]: det {nm} is a unit of {}", kr.name()) } else { ", not a nonzero element of Q[others]".to_string() }
+                    ),
+                    None => "not established".to_string(),
+                },
+            );
+        }
     }
-    push("zeros last", diag_ok, format!("{n} nonzero invariant factor(s)"));
+    push(
+        "zeros last",
+        zeros_last,
+        format!("{rank} nonzero invariant factor(s), then zeros"),
+    );
     push(
         "invariant factors normalised",
         normalised,
-        "each diagonal entry is monic in the principal symbol".to_string(),
+        "each nonzero diagonal entry is monic in the principal symbol".to_string(),
     );
-    let cleared: Vec<MPoly> = diag
+    let cleared: Vec<MPoly> = diag[..rank]
         .iter()
-        .map(|e| {
-            let l = e
-                .0
-                .iter()
-                .fold(MPoly::one(a.ring.nvars()), |l, c| crate::algebra::gcd::lcm(&l, c.den()));
-            let cs: Vec<MPoly> = e
-                .0
-                .iter()
-                .map(|c| c.num() * &l.div_exact(c.den()).unwrap_or_else(|| MPoly::zero(a.ring.nvars())))
-                .collect();
-            MPoly::from_coeffs_in(s, &cs, a.ring.nvars())
-        })
+        .map(|e| cleared_line(&[e], s, nv).remove(0))
         .collect();
-    let div_ok = diag_ok
-        && cleared
-            .windows(2)
-            .all(|w| crate::algebra::gcd::prem(&w[1], &w[0], s).is_zero());
+    let div_ok = cleared
+        .windows(2)
+        .all(|w| crate::algebra::gcd::prem(&w[1], &w[0], s).is_zero());
     push(
         "divisibility f1 | f2 | …",
         div_ok,

@@ -1,16 +1,15 @@
 //! The principal mode's elimination without rational-function arithmetic:
-//! a Smith elimination over R[λ], R = Q[others], for a square nonsingular
-//! A over Q[all]. Every operation is `row_i ← m·row_i − q·row_k` (and the
+//! a Smith elimination over R[λ], R = Q[others], for any A over Q[all]
+//! (any shape and rank). Every operation is `row_i ← m·row_i − q·row_k` (and the
 //! same on columns) with `m ∈ R \ {0}` (a unit of K = Q(others)) and
 //! `q ∈ R[λ]` from a pseudo-division in λ, so U′ and V′ stay polynomial
-//! and `U′·A·V′ = diag(e_1, …, e_n)` over Q[all], with det U′ and det V′
+//! and `U′·A·V′ = diag(e_1, …, e_r, 0, …)` over Q[all], with det U′ and det V′
 //! nonzero elements of R and e_i | e_(i+1) over K[λ]. The content in R of
 //! each changed row (column), taken over the working matrix and U′ (V′)
 //! together, is divided out, which keeps the entries near the size of the
 //! minors. Nothing here is trusted: [`super::certify_several::
 //! certify_principal_degrees`] checks the result from scratch. This module
-//! must not certify, choose a mode or print; it returns `None` for a
-//! singular or non-square input (the caller takes the field elimination).
+//! must not certify, choose a mode or print.
 
 use crate::algebra::gcd::{gcd, prem};
 use crate::algebra::matrix::Matrix;
@@ -27,7 +26,8 @@ pub struct FractionFree {
     pub u: Matrix<PolyRing>,
     /// Column transform, polynomial.
     pub v: Matrix<PolyRing>,
-    /// The diagonal, each entry dividing the next over K[λ].
+    /// The nonzero diagonal (length the rank), each entry dividing the
+    /// next over K[λ]; the rest of `U′·A·V′` is zero.
     pub e: Vec<MPoly>,
 }
 
@@ -39,7 +39,8 @@ struct Work {
     m: Vec<Vec<MPoly>>,
     u: Vec<Vec<MPoly>>,
     v: Vec<Vec<MPoly>>,
-    n: usize,
+    rows: usize,
+    cols: usize,
     p: usize,
 }
 
@@ -109,9 +110,11 @@ fn reduce_line(line: &mut [&mut MPoly]) {
 
 impl Work {
     fn row_op(&mut self, i: usize, k: usize, m: &MPoly, q: &MPoly) {
-        for j in 0..self.n {
+        for j in 0..self.cols {
             let a = &(m * &self.m[i][j]) - &(q * &self.m[k][j]);
             self.m[i][j] = a;
+        }
+        for j in 0..self.rows {
             let b = &(m * &self.u[i][j]) - &(q * &self.u[k][j]);
             self.u[i][j] = b;
         }
@@ -121,9 +124,11 @@ impl Work {
     }
 
     fn col_op(&mut self, j: usize, k: usize, m: &MPoly, q: &MPoly) {
-        for i in 0..self.n {
+        for i in 0..self.rows {
             let a = &(m * &self.m[i][j]) - &(q * &self.m[i][k]);
             self.m[i][j] = a;
+        }
+        for i in 0..self.cols {
             let b = &(m * &self.v[i][j]) - &(q * &self.v[i][k]);
             self.v[i][j] = b;
         }
@@ -140,8 +145,8 @@ impl Work {
     /// active block.
     fn pivot(&self, k: usize) -> Option<(usize, usize)> {
         let mut best: Option<((u32, usize), (usize, usize))> = None;
-        for i in k..self.n {
-            for j in k..self.n {
+        for i in k..self.rows {
+            for j in k..self.cols {
                 let e = &self.m[i][j];
                 if let Some(d) = deg(e, self.p) {
                     let key = (d, e.terms().len());
@@ -155,45 +160,51 @@ impl Work {
     }
 }
 
-/// The fraction-free Smith elimination of the square `a` over
-/// Q[others][λ], λ the symbol with index `p`; `None` if `a` is not square
-/// or is singular.
+/// The fraction-free Smith elimination of `a` over Q[others][λ], λ the
+/// symbol with index `p` (any shape and rank); `None` only if the
+/// safeguard on the number of rounds stops it.
 pub fn eliminate_fraction_free(a: &Matrix<PolyRing>, p: usize) -> Option<FractionFree> {
-    let n = a.rows();
-    if a.cols() != n || n == 0 {
-        return None;
-    }
+    let (rows, cols) = (a.rows(), a.cols());
     let nv = a.ring.nvars();
-    let id = |i: usize, j: usize| {
-        if i == j {
-            MPoly::one(nv)
-        } else {
-            MPoly::zero(nv)
-        }
+    let id = |n: usize| -> Vec<Vec<MPoly>> {
+        (0..n)
+            .map(|i| {
+                (0..n)
+                    .map(|j| if i == j { MPoly::one(nv) } else { MPoly::zero(nv) })
+                    .collect()
+            })
+            .collect()
     };
     let mut w = Work {
-        m: (0..n).map(|i| a.row(i).to_vec()).collect(),
-        u: (0..n).map(|i| (0..n).map(|j| id(i, j)).collect()).collect(),
-        v: (0..n).map(|i| (0..n).map(|j| id(i, j)).collect()).collect(),
-        n,
+        m: (0..rows).map(|i| a.row(i).to_vec()).collect(),
+        u: id(rows),
+        v: id(cols),
+        rows,
+        cols,
         p,
     };
     let mut rounds = 0usize;
-    for k in 0..n {
+    let mut rank = 0usize;
+    for k in 0..rows.min(cols) {
         loop {
             rounds += 1;
             if rounds > MAX_ROUNDS {
                 return None;
             }
-            let (pi, pj) = w.pivot(k)?;
+            let Some((pi, pj)) = w.pivot(k) else {
+                break;
+            };
             w.m.swap(k, pi);
             w.u.swap(k, pi);
-            for row in w.m.iter_mut().chain(w.v.iter_mut()) {
+            for row in w.m.iter_mut() {
+                row.swap(k, pj);
+            }
+            for row in w.v.iter_mut() {
                 row.swap(k, pj);
             }
             let pivot = w.m[k][k].clone();
             let mut dirty = false;
-            for i in k + 1..n {
+            for i in k + 1..rows {
                 if w.m[i][k].is_zero() {
                     continue;
                 }
@@ -205,7 +216,7 @@ pub fn eliminate_fraction_free(a: &Matrix<PolyRing>, p: usize) -> Option<Fractio
                 continue;
             }
             let pivot = w.m[k][k].clone();
-            for j in k + 1..n {
+            for j in k + 1..cols {
                 if w.m[k][j].is_zero() {
                     continue;
                 }
@@ -218,8 +229,9 @@ pub fn eliminate_fraction_free(a: &Matrix<PolyRing>, p: usize) -> Option<Fractio
             }
             // The pivot must divide every remaining entry over K[λ].
             let pivot = w.m[k][k].clone();
-            let bad = (k + 1..n).find(|&i| {
-                (k + 1..n).any(|j| !w.m[i][j].is_zero() && !prem(&w.m[i][j], &pivot, p).is_zero())
+            let bad = (k + 1..rows).find(|&i| {
+                (k + 1..cols)
+                    .any(|j| !w.m[i][j].is_zero() && !prem(&w.m[i][j], &pivot, p).is_zero())
             });
             match bad {
                 Some(i) => {
@@ -228,18 +240,21 @@ pub fn eliminate_fraction_free(a: &Matrix<PolyRing>, p: usize) -> Option<Fractio
                     // row_k ← row_k + row_i.
                     w.row_op(k, i, &one, &minus_one);
                 }
-                None => break,
+                None => {
+                    rank = k + 1;
+                    break;
+                }
             }
         }
+        if rank != k + 1 {
+            break;
+        }
     }
-    let e: Vec<MPoly> = (0..n).map(|i| w.m[i][i].clone()).collect();
-    if e.iter().any(|x| x.is_zero()) {
-        return None;
-    }
-    let flat = |rows: Vec<Vec<MPoly>>| rows.into_iter().flatten().collect::<Vec<_>>();
+    let e: Vec<MPoly> = (0..rank).map(|i| w.m[i][i].clone()).collect();
+    let flat = |m: Vec<Vec<MPoly>>| m.into_iter().flatten().collect::<Vec<_>>();
     Some(FractionFree {
-        u: Matrix::new(a.ring.clone(), n, n, flat(w.u)),
-        v: Matrix::new(a.ring.clone(), n, n, flat(w.v)),
+        u: Matrix::new(a.ring.clone(), rows, rows, flat(w.u)),
+        v: Matrix::new(a.ring.clone(), cols, cols, flat(w.v)),
         e,
     })
 }
@@ -252,16 +267,17 @@ pub fn over_k(
     kr: &UPolyRing<RatFuncField>,
     p: usize,
 ) -> Option<[Matrix<UPolyRing<RatFuncField>>; 3]> {
-    let n = ff.e.len();
+    let (rows, cols) = (ff.u.rows(), ff.v.rows());
     let nv = ff.u.ring.nvars();
     let to_k = |e: &MPoly| kr.trim(e.coeffs_in(p).into_iter().map(RatFunc::from_poly).collect());
-    let mut d = Matrix::zeros(kr.clone(), n, n);
-    let mut u = Matrix::zeros(kr.clone(), n, n);
+    let mut d = Matrix::zeros(kr.clone(), rows, cols);
+    let mut u = ff.u.map(kr.clone(), to_k);
     for (i, e) in ff.e.iter().enumerate() {
         let s = RatFunc::new(MPoly::one(nv), e.lc_in(p))?;
         d.set(i, i, kr.scale(&to_k(e), &s));
-        for j in 0..n {
-            u.set(i, j, kr.scale(&to_k(ff.u.get(i, j)), &s));
+        for j in 0..rows {
+            let x = kr.scale(u.get(i, j), &s);
+            u.set(i, j, x);
         }
     }
     let v = ff.v.map(kr.clone(), to_k);
@@ -305,10 +321,16 @@ mod tests {
     }
 
     #[test]
-    fn singular_input_gives_none() {
+    fn singular_input_has_its_rank() {
         let ring = PolyRing::new(vec!["x".into(), "y".into()]);
         let (x, y) = (MPoly::var(0, 2), MPoly::var(1, 2));
         let a = Matrix::new(ring, 2, 2, vec![x.clone(), y.clone(), &x * &y, &y * &y]);
-        assert!(eliminate_fraction_free(&a, 1).is_none());
+        let ff = eliminate_fraction_free(&a, 1).expect("finishes");
+        assert_eq!(ff.e.len(), 1);
+        let prod = ff.u.mul(&a).and_then(|m| m.mul(&ff.v)).expect("shapes");
+        assert_eq!(prod.get(0, 0), &ff.e[0]);
+        for (i, j) in [(0, 1), (1, 0), (1, 1)] {
+            assert!(prod.get(i, j).is_zero());
+        }
     }
 }

@@ -718,7 +718,7 @@ fn principal(
         p,
         nvars: a.ring.nvars(),
     };
-    if let Some(r) = principal_fraction_free(name, a, &ap, p, &note, opts, &check)? {
+    if let Some(r) = principal_fraction_free(name, a, &ap, p, &note, opts)? {
         return Ok(r);
     }
     opts.progress
@@ -761,7 +761,6 @@ fn principal_fraction_free(
     p: usize,
     note: &str,
     opts: &SmithOptions,
-    check: &ClearedDenominators,
 ) -> Result<Option<SmithReport>, SmithError> {
     let kr = &ap.ring;
     opts.progress.phase(&format!(
@@ -777,8 +776,7 @@ fn principal_fraction_free(
     };
     opts.progress
         .phase("certifying U·A·V = D and deg det A (no inverse products)");
-    let cert =
-        super::certify_several::certify_principal_degrees(a, p, ap, [&u, &d, &v], check);
+    let cert = super::certify_several::certify_principal_degrees(a, p, ap, [&u, &d, &v]);
     if !cert.verified() {
         return Ok(None);
     }
@@ -1049,7 +1047,7 @@ fn denominator_free(
     });
     let mut dets = Vec::new();
     for (nm, mat) in [("U′", &u2), ("V′", &v2)] {
-        let d = mat.det().expect("square");
+        let d = super::certify_several::det_expanding_largest_row(mat).expect("square");
         let ok = !d.is_zero() && !d.contains_var(p);
         dets.push(pr.lmx(&d));
         checks.push(Check {
