@@ -703,4 +703,61 @@ mod tests {
         assert!(cert.failures().any(|f| f.property.starts_with("deg_x")));
         assert!(!certify_last_factor_several(&a, &x, &b, &[0]).verified());
     }
+
+    fn principal(a: &Matrix<PolyRing>, p: usize) -> Matrix<UPolyRing<RatFuncField>> {
+        let names = a.ring.names.clone();
+        let shown = names
+            .iter()
+            .enumerate()
+            .filter(|(i, _)| *i != p)
+            .map(|(_, n)| n.clone())
+            .collect();
+        let ring = UPolyRing::new(RatFuncField { names: names.clone(), shown }, names[p].clone());
+        let r2 = ring.clone();
+        a.map(ring, |e| r2.trim(e.coeffs_in(p).into_iter().map(RatFunc::from_poly).collect()))
+    }
+
+    #[test]
+    fn principal_degrees_certify_the_fraction_free_route_and_catch_a_non_unit() {
+        let (x, y) = (MPoly::var(0, 2), MPoly::var(1, 2));
+        let one = MPoly::one(2);
+        let a = Matrix::new(
+            ring2(),
+            2,
+            2,
+            vec![&x * &y + &one, &x - &y, y.pow(2), &x * &y.scale(&qi(3))],
+        );
+        let ap = principal(&a, 1);
+        let ff = crate::algebra::smith::fraction_free::eliminate_fraction_free(&a, 1)
+            .expect("finishes");
+        let [u, d, v] =
+            crate::algebra::smith::fraction_free::over_k(&ff, &ap.ring, 1).expect("units");
+        assert!(certify_principal_degrees(&a, 1, &ap, [&u, &d, &v]).verified());
+        // A changed entry of U breaks the product.
+        let mut u2 = u.clone();
+        let e = ap.ring.add(u2.get(0, 0), &ap.ring.one());
+        u2.set(0, 0, e);
+        let cert = certify_principal_degrees(&a, 1, &ap, [&u2, &d, &v]);
+        assert!(cert.failures().any(|c| c.property == "U·A·V = D"));
+        // A = I, U = diag(y, y), V = I, D = diag(y, y): the product, the
+        // normal form and the divisibility hold, but det U = y² is not a
+        // unit; only deg_y det A = 0 < 2 exposes it.
+        let z = MPoly::zero(2);
+        let i2 = Matrix::new(ring2(), 2, 2, vec![one.clone(), z.clone(), z.clone(), one.clone()]);
+        let yy = Matrix::new(ring2(), 2, 2, vec![y.clone(), z.clone(), z, y.clone()]);
+        let (ip, yp) = (principal(&i2, 1), principal(&yy, 1));
+        let cert = certify_principal_degrees(&i2, 1, &ip, [&yp, &yp, &ip]);
+        assert!(!cert.verified());
+        assert!(cert.failures().any(|c| c.property == "U unimodular"));
+        // The singular route: [[x, y], [x·y, y²]] has rank 1 over Q(x)[y].
+        let s = Matrix::new(ring2(), 2, 2, vec![x.clone(), y.clone(), &x * &y, y.pow(2)]);
+        let sp = principal(&s, 1);
+        let ff = crate::algebra::smith::fraction_free::eliminate_fraction_free(&s, 1)
+            .expect("finishes");
+        let [u, d, v] =
+            crate::algebra::smith::fraction_free::over_k(&ff, &sp.ring, 1).expect("units");
+        let cert = certify_principal_degrees(&s, 1, &sp, [&u, &d, &v]);
+        assert!(cert.verified(), "{:?}", cert.failures().collect::<Vec<_>>());
+        assert!(cert.checks.iter().any(|c| c.detail.contains("cleared of denominators")));
+    }
 }
