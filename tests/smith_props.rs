@@ -212,9 +212,17 @@ fn over_k(
         .filter(|(i, _)| *i != p)
         .map(|(_, n)| n.clone())
         .collect();
-    let ring = UPolyRing::new(RatFuncField { names: names.clone(), shown }, names[p].clone());
+    let ring = UPolyRing::new(
+        RatFuncField {
+            names: names.clone(),
+            shown,
+        },
+        names[p].clone(),
+    );
     let r2 = ring.clone();
-    a.map(ring, |e| r2.trim(e.coeffs_in(p).into_iter().map(RatFunc::from_poly).collect()))
+    a.map(ring, |e| {
+        r2.trim(e.coeffs_in(p).into_iter().map(RatFunc::from_poly).collect())
+    })
 }
 
 /// Random matrices up to 4×4 (4×4 only in two symbols) with entries of
@@ -229,12 +237,21 @@ fn principal_fraction_free_route_agrees_with_the_field_elimination() {
     use proptest::test_runner::{Config, TestRunner};
     use std::cell::Cell;
     let strategy = (2usize..=3, 1usize..=4, 1usize..=4).prop_flat_map(|(nv, m, n)| {
-        let (m, n) = if nv == 3 { (m.min(3), n.min(3)) } else { (m, n) };
+        let (m, n) = if nv == 3 {
+            (m.min(3), n.min(3))
+        } else {
+            (m, n)
+        };
         let term = (proptest::collection::vec(0u32..=1, nv), -3i64..=3);
         proptest::collection::vec(proptest::collection::vec(term, 0..=3), m * n).prop_map(
             move |es| {
                 let names: Vec<String> = (1..=nv).map(|i| format!("s{i}")).collect();
-                Matrix::new(PolyRing::new(names), m, n, es.iter().map(|t| mpoly(nv, t)).collect())
+                Matrix::new(
+                    PolyRing::new(names),
+                    m,
+                    n,
+                    es.iter().map(|t| mpoly(nv, t)).collect(),
+                )
             },
         )
     });
@@ -263,6 +280,10 @@ fn principal_fraction_free_route_agrees_with_the_field_elimination() {
             Ok(())
         })
         .expect("property holds");
-    assert!(full.get() >= 16, "only {} nonsingular square cases", full.get());
+    assert!(
+        full.get() >= 16,
+        "only {} nonsingular square cases",
+        full.get()
+    );
     assert!(other.get() >= 8, "only {} other cases", other.get());
 }

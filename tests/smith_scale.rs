@@ -422,10 +422,19 @@ fn principal_k2_four_by_four_fraction_free_and_certified_by_degrees() {
             .find(|c| c["property"] == p)
             .unwrap_or_else(|| panic!("no check {p}"))
     };
-    for p in ["U·A·V = D", "U unimodular", "V unimodular", "divisibility f1 | f2 | …"] {
+    for p in [
+        "U·A·V = D",
+        "U unimodular",
+        "V unimodular",
+        "divisibility f1 | f2 | …",
+    ] {
         assert_eq!(find(p)["ok"], true, "{p}");
     }
     let detail = find("U unimodular")["detail"].as_str().expect("text");
     assert!(detail.contains("deg_k2 det A ≥ 4"), "{detail}");
-    assert!(!checks.iter().any(|c| c["detail"].as_str().unwrap_or("").contains("U⁻¹")));
+    assert!(
+        !checks
+            .iter()
+            .any(|c| c["detail"].as_str().unwrap_or("").contains("U⁻¹"))
+    );
 }

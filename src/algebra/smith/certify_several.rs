@@ -26,11 +26,11 @@
 
 use super::certify::{Certificate, Check};
 use super::several::degree_bound;
+use crate::algebra::gcd::lcm;
 use crate::algebra::matrix::Matrix;
 use crate::algebra::modular::{self, Fp, Points, UP};
 use crate::algebra::mpoly::{MPoly, Monomial};
 use crate::algebra::polyring::PolyRing;
-use crate::algebra::gcd::lcm;
 use crate::algebra::ratfunc::{RatFunc, RatFuncField};
 use crate::algebra::ring::{GcdDomain, Ring};
 use crate::algebra::upoly::{UPoly, UPolyRing};
@@ -247,7 +247,11 @@ pub fn certify_last_factor_several(
 /// and evaluation form a ring map, which can lower degrees, never raise
 /// them. The largest degree over a few primes and points; stops as soon as
 /// it reaches `target`. Returns `(degree, p)`.
-pub fn det_degree_lower_bound(a: &Matrix<PolyRing>, s: usize, target: usize) -> Option<(usize, u64)> {
+pub fn det_degree_lower_bound(
+    a: &Matrix<PolyRing>,
+    s: usize,
+    target: usize,
+) -> Option<(usize, u64)> {
     let n = a.rows();
     if n != a.cols() {
         return None;
@@ -263,8 +267,11 @@ pub fn det_degree_lower_bound(a: &Matrix<PolyRing>, s: usize, target: usize) -> 
         let f = Fp::new(p);
         for _ in 0..2 {
             let point: Vec<u64> = (0..nv).map(|_| pts.next(f)).collect();
-            let Some(img): Option<Vec<UP>> =
-                a.entries().iter().map(|e| image_in(f, e, s, &point)).collect()
+            let Some(img): Option<Vec<UP>> = a
+                .entries()
+                .iter()
+                .map(|e| image_in(f, e, s, &point))
+                .collect()
             else {
                 break;
             };
@@ -333,18 +340,16 @@ fn interpolate(f: Fp, xs: &[u64], ys: &[u64]) -> UP {
         }
     }
     // Horner on the Newton form: p = c0 + (x − x0)(c1 + (x − x1)(…)).
-    let mut out: UP = vec![0; k];
-    let mut len = 0usize;
+    let mut out: UP = Vec::with_capacity(k);
     for i in (0..k).rev() {
         // out ← out·(x − x_i) + c_i
-        let mut next = vec![0u64; len + 1];
-        for (t, &o) in out.iter().take(len).enumerate() {
+        let mut next = vec![0u64; out.len() + 1];
+        for (t, &o) in out.iter().enumerate() {
             next[t + 1] = f.add(next[t + 1], o);
             next[t] = f.sub(next[t], f.mul(o, xs[i]));
         }
         next[0] = f.add(next[0], c[i]);
-        len += 1;
-        out[..len].copy_from_slice(&next[..len]);
+        out = next;
     }
     modular::trim(out)
 }
@@ -356,15 +361,18 @@ fn cleared_line(line: &[&UPoly<RatFunc>], s: usize, nv: usize) -> Vec<MPoly> {
         .iter()
         .flat_map(|e| e.0.iter())
         .fold(MPoly::one(nv), |l, c| {
-            if c.is_polynomial() { l } else { lcm(&l, c.den()) }
+            if c.is_polynomial() {
+                l
+            } else {
+                lcm(&l, c.den())
+            }
         });
     line.iter()
         .map(|e| {
-            let cs: Vec<MPoly> = e
-                .0
-                .iter()
-                .map(|c| c.num() * &l.div_exact(c.den()).unwrap_or_else(|| MPoly::zero(nv)))
-                .collect();
+            let cs: Vec<MPoly> =
+                e.0.iter()
+                    .map(|c| c.num() * &l.div_exact(c.den()).unwrap_or_else(|| MPoly::zero(nv)))
+                    .collect();
             MPoly::from_coeffs_in(s, &cs, nv)
         })
         .collect()
@@ -394,7 +402,11 @@ pub fn det_expanding_largest_row(m: &Matrix<PolyRing>) -> Option<MPoly> {
         let cols: Vec<usize> = (0..n).filter(|&c| c != j).collect();
         let minor = m.submatrix(&rows, &cols).det()?;
         let t = e * &minor;
-        acc = if (r + j) % 2 == 0 { &acc + &t } else { &acc - &t };
+        acc = if (r + j) % 2 == 0 {
+            &acc + &t
+        } else {
+            &acc - &t
+        };
     }
     Some(acc)
 }
@@ -422,7 +434,11 @@ pub fn product_by_lines(
         line.iter()
             .flat_map(|e| e.0.iter())
             .fold(MPoly::one(nv), |l, c| {
-                if c.is_polynomial() { l } else { lcm(&l, c.den()) }
+                if c.is_polynomial() {
+                    l
+                } else {
+                    lcm(&l, c.den())
+                }
             })
     };
     let rows: Vec<(MPoly, Vec<MPoly>)> = (0..m)
@@ -550,7 +566,12 @@ pub fn certify_principal_degrees(
     push(
         "D diagonal",
         diag_ok,
-        if diag_ok { "yes" } else { "D has a nonzero off-diagonal entry" }.to_string(),
+        if diag_ok {
+            "yes"
+        } else {
+            "D has a nonzero off-diagonal entry"
+        }
+        .to_string(),
     );
     let name = &a.ring.names[s];
     if full {
@@ -567,7 +588,10 @@ pub fn certify_principal_degrees(
                 &format!("{nm} unimodular"),
                 unimod,
                 if unimod {
-                    format!("{why}; det {nm} is a nonzero element of {}, a unit", kr.k.name())
+                    format!(
+                        "{why}; det {nm} is a nonzero element of {}, a unit",
+                        kr.k.name()
+                    )
                 } else {
                     format!("not established ({why})")
                 },
@@ -591,7 +615,11 @@ pub fn certify_principal_degrees(
             }
         }
         for (nm, mat) in [("U", &u2), ("V", &v2)] {
-            let det = if prod { det_expanding_largest_row(mat) } else { None };
+            let det = if prod {
+                det_expanding_largest_row(mat)
+            } else {
+                None
+            };
             let ok = det
                 .as_ref()
                 .is_some_and(|x| !x.is_zero() && !x.contains_var(s));
@@ -603,7 +631,14 @@ pub fn certify_principal_degrees(
                         "{nm}′ ({nm} with each {} cleared of denominators in Q[others]) has det {} over Q[all]{}",
                         if nm == "U" { "row" } else { "column" },
                         a.ring.format(&x),
-                        if ok { format!(", a nonzero element of Q[others]: det {nm} is a unit of {}", kr.name()) } else { ", not a nonzero element of Q[others]".to_string() }
+                        if ok {
+                            format!(
+                                ", a nonzero element of Q[others]: det {nm} is a unit of {}",
+                                kr.name()
+                            )
+                        } else {
+                            ", not a nonzero element of Q[others]".to_string()
+                        }
                     ),
                     None => "not established".to_string(),
                 },
@@ -631,7 +666,9 @@ pub fn certify_principal_degrees(
         "divisibility f1 | f2 | …",
         div_ok,
         if div_ok {
-            format!("each invariant factor divides the next (pseudo-remainder in {name} zero over Q[all])")
+            format!(
+                "each invariant factor divides the next (pseudo-remainder in {name} zero over Q[all])"
+            )
         } else {
             "not established".to_string()
         },
@@ -712,9 +749,17 @@ mod tests {
             .filter(|(i, _)| *i != p)
             .map(|(_, n)| n.clone())
             .collect();
-        let ring = UPolyRing::new(RatFuncField { names: names.clone(), shown }, names[p].clone());
+        let ring = UPolyRing::new(
+            RatFuncField {
+                names: names.clone(),
+                shown,
+            },
+            names[p].clone(),
+        );
         let r2 = ring.clone();
-        a.map(ring, |e| r2.trim(e.coeffs_in(p).into_iter().map(RatFunc::from_poly).collect()))
+        a.map(ring, |e| {
+            r2.trim(e.coeffs_in(p).into_iter().map(RatFunc::from_poly).collect())
+        })
     }
 
     #[test]
@@ -728,8 +773,8 @@ mod tests {
             vec![&x * &y + &one, &x - &y, y.pow(2), &x * &y.scale(&qi(3))],
         );
         let ap = principal(&a, 1);
-        let ff = crate::algebra::smith::fraction_free::eliminate_fraction_free(&a, 1)
-            .expect("finishes");
+        let ff =
+            crate::algebra::smith::fraction_free::eliminate_fraction_free(&a, 1).expect("finishes");
         let [u, d, v] =
             crate::algebra::smith::fraction_free::over_k(&ff, &ap.ring, 1).expect("units");
         assert!(certify_principal_degrees(&a, 1, &ap, [&u, &d, &v]).verified());
@@ -743,7 +788,12 @@ mod tests {
         // normal form and the divisibility hold, but det U = y² is not a
         // unit; only deg_y det A = 0 < 2 exposes it.
         let z = MPoly::zero(2);
-        let i2 = Matrix::new(ring2(), 2, 2, vec![one.clone(), z.clone(), z.clone(), one.clone()]);
+        let i2 = Matrix::new(
+            ring2(),
+            2,
+            2,
+            vec![one.clone(), z.clone(), z.clone(), one.clone()],
+        );
         let yy = Matrix::new(ring2(), 2, 2, vec![y.clone(), z.clone(), z, y.clone()]);
         let (ip, yp) = (principal(&i2, 1), principal(&yy, 1));
         let cert = certify_principal_degrees(&i2, 1, &ip, [&yp, &yp, &ip]);
@@ -752,12 +802,16 @@ mod tests {
         // The singular route: [[x, y], [x·y, y²]] has rank 1 over Q(x)[y].
         let s = Matrix::new(ring2(), 2, 2, vec![x.clone(), y.clone(), &x * &y, y.pow(2)]);
         let sp = principal(&s, 1);
-        let ff = crate::algebra::smith::fraction_free::eliminate_fraction_free(&s, 1)
-            .expect("finishes");
+        let ff =
+            crate::algebra::smith::fraction_free::eliminate_fraction_free(&s, 1).expect("finishes");
         let [u, d, v] =
             crate::algebra::smith::fraction_free::over_k(&ff, &sp.ring, 1).expect("units");
         let cert = certify_principal_degrees(&s, 1, &sp, [&u, &d, &v]);
         assert!(cert.verified(), "{:?}", cert.failures().collect::<Vec<_>>());
-        assert!(cert.checks.iter().any(|c| c.detail.contains("cleared of denominators")));
+        assert!(
+            cert.checks
+                .iter()
+                .any(|c| c.detail.contains("cleared of denominators"))
+        );
     }
 }

@@ -170,7 +170,13 @@ pub fn eliminate_fraction_free(a: &Matrix<PolyRing>, p: usize) -> Option<Fractio
         (0..n)
             .map(|i| {
                 (0..n)
-                    .map(|j| if i == j { MPoly::one(nv) } else { MPoly::zero(nv) })
+                    .map(|j| {
+                        if i == j {
+                            MPoly::one(nv)
+                        } else {
+                            MPoly::zero(nv)
+                        }
+                    })
                     .collect()
             })
             .collect()
@@ -314,7 +320,11 @@ mod tests {
         let prod = ff.u.mul(&a).and_then(|m| m.mul(&ff.v)).expect("shapes");
         for i in 0..3 {
             for j in 0..3 {
-                let want = if i == j { ff.e[i].clone() } else { MPoly::zero(2) };
+                let want = if i == j {
+                    ff.e[i].clone()
+                } else {
+                    MPoly::zero(2)
+                };
                 assert_eq!(prod.get(i, j), &want, "entry {i},{j}");
             }
         }
