@@ -70,7 +70,7 @@ def run_pari(m, nv, principal, flag):
     rows = ";".join(",".join(poly_str(e, names) for e in row) for row in m)
     prog = (
         f"M=[{rows}];t=getabstime();r=matsnf(M,{flag});t=getabstime()-t;"
-        "D=if({flag}==3,r[3],matdiagonal(r));print(t);print(vector(#D,i,poldegree(D[i,i],x)));"
+        f"D=if({flag}==3,r[3],matdiagonal(r));print(t);print(vector(#D,i,poldegree(D[i,i],x)));"
     )
     out = subprocess.run(
         ["gp", "-q", "-s", "1G"], input=prog, capture_output=True, text=True,

@@ -196,3 +196,94 @@ fn gcd_domain_normal_forms_are_idempotent() {
     let p = qx(&[(3, 2), (0, 1), (-6, 1)]);
     assert_eq!(r.normalize(&r.normalize(&p)), r.normalize(&p));
 }
+
+// ── principal mode: the fraction-free route against the field elimination ──
+
+fn over_k(
+    a: &Matrix<PolyRing>,
+    p: usize,
+) -> Matrix<lambdamat::algebra::upoly::UPolyRing<lambdamat::algebra::ratfunc::RatFuncField>> {
+    use lambdamat::algebra::ratfunc::{RatFunc, RatFuncField};
+    use lambdamat::algebra::upoly::UPolyRing;
+    let names = a.ring.names.clone();
+    let shown = names
+        .iter()
+        .enumerate()
+        .filter(|(i, _)| *i != p)
+        .map(|(_, n)| n.clone())
+        .collect();
+    let ring = UPolyRing::new(
+        RatFuncField {
+            names: names.clone(),
+            shown,
+        },
+        names[p].clone(),
+    );
+    let r2 = ring.clone();
+    a.map(ring, |e| {
+        r2.trim(e.coeffs_in(p).into_iter().map(RatFunc::from_poly).collect())
+    })
+}
+
+/// Random matrices up to 4×4 (4×4 only in two symbols) with entries of
+/// degree ≤ 1 in each symbol: the fraction-free route over Q[others][λ]
+/// (λ the last symbol) must certify and give the D of the elimination over
+/// K[λ]. Counts the nonsingular square cases (degree certificate) and the
+/// others (determinant certificate), and asserts both ran often enough.
+#[test]
+fn principal_fraction_free_route_agrees_with_the_field_elimination() {
+    use lambdamat::algebra::smith::certify_several::certify_principal_degrees;
+    use lambdamat::algebra::smith::fraction_free::{eliminate_fraction_free, over_k as ff_over_k};
+    use proptest::test_runner::{Config, TestRunner};
+    use std::cell::Cell;
+    let strategy = (2usize..=3, 1usize..=4, 1usize..=4).prop_flat_map(|(nv, m, n)| {
+        let (m, n) = if nv == 3 {
+            (m.min(3), n.min(3))
+        } else {
+            (m, n)
+        };
+        let term = (proptest::collection::vec(0u32..=1, nv), -3i64..=3);
+        proptest::collection::vec(proptest::collection::vec(term, 0..=3), m * n).prop_map(
+            move |es| {
+                let names: Vec<String> = (1..=nv).map(|i| format!("s{i}")).collect();
+                Matrix::new(
+                    PolyRing::new(names),
+                    m,
+                    n,
+                    es.iter().map(|t| mpoly(nv, t)).collect(),
+                )
+            },
+        )
+    });
+    let full = Cell::new(0usize);
+    let other = Cell::new(0usize);
+    let mut runner = TestRunner::new(Config {
+        cases: 64,
+        rng_seed: RngSeed::Fixed(0x5eed_0015),
+        ..Config::default()
+    });
+    runner
+        .run(&strategy, |a| {
+            let p = a.ring.nvars() - 1;
+            let ap = over_k(&a, p);
+            let old = SmithDecomposition::new(&ap);
+            let ff = eliminate_fraction_free(&a, p).expect("finishes");
+            let [u, d, v] = ff_over_k(&ff, &ap.ring, p).expect("nonzero leading coefficients");
+            let cert = certify_principal_degrees(&a, p, &ap, [&u, &d, &v]);
+            prop_assert!(cert.verified(), "{:?}", cert.failures().collect::<Vec<_>>());
+            prop_assert_eq!(d.diagonal(), old.d.diagonal());
+            if a.rows() == a.cols() && ff.e.len() == a.rows() {
+                full.set(full.get() + 1);
+            } else {
+                other.set(other.get() + 1);
+            }
+            Ok(())
+        })
+        .expect("property holds");
+    assert!(
+        full.get() >= 16,
+        "only {} nonsingular square cases",
+        full.get()
+    );
+    assert!(other.get() >= 8, "only {} other cases", other.get());
+}

@@ -386,3 +386,55 @@ fn fifty_by_fifty_of_degree_one_without_the_adjugate() {
     let names = check_names(&v);
     assert!(names.iter().any(|n| n == "d_(n−1)(A) = 1"), "{names:?}");
 }
+
+#[test]
+fn principal_k2_four_by_four_fraction_free_and_certified_by_degrees() {
+    // The issue's 4×4 with --principal k2 goes through the fraction-free
+    // elimination over Q[k1, k3][k2] and the degree certificate (no inverse
+    // products). The last invariant factor is the one PARI's matsnf(M, 3)
+    // gives over Q(k1, k3)[k2] (x^4 + ((a1^3 - 3*a1^2 + (-a3 + 2)*a1 -
+    // 1)/a1)*x^3 + …, read off by hand).
+    let v = json(&[
+        "smith",
+        "tests/data/issue15_principal_k2.lmx",
+        "--principal",
+        "k2",
+    ]);
+    assert_eq!(v["verified"], true);
+    assert_eq!(v["denominator_free"]["verified"], true);
+    assert!(
+        v["algorithm"]
+            .as_str()
+            .expect("text")
+            .starts_with("fraction-free elimination over Q[others][λ]"),
+        "{}",
+        v["algorithm"]
+    );
+    let inv = strings(&v["invariant_factors"]);
+    assert_eq!(
+        inv[3],
+        "k2^4 + ((k1^3 - 3*k1^2 - k1*k3 + 2*k1 - 1)/k1)*k2^3 + (k1*k3 - k3 + 1)*k2^2 - ((k1^3*k3^2 + k1^3*k3 - k1^3 - 2*k1^2*k3^2 - 3*k1^2*k3 + 3*k1^2 + 2*k1*k3^2 + 2*k1*k3 - 2*k1 - k3^2 - k3 + 1)/k1)*k2"
+    );
+    let checks = v["certificate"].as_array().expect("checks");
+    let find = |p: &str| {
+        checks
+            .iter()
+            .find(|c| c["property"] == p)
+            .unwrap_or_else(|| panic!("no check {p}"))
+    };
+    for p in [
+        "U·A·V = D",
+        "U unimodular",
+        "V unimodular",
+        "divisibility f1 | f2 | …",
+    ] {
+        assert_eq!(find(p)["ok"], true, "{p}");
+    }
+    let detail = find("U unimodular")["detail"].as_str().expect("text");
+    assert!(detail.contains("deg_k2 det A ≥ 4"), "{detail}");
+    assert!(
+        !checks
+            .iter()
+            .any(|c| c["detail"].as_str().unwrap_or("").contains("U⁻¹"))
+    );
+}

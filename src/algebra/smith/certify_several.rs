@@ -26,11 +26,14 @@
 
 use super::certify::{Certificate, Check};
 use super::several::degree_bound;
+use crate::algebra::gcd::lcm;
 use crate::algebra::matrix::Matrix;
 use crate::algebra::modular::{self, Fp, Points, UP};
 use crate::algebra::mpoly::{MPoly, Monomial};
 use crate::algebra::polyring::PolyRing;
-use crate::algebra::ring::Ring;
+use crate::algebra::ratfunc::{RatFunc, RatFuncField};
+use crate::algebra::ring::{GcdDomain, Ring};
+use crate::algebra::upoly::{UPoly, UPolyRing};
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Zero};
@@ -238,6 +241,441 @@ pub fn certify_last_factor_several(
     Certificate { checks }
 }
 
+/// A lower bound on `deg_λ det A` (λ = symbol `s`): the degree of the
+/// image of det A in Z_p[λ] at a point of the other symbols, det taken at
+/// `N + 1` values of λ (N = [`degree_bound`]) and interpolated. Reduction
+/// and evaluation form a ring map, which can lower degrees, never raise
+/// them. The largest degree over a few primes and points; stops as soon as
+/// it reaches `target`. Returns `(degree, p)`.
+pub fn det_degree_lower_bound(
+    a: &Matrix<PolyRing>,
+    s: usize,
+    target: usize,
+) -> Option<(usize, u64)> {
+    let n = a.rows();
+    if n != a.cols() {
+        return None;
+    }
+    let bound = degree_bound(a, s);
+    let nv = a.ring.nvars();
+    let mut pts = Points::new(0x5eed_0de9_0f00_0015);
+    let mut best: Option<(usize, u64)> = None;
+    for p in modular::primes().take(3) {
+        if (bound as u64) + 1 >= p {
+            return best;
+        }
+        let f = Fp::new(p);
+        for _ in 0..2 {
+            let point: Vec<u64> = (0..nv).map(|_| pts.next(f)).collect();
+            let Some(img): Option<Vec<UP>> = a
+                .entries()
+                .iter()
+                .map(|e| image_in(f, e, s, &point))
+                .collect()
+            else {
+                break;
+            };
+            let xs: Vec<u64> = (0..=bound as u64).collect();
+            let ys: Vec<u64> = xs
+                .iter()
+                .map(|&x| {
+                    let m: Vec<u64> = img.iter().map(|e| modular::eval(f, e, x)).collect();
+                    det_mod(f, m, n)
+                })
+                .collect();
+            let d = modular::deg(&interpolate(f, &xs, &ys));
+            if let Some(d) = d
+                && best.is_none_or(|(b, _)| d > b)
+            {
+                best = Some((d, p));
+            }
+            if best.is_some_and(|(b, _)| b >= target) {
+                return best;
+            }
+        }
+    }
+    best
+}
+
+/// det of the row-major n×n matrix `m` over Z_p (Gaussian elimination).
+fn det_mod(f: Fp, mut m: Vec<u64>, n: usize) -> u64 {
+    let mut det = 1u64;
+    for k in 0..n {
+        let Some(piv) = (k..n).find(|&i| m[i * n + k] != 0) else {
+            return 0;
+        };
+        if piv != k {
+            for j in 0..n {
+                m.swap(piv * n + j, k * n + j);
+            }
+            det = f.neg(det);
+        }
+        let pk = m[k * n + k];
+        det = f.mul(det, pk);
+        let inv = f.inv(pk);
+        for i in k + 1..n {
+            let c = f.mul(m[i * n + k], inv);
+            if c == 0 {
+                continue;
+            }
+            for j in k..n {
+                let t = f.mul(c, m[k * n + j]);
+                m[i * n + j] = f.sub(m[i * n + j], t);
+            }
+        }
+    }
+    det
+}
+
+/// The polynomial of degree ≤ len − 1 through `(xs[i], ys[i])` over Z_p
+/// (Newton's divided differences), lowest coefficient first, trimmed.
+fn interpolate(f: Fp, xs: &[u64], ys: &[u64]) -> UP {
+    let k = xs.len();
+    let mut c = ys.to_vec();
+    for j in 1..k {
+        for i in (j..k).rev() {
+            let num = f.sub(c[i], c[i - 1]);
+            let den = f.sub(xs[i], xs[i - j]);
+            c[i] = f.mul(num, f.inv(den));
+        }
+    }
+    // Horner on the Newton form: p = c0 + (x − x0)(c1 + (x − x1)(…)).
+    let mut out: UP = Vec::with_capacity(k);
+    for i in (0..k).rev() {
+        // out ← out·(x − x_i) + c_i
+        let mut next = vec![0u64; out.len() + 1];
+        for (t, &o) in out.iter().enumerate() {
+            next[t + 1] = f.add(next[t + 1], o);
+            next[t] = f.sub(next[t], f.mul(o, xs[i]));
+        }
+        next[0] = f.add(next[0], c[i]);
+        out = next;
+    }
+    modular::trim(out)
+}
+
+/// The entries of `line` (over K[λ]) times the lcm of their
+/// denominators, as polynomials over Q[all] (λ = symbol `s`).
+fn cleared_line(line: &[&UPoly<RatFunc>], s: usize, nv: usize) -> Vec<MPoly> {
+    let l = line
+        .iter()
+        .flat_map(|e| e.0.iter())
+        .fold(MPoly::one(nv), |l, c| {
+            if c.is_polynomial() {
+                l
+            } else {
+                lcm(&l, c.den())
+            }
+        });
+    line.iter()
+        .map(|e| {
+            let cs: Vec<MPoly> =
+                e.0.iter()
+                    .map(|c| c.num() * &l.div_exact(c.den()).unwrap_or_else(|| MPoly::zero(nv)))
+                    .collect();
+            MPoly::from_coeffs_in(s, &cs, nv)
+        })
+        .collect()
+}
+
+/// det of a square matrix over Q[all] by expansion along its row with the
+/// most terms, the minors by fraction-free elimination: a transform whose
+/// rows differ greatly in size (the row of a Bezout step) never enters an
+/// exact division. `None` if not square.
+pub fn det_expanding_largest_row(m: &Matrix<PolyRing>) -> Option<MPoly> {
+    let n = m.rows();
+    if m.cols() != n {
+        return None;
+    }
+    if n <= 2 {
+        return m.det();
+    }
+    let size = |i: usize| m.row(i).iter().map(|e| e.terms().len()).sum::<usize>();
+    let r = (0..n).max_by_key(|&i| size(i))?;
+    let rows: Vec<usize> = (0..n).filter(|&i| i != r).collect();
+    let mut acc = MPoly::zero(m.ring.nvars());
+    for j in 0..n {
+        let e = m.get(r, j);
+        if e.is_zero() {
+            continue;
+        }
+        let cols: Vec<usize> = (0..n).filter(|&c| c != j).collect();
+        let minor = m.submatrix(&rows, &cols).det()?;
+        let t = e * &minor;
+        acc = if (r + j) % 2 == 0 {
+            &acc + &t
+        } else {
+            &acc - &t
+        };
+    }
+    Some(acc)
+}
+
+/// Whether `U·A·V = D` over K[λ] (λ = symbol `s`), evaluated over Q[all]
+/// with each row i of U cleared by δ_i, each column j of V by ε_j and
+/// each entry of D by γ_ij (all in Q[others]): `U′ = diag(δ)·U`, `V′ =
+/// V·diag(ε)`, and `U·A·V = D` ⇔ `γ_ij·(U′·A·V′)_ij = δ_i·ε_j·D̃_ij` for
+/// all i, j. The same statement as clearing whole matrices, with far
+/// smaller scales.
+pub fn product_by_lines(
+    a: &Matrix<PolyRing>,
+    s: usize,
+    [u, d, v]: [&Matrix<UPolyRing<RatFuncField>>; 3],
+) -> bool {
+    let (m, n) = (a.rows(), a.cols());
+    let nv = a.ring.nvars();
+    if u.rows() != m || u.cols() != m || v.rows() != n || v.cols() != n {
+        return false;
+    }
+    if d.rows() != m || d.cols() != n {
+        return false;
+    }
+    let scale_of = |line: &[&UPoly<RatFunc>]| {
+        line.iter()
+            .flat_map(|e| e.0.iter())
+            .fold(MPoly::one(nv), |l, c| {
+                if c.is_polynomial() {
+                    l
+                } else {
+                    lcm(&l, c.den())
+                }
+            })
+    };
+    let rows: Vec<(MPoly, Vec<MPoly>)> = (0..m)
+        .map(|i| {
+            let line: Vec<&UPoly<RatFunc>> = (0..m).map(|j| u.get(i, j)).collect();
+            (scale_of(&line), cleared_line(&line, s, nv))
+        })
+        .collect();
+    let cols: Vec<(MPoly, Vec<MPoly>)> = (0..n)
+        .map(|j| {
+            let line: Vec<&UPoly<RatFunc>> = (0..n).map(|i| v.get(i, j)).collect();
+            (scale_of(&line), cleared_line(&line, s, nv))
+        })
+        .collect();
+    // U′·A, row by row.
+    let ua: Vec<Vec<MPoly>> = rows
+        .iter()
+        .map(|(_, r)| {
+            (0..n)
+                .map(|j| {
+                    r.iter()
+                        .enumerate()
+                        .filter(|(k, x)| !x.is_zero() && !a.get(*k, j).is_zero())
+                        .fold(MPoly::zero(nv), |acc, (k, x)| &acc + &(x * a.get(k, j)))
+                })
+                .collect()
+        })
+        .collect();
+    for (i, (di, _)) in rows.iter().enumerate() {
+        for (j, (ej, c)) in cols.iter().enumerate() {
+            let x = ua[i]
+                .iter()
+                .zip(c)
+                .filter(|(p, q)| !p.is_zero() && !q.is_zero())
+                .fold(MPoly::zero(nv), |acc, (p, q)| &acc + &(p * q));
+            let dij = d.get(i, j);
+            if dij.0.is_empty() {
+                if !x.is_zero() {
+                    return false;
+                }
+                continue;
+            }
+            let g = scale_of(&[dij]);
+            let dt = cleared_line(&[dij], s, nv).remove(0);
+            if &g * &x != &(di * ej) * &dt {
+                return false;
+            }
+        }
+    }
+    true
+}
+
+/// Certifies a Smith decomposition `U·A·V = D` over K[λ], K = Q(others), λ
+/// the symbol with index `s`, without inverse products (`a` over Q[all],
+/// `ap` the same matrix over K[λ]; the product is evaluated by
+/// [`product_by_lines`]):
+/// 1. `U·A·V = D` exactly, D diagonal with monic entries, zeros last, each
+///    nonzero entry dividing the next (pseudo-remainder in λ over Q[all]
+///    of the cleared entries, zero exactly when the division holds over
+///    K[λ]);
+/// 2. for a square A with no zero on D's diagonal: `deg_λ det A ≥ Σ deg_λ
+///    D_ii` from the image of det A at a point mod p (a ring map cannot
+///    raise the degree). Then `det U·det A·det V = det D ≠ 0` in the domain
+///    K[λ], so `deg det U + deg det V ≤ 0`: both determinants are nonzero
+///    elements of K, units of K[λ];
+/// 3. otherwise: U with each row and V with each column cleared of
+///    denominators (by an element of Q[others]) have determinants (fraction
+///    -free elimination over Q[all]) that are nonzero and free of λ.
+pub fn certify_principal_degrees(
+    a: &Matrix<PolyRing>,
+    s: usize,
+    ap: &Matrix<UPolyRing<RatFuncField>>,
+    [u, d, v]: [&Matrix<UPolyRing<RatFuncField>>; 3],
+) -> Certificate {
+    let (m, n) = (a.rows(), a.cols());
+    let nv = a.ring.nvars();
+    let kr = &ap.ring;
+    let mut checks = Vec::new();
+    let mut push = |property: &str, ok: bool, detail: String| {
+        checks.push(Check {
+            property: property.to_string(),
+            ok,
+            detail,
+        })
+    };
+    let shapes = ap.rows() == m
+        && ap.cols() == n
+        && (u.rows(), u.cols()) == (m, m)
+        && (d.rows(), d.cols()) == (m, n)
+        && (v.rows(), v.cols()) == (n, n);
+    push(
+        "shapes",
+        shapes,
+        format!("A and D are {m}×{n}, U is {m}×{m}, V is {n}×{n}"),
+    );
+    if !shapes {
+        return Certificate { checks };
+    }
+    let diag = d.diagonal();
+    let rank = diag.iter().take_while(|e| !kr.is_zero(e)).count();
+    let diag_ok = d.is_diagonal();
+    let zeros_last = diag[rank..].iter().all(|e| kr.is_zero(e));
+    let normalised = diag[..rank].iter().all(|e| kr.normalize(e) == *e);
+    let total: usize = diag.iter().map(|e| e.degree().unwrap_or(0)).sum();
+    let full = m == n && rank == n;
+    // Degrees first: the product is evaluated only if they can conclude.
+    let lower = if full && diag_ok {
+        det_degree_lower_bound(a, s, total)
+    } else {
+        None
+    };
+    let degrees = lower.is_some_and(|(l, _)| l >= total);
+    let structure = diag_ok && zeros_last && normalised;
+    let prod = (degrees || !full) && structure && product_by_lines(a, s, [u, d, v]);
+    push(
+        "U·A·V = D",
+        prod,
+        if prod {
+            "holds exactly (denominators cleared, compared over Q[all])"
+        } else {
+            "not established"
+        }
+        .to_string(),
+    );
+    push(
+        "D diagonal",
+        diag_ok,
+        if diag_ok {
+            "yes"
+        } else {
+            "D has a nonzero off-diagonal entry"
+        }
+        .to_string(),
+    );
+    let name = &a.ring.names[s];
+    if full {
+        let unimod = prod && degrees;
+        let why = match lower {
+            Some((l, p)) => format!(
+                "det U·det A·det V = det D ≠ 0 in {}, and deg_{name} det A ≥ {l} (its image at a point of the other symbols mod p = {p}) ≥ Σ deg_{name} D_ii = {total}: so deg det U + deg det V ≤ 0",
+                kr.name()
+            ),
+            None => "no degree bound for det A".to_string(),
+        };
+        for nm in ["U", "V"] {
+            push(
+                &format!("{nm} unimodular"),
+                unimod,
+                if unimod {
+                    format!(
+                        "{why}; det {nm} is a nonzero element of {}, a unit",
+                        kr.k.name()
+                    )
+                } else {
+                    format!("not established ({why})")
+                },
+            );
+        }
+    } else {
+        let ring = a.ring.clone();
+        let u2 = Matrix::new(
+            ring.clone(),
+            m,
+            m,
+            (0..m)
+                .flat_map(|i| cleared_line(&(0..m).map(|j| u.get(i, j)).collect::<Vec<_>>(), s, nv))
+                .collect(),
+        );
+        let mut v2 = Matrix::zeros(ring, n, n);
+        for j in 0..n {
+            let col = cleared_line(&(0..n).map(|i| v.get(i, j)).collect::<Vec<_>>(), s, nv);
+            for (i, e) in col.into_iter().enumerate() {
+                v2.set(i, j, e);
+            }
+        }
+        for (nm, mat) in [("U", &u2), ("V", &v2)] {
+            let det = if prod {
+                det_expanding_largest_row(mat)
+            } else {
+                None
+            };
+            let ok = det
+                .as_ref()
+                .is_some_and(|x| !x.is_zero() && !x.contains_var(s));
+            push(
+                &format!("{nm} unimodular"),
+                ok,
+                match det {
+                    Some(x) => format!(
+                        "{nm}′ ({nm} with each {} cleared of denominators in Q[others]) has det {} over Q[all]{}",
+                        if nm == "U" { "row" } else { "column" },
+                        a.ring.format(&x),
+                        if ok {
+                            format!(
+                                ", a nonzero element of Q[others]: det {nm} is a unit of {}",
+                                kr.name()
+                            )
+                        } else {
+                            ", not a nonzero element of Q[others]".to_string()
+                        }
+                    ),
+                    None => "not established".to_string(),
+                },
+            );
+        }
+    }
+    push(
+        "zeros last",
+        zeros_last,
+        format!("{rank} nonzero invariant factor(s), then zeros"),
+    );
+    push(
+        "invariant factors normalised",
+        normalised,
+        "each nonzero diagonal entry is monic in the principal symbol".to_string(),
+    );
+    let cleared: Vec<MPoly> = diag[..rank]
+        .iter()
+        .map(|e| cleared_line(&[e], s, nv).remove(0))
+        .collect();
+    let div_ok = cleared
+        .windows(2)
+        .all(|w| crate::algebra::gcd::prem(&w[1], &w[0], s).is_zero());
+    push(
+        "divisibility f1 | f2 | …",
+        div_ok,
+        if div_ok {
+            format!(
+                "each invariant factor divides the next (pseudo-remainder in {name} zero over Q[all])"
+            )
+        } else {
+            "not established".to_string()
+        },
+    );
+    Certificate { checks }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -301,5 +739,79 @@ mod tests {
         assert!(!cert.verified());
         assert!(cert.failures().any(|f| f.property.starts_with("deg_x")));
         assert!(!certify_last_factor_several(&a, &x, &b, &[0]).verified());
+    }
+
+    fn principal(a: &Matrix<PolyRing>, p: usize) -> Matrix<UPolyRing<RatFuncField>> {
+        let names = a.ring.names.clone();
+        let shown = names
+            .iter()
+            .enumerate()
+            .filter(|(i, _)| *i != p)
+            .map(|(_, n)| n.clone())
+            .collect();
+        let ring = UPolyRing::new(
+            RatFuncField {
+                names: names.clone(),
+                shown,
+            },
+            names[p].clone(),
+        );
+        let r2 = ring.clone();
+        a.map(ring, |e| {
+            r2.trim(e.coeffs_in(p).into_iter().map(RatFunc::from_poly).collect())
+        })
+    }
+
+    #[test]
+    fn principal_degrees_certify_the_fraction_free_route_and_catch_a_non_unit() {
+        let (x, y) = (MPoly::var(0, 2), MPoly::var(1, 2));
+        let one = MPoly::one(2);
+        let a = Matrix::new(
+            ring2(),
+            2,
+            2,
+            vec![&x * &y + &one, &x - &y, y.pow(2), &x * &y.scale(&qi(3))],
+        );
+        let ap = principal(&a, 1);
+        let ff =
+            crate::algebra::smith::fraction_free::eliminate_fraction_free(&a, 1).expect("finishes");
+        let [u, d, v] =
+            crate::algebra::smith::fraction_free::over_k(&ff, &ap.ring, 1).expect("units");
+        assert!(certify_principal_degrees(&a, 1, &ap, [&u, &d, &v]).verified());
+        // A changed entry of U breaks the product.
+        let mut u2 = u.clone();
+        let e = ap.ring.add(u2.get(0, 0), &ap.ring.one());
+        u2.set(0, 0, e);
+        let cert = certify_principal_degrees(&a, 1, &ap, [&u2, &d, &v]);
+        assert!(cert.failures().any(|c| c.property == "U·A·V = D"));
+        // A = I, U = diag(y, y), V = I, D = diag(y, y): the product, the
+        // normal form and the divisibility hold, but det U = y² is not a
+        // unit; only deg_y det A = 0 < 2 exposes it.
+        let z = MPoly::zero(2);
+        let i2 = Matrix::new(
+            ring2(),
+            2,
+            2,
+            vec![one.clone(), z.clone(), z.clone(), one.clone()],
+        );
+        let yy = Matrix::new(ring2(), 2, 2, vec![y.clone(), z.clone(), z, y.clone()]);
+        let (ip, yp) = (principal(&i2, 1), principal(&yy, 1));
+        let cert = certify_principal_degrees(&i2, 1, &ip, [&yp, &yp, &ip]);
+        assert!(!cert.verified());
+        assert!(cert.failures().any(|c| c.property == "U unimodular"));
+        // The singular route: [[x, y], [x·y, y²]] has rank 1 over Q(x)[y].
+        let s = Matrix::new(ring2(), 2, 2, vec![x.clone(), y.clone(), &x * &y, y.pow(2)]);
+        let sp = principal(&s, 1);
+        let ff =
+            crate::algebra::smith::fraction_free::eliminate_fraction_free(&s, 1).expect("finishes");
+        let [u, d, v] =
+            crate::algebra::smith::fraction_free::over_k(&ff, &sp.ring, 1).expect("units");
+        let cert = certify_principal_degrees(&s, 1, &sp, [&u, &d, &v]);
+        assert!(cert.verified(), "{:?}", cert.failures().collect::<Vec<_>>());
+        assert!(
+            cert.checks
+                .iter()
+                .any(|c| c.detail.contains("cleared of denominators"))
+        );
     }
 }

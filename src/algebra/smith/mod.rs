@@ -17,6 +17,7 @@ pub mod certify_several;
 pub mod detadj;
 pub mod divisors;
 pub mod elimination;
+pub mod fraction_free;
 pub mod hermite_cert;
 pub mod minors_cert;
 pub mod modes;

@@ -714,14 +714,17 @@ fn principal(
         return Ok(r);
     }
     refuse_if_too_large(a, "the principal mode")?;
-    opts.progress
-        .phase(&format!("elimination over {ring_name}"));
-    let dec = SmithDecomposition::new(&ap);
-    let alg = "elimination over K[λ]: least-degree pivot, division with remainder";
     let check = ClearedDenominators {
         p,
         nvars: a.ring.nvars(),
     };
+    if let Some(r) = principal_fraction_free(name, a, &ap, p, &note, opts)? {
+        return Ok(r);
+    }
+    opts.progress
+        .phase(&format!("elimination over {ring_name}"));
+    let dec = SmithDecomposition::new(&ap);
+    let alg = "elimination over K[λ]: least-degree pivot, division with remainder";
     let (mut report, dec) = generic_report(
         name,
         a,
@@ -741,8 +744,62 @@ fn principal(
             .collect(),
     );
     opts.progress.phase("denominator-free form over Q[all]");
-    report.denominator_free = Some(denominator_free(a, &dec, p)?);
+    report.denominator_free = Some(denominator_free(a, [&dec.u, &dec.d, &dec.v], p)?);
     Ok(report)
+}
+
+/// The principal mode for a square nonsingular input by the fraction-free
+/// elimination over Q[others][λ] ([`super::fraction_free`]), certified
+/// without inverse products
+/// ([`super::certify_several::certify_principal_degrees`]); `Ok(None)`
+/// when that route does not apply or does not certify (the caller takes
+/// the elimination over K[λ]).
+fn principal_fraction_free(
+    name: &str,
+    a: &Matrix<PolyRing>,
+    ap: &Matrix<UPolyRing<RatFuncField>>,
+    p: usize,
+    note: &str,
+    opts: &SmithOptions,
+) -> Result<Option<SmithReport>, SmithError> {
+    let kr = &ap.ring;
+    opts.progress.phase(&format!(
+        "fraction-free elimination over Q[{}][{}]",
+        kr.k.shown.join(", "),
+        a.ring.names[p]
+    ));
+    let Some(ff) = super::fraction_free::eliminate_fraction_free(a, p) else {
+        return Ok(None);
+    };
+    let Some([u, d, v]) = super::fraction_free::over_k(&ff, kr, p) else {
+        return Ok(None);
+    };
+    opts.progress
+        .phase("certifying U·A·V = D and deg det A (no inverse products)");
+    let cert = super::certify_several::certify_principal_degrees(a, p, ap, [&u, &d, &v]);
+    if !cert.verified() {
+        return Ok(None);
+    }
+    let mut report = transforms_report(
+        name,
+        a,
+        [&d, &u, &v],
+        cert,
+        "fraction-free elimination over Q[others][λ] (pseudo-division in λ, contents in Q[others] removed from each changed line), U = diag(1/lc)·U′, V = V′",
+        Mode::Principal,
+        kr.name(),
+        note.to_string(),
+        opts,
+    );
+    report.invariant_factor_coefficients = Some(
+        d.diagonal()
+            .iter()
+            .map(|f| f.coeffs().iter().map(|c| kr.k.lmx(c)).collect())
+            .collect(),
+    );
+    opts.progress.phase("denominator-free form over Q[all]");
+    report.denominator_free = Some(denominator_free(a, [&u, &d, &v], p)?);
+    Ok(Some(report))
 }
 
 /// From this size on, a square principal-mode input whose (n−1)-th
@@ -759,7 +816,10 @@ pub const PRINCIPAL_FORM_ONLY_MIN: usize = 6;
 /// whose det had at most 20 terms took ≤ 1.1 s CPU, and 16 of those with
 /// 23 to 180 terms ran over 10 s (the transforms' coefficients are
 /// rational functions of resultant size); the 4×4 in k1, k2, k3
-/// (det of 21 terms) takes 0.6 s and keeps its transforms.
+/// (det of 21 terms) keeps its transforms (24 ms CPU by the fraction-free
+/// route). With that route, 5 of 12 random 4×4 in three symbols of degree
+/// 2 whose det has over 22 terms still took over 20 s with transforms, so
+/// the threshold stays.
 pub const PRINCIPAL_TRANSFORM_TERMS: usize = 22;
 
 /// The principal-mode report with D alone, when the input is large
@@ -925,11 +985,11 @@ fn clearing_scale(line: &[&UPoly<RatFunc>], n: usize) -> (MPoly, MPoly) {
 
 fn denominator_free(
     a: &Matrix<PolyRing>,
-    dec: &SmithDecomposition<UPolyRing<RatFuncField>>,
+    [du, dd, dv]: [&Matrix<UPolyRing<RatFuncField>>; 3],
     p: usize,
 ) -> Result<DenominatorFree, SmithError> {
     let n = a.ring.nvars();
-    let kr = &dec.u.ring;
+    let kr = &du.ring;
     let pr = a.ring.clone();
     let scale_line = |line: Vec<&UPoly<RatFunc>>| -> Vec<MPoly> {
         let (l, g) = clearing_scale(&line, n);
@@ -941,16 +1001,16 @@ fn denominator_free(
             })
             .collect()
     };
-    let m = dec.u.rows();
+    let m = du.rows();
     let mut u_rows = Vec::new();
     for i in 0..m {
-        u_rows.extend(scale_line((0..m).map(|j| dec.u.get(i, j)).collect()));
+        u_rows.extend(scale_line((0..m).map(|j| du.get(i, j)).collect()));
     }
     let u2 = Matrix::new(pr.clone(), m, m, u_rows);
-    let nn = dec.v.cols();
+    let nn = dv.cols();
     let mut v2 = Matrix::zeros(pr.clone(), nn, nn);
     for j in 0..nn {
-        let col = scale_line((0..nn).map(|i| dec.v.get(i, j)).collect());
+        let col = scale_line((0..nn).map(|i| dv.get(i, j)).collect());
         for (i, e) in col.into_iter().enumerate() {
             v2.set(i, j, e);
         }
@@ -990,7 +1050,7 @@ fn denominator_free(
     });
     let mut dets = Vec::new();
     for (nm, mat) in [("U′", &u2), ("V′", &v2)] {
-        let d = mat.det().expect("square");
+        let d = super::certify_several::det_expanding_largest_row(mat).expect("square");
         let ok = !d.is_zero() && !d.contains_var(p);
         dets.push(pr.lmx(&d));
         checks.push(Check {
@@ -1012,7 +1072,11 @@ fn denominator_free(
         ),
     });
     // D′ are associates over K of the certified invariant factors.
-    let inv = dec.invariant_factors();
+    let inv: Vec<UPoly<RatFunc>> = dd
+        .diagonal()
+        .into_iter()
+        .filter(|e| !kr.is_zero(e))
+        .collect();
     let assoc_ok = inv.iter().enumerate().all(|(i, f)| {
         let e = dprim.get(i, i);
         let as_k = kr.trim(e.coeffs_in(p).into_iter().map(RatFunc::from_poly).collect());

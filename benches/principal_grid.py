@@ -1,0 +1,152 @@
+#!/usr/bin/env python3
+"""Principal-mode timings on seeded random matrices in several symbols,
+against PARI/GP's matsnf(M, 3) over Q(others)[principal].
+
+Usage:
+  principal_grid.py BIN [--ns 2,3,4] [--nvs 2,3] [--degs 1,2] [--seeds 1-8]
+                        [--terms T] [--timeout S] [--no-pari]
+
+The matrices are benches/multi_peers.py's (same generator, same seeds); the
+principal symbol is the last one. lambdamat: user CPU of the whole
+`BIN smith FILE --principal s --json` process (RLIMIT_CPU = timeout);
+PARI: matsnf's own time (getabstime, the call repeated until 200 ms
+have passed, time per call), under the same CPU limit. One line
+per case (route, whether U and V were given, the degrees in the principal
+symbol of the invariant factors, times, ratio), then a summary."""
+import json
+import os
+import resource
+import subprocess
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import multi_peers  # noqa: E402
+
+
+def arg(a, name, default):
+    return a[a.index(name) + 1] if name in a else default
+
+
+def ints(spec):
+    out = []
+    for part in spec.split(","):
+        if "-" in part:
+            lo, hi = part.split("-")
+            out.extend(range(int(lo), int(hi) + 1))
+        else:
+            out.append(int(part))
+    return out
+
+
+def limit(seconds):
+    def set_limits():
+        resource.setrlimit(resource.RLIMIT_CPU, (seconds, seconds + 1))
+
+    return set_limits
+
+
+def run_ours(binary, path, principal, timeout):
+    before = resource.getrusage(resource.RUSAGE_CHILDREN).ru_utime
+    p = subprocess.run(
+        [binary, "smith", path, "--principal", principal, "--json"],
+        capture_output=True, text=True, preexec_fn=limit(timeout),
+    )
+    t = resource.getrusage(resource.RUSAGE_CHILDREN).ru_utime - before
+    if p.returncode != 0:
+        return t, None
+    v = json.loads(p.stdout)
+    rep = v[0] if isinstance(v, list) else v
+    if "results" in rep:
+        rep = rep["results"][0]["result"]
+    return t, rep
+
+
+def run_pari(m, nv, principal, timeout):
+    """matsnf(M, 3) over Q(others)[x], repeated until 200 ms have passed
+    (getabstime counts milliseconds): the time per call and the degrees."""
+    names = [f"a{i}" for i in range(nv)]
+    names[principal] = "x"
+    rows = ";".join(",".join(multi_peers.poly_str(e, names) for e in row) for row in m)
+    prog = (
+        f"M=[{rows}];t0=getabstime();r=matsnf(M,3);k=1;"
+        "while(getabstime()-t0<200,r=matsnf(M,3);k++);"
+        "t=(getabstime()-t0)/k;D=r[3];print(t*1.0);print(k);"
+        "print(vector(#D,i,poldegree(D[i,i],x)));"
+    )
+    out = subprocess.run(
+        ["gp", "-q", "-s", "1G"], input=prog, capture_output=True, text=True,
+        preexec_fn=limit(timeout),
+    ).stdout.splitlines()
+    return float(out[0]) / 1000.0, out[2].replace(" ", "")
+
+
+def main():
+    a = sys.argv[1:]
+    binary = a[0]
+    ns = ints(arg(a, "--ns", "2,3,4"))
+    nvs = ints(arg(a, "--nvs", "2,3"))
+    degs = ints(arg(a, "--degs", "1,2"))
+    seeds = ints(arg(a, "--seeds", "1-8"))
+    terms = int(arg(a, "--terms", "3"))
+    timeout = int(arg(a, "--timeout", "60"))
+    multi_peers.TIMEOUT = timeout + 5
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for n in ns:
+            for nv in nvs:
+                names = multi_peers.NAMES[:nv]
+                for deg in degs:
+                    for seed in seeds:
+                        m = multi_peers.gen(n, nv, deg, seed, terms)
+                        path = os.path.join(tmp, f"m_{n}_{nv}_{deg}_{seed}.lmx")
+                        with open(path, "w") as f:
+                            f.write(multi_peers.lmx(m, names))
+                        t, rep = run_ours(binary, path, names[-1], timeout)
+                        if rep is None:
+                            route, uv, degs_ours = "FAILED/limit", "-", "-"
+                        else:
+                            alg = rep.get("algorithm", "")
+                            route = (
+                                "ff" if alg.startswith("fraction-free")
+                                else "det-adj" if alg.startswith("det and adj")
+                                else "field" if alg.startswith("elimination")
+                                else alg[:20]
+                            )
+                            uv = "yes" if rep.get("U") else "no"
+                            degs_ours = "[" + ",".join(
+                                str(len(c) - 1)
+                                for c in rep.get("invariant_factor_coefficients") or []
+                            ) + "]"
+                        pt, pdeg = None, "-"
+                        if "--no-pari" not in a:
+                            try:
+                                pt, pdeg = run_pari(m, nv, nv - 1, timeout)
+                            except Exception as e:  # noqa: BLE001
+                                pdeg = type(e).__name__
+                        ratio = f"{pt / t:.2f}" if pt is not None and t > 0 else "-"
+                        try:
+                            agree = sorted(json.loads(pdeg)) == sorted(json.loads(degs_ours))
+                        except (ValueError, TypeError):
+                            agree = "-"
+                        line = (
+                            f"n={n} nv={nv} deg={deg} seed={seed} route={route} uv={uv} "
+                            f"ours={t:.3f}s degs={degs_ours} pari={'-' if pt is None else f'{pt:.3f}s'} "
+                            f"pari_degs={pdeg} agree={agree} pari/ours={ratio}"
+                        )
+                        print(line, flush=True)
+                        rows.append((n, t, pt, route))
+    print("summary (per n: cases, max ours s, median ours s, PARI faster in how many, max PARI s)")
+    for n in ns:
+        r = [x for x in rows if x[0] == n]
+        ts = sorted(x[1] for x in r)
+        slower = sum(1 for x in r if x[2] is not None and x[2] < x[1])
+        pmax = max((x[2] for x in r if x[2] is not None), default=None)
+        print(
+            f"n={n}: {len(r)} cases, max {ts[-1]:.3f} s, median {ts[len(ts) // 2]:.3f} s, "
+            f"PARI faster in {slower}, PARI max {pmax}"
+        )
+
+
+if __name__ == "__main__":
+    main()

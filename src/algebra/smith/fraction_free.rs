@@ -1,0 +1,346 @@
+//! The principal mode's elimination without rational-function arithmetic:
+//! a Smith elimination over R[λ], R = Q[others], for any A over Q[all]
+//! (any shape and rank). Every operation is `row_i ← m·row_i − q·row_k` (and the
+//! same on columns) with `m ∈ R \ {0}` (a unit of K = Q(others)) and
+//! `q ∈ R[λ]` from a pseudo-division in λ, so U′ and V′ stay polynomial
+//! and `U′·A·V′ = diag(e_1, …, e_r, 0, …)` over Q[all], with det U′ and det V′
+//! nonzero elements of R and e_i | e_(i+1) over K[λ]. The content in R of
+//! each changed row (column), taken over the working matrix and U′ (V′)
+//! together, is divided out, which keeps the entries near the size of the
+//! minors. Nothing here is trusted: [`super::certify_several::
+//! certify_principal_degrees`] checks the result from scratch. This module
+//! must not certify, choose a mode or print.
+
+use crate::algebra::gcd::{gcd, prem};
+use crate::algebra::matrix::Matrix;
+use crate::algebra::mpoly::MPoly;
+use crate::algebra::polyring::PolyRing;
+use crate::algebra::ratfunc::{RatFunc, RatFuncField};
+use crate::algebra::rational::primitive_scale;
+use crate::algebra::upoly::UPolyRing;
+
+/// `U′·A·V′ = diag(e)` over Q[all] (not yet certified).
+#[derive(Clone, Debug)]
+pub struct FractionFree {
+    /// Row transform, polynomial.
+    pub u: Matrix<PolyRing>,
+    /// Column transform, polynomial.
+    pub v: Matrix<PolyRing>,
+    /// The nonzero diagonal (length the rank), each entry dividing the
+    /// next over K[λ]; the rest of `U′·A·V′` is zero.
+    pub e: Vec<MPoly>,
+}
+
+/// Gives up after this many pivot rounds (a safeguard; a round lowers the
+/// pivot's degree in λ or finishes a column, so honest inputs need few).
+const MAX_ROUNDS: usize = 10_000;
+
+struct Work {
+    m: Vec<Vec<MPoly>>,
+    u: Vec<Vec<MPoly>>,
+    v: Vec<Vec<MPoly>>,
+    rows: usize,
+    cols: usize,
+    p: usize,
+}
+
+fn deg(e: &MPoly, p: usize) -> Option<u32> {
+    e.degree_in(p)
+}
+
+/// `(m, q)` with `m·b − q·a` of λ-degree below that of `a`, m ∈ R \ {0}.
+fn pseudo_quotient(b: &MPoly, a: &MPoly, p: usize) -> (MPoly, MPoly) {
+    let nv = a.nvars();
+    let da = deg(a, p).unwrap_or(0);
+    let la = a.lc_in(p);
+    let la_const = la.as_constant();
+    let mut m = MPoly::one(nv);
+    let mut q = MPoly::zero(nv);
+    let mut r = b.clone();
+    while let Some(dr) = deg(&r, p) {
+        if dr < da {
+            break;
+        }
+        let lr = r.lc_in(p);
+        let (ma, mr) = match &la_const {
+            Some(c) => (MPoly::one(nv), lr.scale(&c.recip())),
+            None => {
+                let g = gcd(&la, &lr);
+                (
+                    la.div_exact(&g).unwrap_or_else(|| la.clone()),
+                    lr.div_exact(&g).unwrap_or(lr.clone()),
+                )
+            }
+        };
+        let t = mr.shift(p, dr - da);
+        r = &(&ma * &r) - &(&t * a);
+        q = &(&ma * &q) + &t;
+        m = &ma * &m;
+    }
+    (m, q)
+}
+
+/// Divides the nonzero entries of `line` by their gcd in Q[all] and scales
+/// them to coprime integer coefficients.
+fn reduce_line(line: &mut [&mut MPoly]) {
+    let mut g = MPoly::zero(line.first().map_or(0, |e| e.nvars()));
+    for e in line.iter() {
+        if e.is_zero() {
+            continue;
+        }
+        g = gcd(&g, e);
+        if g.is_nonzero_constant() {
+            break;
+        }
+    }
+    if !g.is_zero() && !g.is_nonzero_constant() {
+        for e in line.iter_mut() {
+            if let Some(q) = e.div_exact(&g) {
+                **e = q;
+            }
+        }
+    }
+    let s = primitive_scale(line.iter().flat_map(|e| e.terms().iter().map(|(_, c)| c)));
+    if !num_traits::Zero::is_zero(&s) && !num_traits::One::is_one(&s) {
+        for e in line.iter_mut() {
+            **e = e.scale(&s);
+        }
+    }
+}
+
+impl Work {
+    fn row_op(&mut self, i: usize, k: usize, m: &MPoly, q: &MPoly) {
+        for j in 0..self.cols {
+            let a = &(m * &self.m[i][j]) - &(q * &self.m[k][j]);
+            self.m[i][j] = a;
+        }
+        for j in 0..self.rows {
+            let b = &(m * &self.u[i][j]) - &(q * &self.u[k][j]);
+            self.u[i][j] = b;
+        }
+        let (mi, ui) = (&mut self.m[i], &mut self.u[i]);
+        let mut line: Vec<&mut MPoly> = mi.iter_mut().chain(ui.iter_mut()).collect();
+        reduce_line(&mut line);
+    }
+
+    fn col_op(&mut self, j: usize, k: usize, m: &MPoly, q: &MPoly) {
+        for i in 0..self.rows {
+            let a = &(m * &self.m[i][j]) - &(q * &self.m[i][k]);
+            self.m[i][j] = a;
+        }
+        for i in 0..self.cols {
+            let b = &(m * &self.v[i][j]) - &(q * &self.v[i][k]);
+            self.v[i][j] = b;
+        }
+        let mut line: Vec<&mut MPoly> = self
+            .m
+            .iter_mut()
+            .map(|r| &mut r[j])
+            .chain(self.v.iter_mut().map(|r| &mut r[j]))
+            .collect();
+        reduce_line(&mut line);
+    }
+
+    /// The nonzero entry of least λ-degree (then fewest terms) in the
+    /// active block.
+    fn pivot(&self, k: usize) -> Option<(usize, usize)> {
+        let mut best: Option<((u32, usize), (usize, usize))> = None;
+        for i in k..self.rows {
+            for j in k..self.cols {
+                let e = &self.m[i][j];
+                if let Some(d) = deg(e, self.p) {
+                    let key = (d, e.terms().len());
+                    if best.as_ref().is_none_or(|(b, _)| key < *b) {
+                        best = Some((key, (i, j)));
+                    }
+                }
+            }
+        }
+        best.map(|(_, ij)| ij)
+    }
+}
+
+/// The fraction-free Smith elimination of `a` over Q[others][λ], λ the
+/// symbol with index `p` (any shape and rank); `None` only if the
+/// safeguard on the number of rounds stops it.
+pub fn eliminate_fraction_free(a: &Matrix<PolyRing>, p: usize) -> Option<FractionFree> {
+    let (rows, cols) = (a.rows(), a.cols());
+    let nv = a.ring.nvars();
+    let id = |n: usize| -> Vec<Vec<MPoly>> {
+        (0..n)
+            .map(|i| {
+                (0..n)
+                    .map(|j| {
+                        if i == j {
+                            MPoly::one(nv)
+                        } else {
+                            MPoly::zero(nv)
+                        }
+                    })
+                    .collect()
+            })
+            .collect()
+    };
+    let mut w = Work {
+        m: (0..rows).map(|i| a.row(i).to_vec()).collect(),
+        u: id(rows),
+        v: id(cols),
+        rows,
+        cols,
+        p,
+    };
+    let mut rounds = 0usize;
+    let mut rank = 0usize;
+    for k in 0..rows.min(cols) {
+        loop {
+            rounds += 1;
+            if rounds > MAX_ROUNDS {
+                return None;
+            }
+            let Some((pi, pj)) = w.pivot(k) else {
+                break;
+            };
+            w.m.swap(k, pi);
+            w.u.swap(k, pi);
+            for row in w.m.iter_mut() {
+                row.swap(k, pj);
+            }
+            for row in w.v.iter_mut() {
+                row.swap(k, pj);
+            }
+            let pivot = w.m[k][k].clone();
+            let mut dirty = false;
+            for i in k + 1..rows {
+                if w.m[i][k].is_zero() {
+                    continue;
+                }
+                let (m, q) = pseudo_quotient(&w.m[i][k], &pivot, p);
+                w.row_op(i, k, &m, &q);
+                dirty |= !w.m[i][k].is_zero();
+            }
+            if dirty {
+                continue;
+            }
+            let pivot = w.m[k][k].clone();
+            for j in k + 1..cols {
+                if w.m[k][j].is_zero() {
+                    continue;
+                }
+                let (m, q) = pseudo_quotient(&w.m[k][j], &pivot, p);
+                w.col_op(j, k, &m, &q);
+                dirty |= !w.m[k][j].is_zero();
+            }
+            if dirty {
+                continue;
+            }
+            // The pivot must divide every remaining entry over K[λ].
+            let pivot = w.m[k][k].clone();
+            let bad = (k + 1..rows).find(|&i| {
+                (k + 1..cols)
+                    .any(|j| !w.m[i][j].is_zero() && !prem(&w.m[i][j], &pivot, p).is_zero())
+            });
+            match bad {
+                Some(i) => {
+                    let one = MPoly::one(nv);
+                    let minus_one = -&one;
+                    // row_k ← row_k + row_i.
+                    w.row_op(k, i, &one, &minus_one);
+                }
+                None => {
+                    rank = k + 1;
+                    break;
+                }
+            }
+        }
+        if rank != k + 1 {
+            break;
+        }
+    }
+    let e: Vec<MPoly> = (0..rank).map(|i| w.m[i][i].clone()).collect();
+    let flat = |m: Vec<Vec<MPoly>>| m.into_iter().flatten().collect::<Vec<_>>();
+    Some(FractionFree {
+        u: Matrix::new(a.ring.clone(), rows, rows, flat(w.u)),
+        v: Matrix::new(a.ring.clone(), cols, cols, flat(w.v)),
+        e,
+    })
+}
+
+/// `(U, D, V)` over K[λ] from a fraction-free result: `D = diag(e_i /
+/// lc_λ(e_i))` (monic), `U = diag(1/lc_λ(e_i))·U′`, `V = V′`; so `U·A·V =
+/// D` whenever `U′·A·V′ = diag(e)`.
+pub fn over_k(
+    ff: &FractionFree,
+    kr: &UPolyRing<RatFuncField>,
+    p: usize,
+) -> Option<[Matrix<UPolyRing<RatFuncField>>; 3]> {
+    let (rows, cols) = (ff.u.rows(), ff.v.rows());
+    let nv = ff.u.ring.nvars();
+    let to_k = |e: &MPoly| kr.trim(e.coeffs_in(p).into_iter().map(RatFunc::from_poly).collect());
+    let mut d = Matrix::zeros(kr.clone(), rows, cols);
+    let mut u = ff.u.map(kr.clone(), to_k);
+    for (i, e) in ff.e.iter().enumerate() {
+        let s = RatFunc::new(MPoly::one(nv), e.lc_in(p))?;
+        d.set(i, i, kr.scale(&to_k(e), &s));
+        for j in 0..rows {
+            let x = kr.scale(u.get(i, j), &s);
+            u.set(i, j, x);
+        }
+    }
+    let v = ff.v.map(kr.clone(), to_k);
+    Some([u, d, v])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::algebra::rational::qi;
+
+    #[test]
+    fn fraction_free_product_is_the_diagonal() {
+        let ring = PolyRing::new(vec!["x".into(), "y".into()]);
+        let (x, y) = (MPoly::var(0, 2), MPoly::var(1, 2));
+        let one = MPoly::one(2);
+        let a = Matrix::new(
+            ring,
+            3,
+            3,
+            vec![
+                &x * &y + &one,
+                y.clone(),
+                &x - &y,
+                y.pow(2),
+                &x + &y.scale(&qi(3)),
+                one.clone(),
+                &x * &y,
+                MPoly::zero(2),
+                &y * &y - &one,
+            ],
+        );
+        let ff = eliminate_fraction_free(&a, 1).expect("nonsingular");
+        let prod = ff.u.mul(&a).and_then(|m| m.mul(&ff.v)).expect("shapes");
+        for i in 0..3 {
+            for j in 0..3 {
+                let want = if i == j {
+                    ff.e[i].clone()
+                } else {
+                    MPoly::zero(2)
+                };
+                assert_eq!(prod.get(i, j), &want, "entry {i},{j}");
+            }
+        }
+    }
+
+    #[test]
+    fn singular_input_has_its_rank() {
+        let ring = PolyRing::new(vec!["x".into(), "y".into()]);
+        let (x, y) = (MPoly::var(0, 2), MPoly::var(1, 2));
+        let a = Matrix::new(ring, 2, 2, vec![x.clone(), y.clone(), &x * &y, &y * &y]);
+        let ff = eliminate_fraction_free(&a, 1).expect("finishes");
+        assert_eq!(ff.e.len(), 1);
+        let prod = ff.u.mul(&a).and_then(|m| m.mul(&ff.v)).expect("shapes");
+        assert_eq!(prod.get(0, 0), &ff.e[0]);
+        for (i, j) in [(0, 1), (1, 0), (1, 1)] {
+            assert!(prod.get(i, j).is_zero());
+        }
+    }
+}
