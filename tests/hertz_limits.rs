@@ -353,9 +353,17 @@ fn the_front_names_every_physical_limit_from_the_structured_refusal() {
         assert!(!r.error.is_input_error());
         (r.limit, r.error.to_string())
     };
-    // Small friction (c ≈ 1e-46 at ν = −0.9, μ = 0.01; refused since the
-    // condition's trend does not show the root beyond the end).
-    let (l, text) = limit(-0.9, Given::Mu(0.01));
+    // Small friction (c ≈ 1e-46 at ν = −0.9, μ = 0.01; at the tolerance
+    // 1e-11 refused, since the end answer's c, within 5e-11, is not).
+    let tight = SplitOptions {
+        tol: 1e-11,
+        ..SplitOptions::default()
+    };
+    let r = solve_with_limit(-0.9, Given::Mu(0.01), &tight)
+        .err()
+        .expect("refused");
+    assert!(!r.error.is_input_error());
+    let (l, text) = (r.limit, r.error.to_string());
     assert!(matches!(l, Some(Limit::SmallFriction { .. })), "{l:?}");
     assert!(text.contains("small-friction limit"), "{text}");
     // Thin slip: ν = 0.49, μ = 1 (1 − c below 1e-12).

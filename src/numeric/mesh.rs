@@ -202,9 +202,10 @@ impl Mesh {
         // far from its root, whose field is singular at `c`) follows that
         // cycle: a staircase in `d` (issue 13). Anchored at the gap alone,
         // the outer panels cycle instead, and the outputs (integrals over
-        // the whole interval) follow them. Half-way in scale, the one panel
-        // whose length varies (from 1.3 to 9.3 times its inner neighbour's)
-        // sits where the fields vary smoothly on both scales.
+        // the whole interval) follow them. Half-way in scale, the two
+        // panels whose ratio varies (between `1/√σ` and `1/σ`, never
+        // coarser than the grading) sit where the fields vary smoothly on
+        // both scales.
         let side = |layers: usize, span: f64, d: f64, z: f64| -> Vec<f64> {
             let ex = extra(span, d);
             if ex < 2 {
@@ -215,11 +216,12 @@ impl Mesh {
             let s = d * (1.0 / sigma).powi(j as i32);
             let full = d * (1.0 / sigma).powi(ex as i32);
             let n = cap(layers + ex, full, z);
-            let mut r: Vec<f64> = (0..n)
-                .map(|k| span * sigma.powi(k as i32))
-                .take_while(|&r| r >= 2.0 * s)
-                .take(ex - j + 1)
-                .collect();
+            let mut r: Vec<f64> = (0..ex - j).map(|k| span * sigma.powi(k as i32)).collect();
+            // The outer layers end at `x ∈ [s/σ, s/σ²)`; two panels of one
+            // ratio `√(x/s)` between 1/σ and 1/√σ join them to `s`.
+            if let Some(&x) = r.last() {
+                r.push((x * s).sqrt());
+            }
             let inner = n.saturating_sub(ex - j).max(1);
             r.extend((0..inner).map(|k| s * sigma.powi(k as i32)));
             r
@@ -420,7 +422,7 @@ mod tests {
             let inner = m.breaks[i + 1..i + 9].iter().map(|z| (z - c) / c).collect();
             let mid = 0.5 * (1.0 + c);
             let j = m.breaks.iter().position(|&z| z == mid).unwrap();
-            let outer = m.breaks[j - 3..=j].to_vec();
+            let outer = m.breaks[j - 2..=j].to_vec();
             (inner, outer)
         };
         let (first, _) = near(1e-9);
