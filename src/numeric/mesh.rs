@@ -208,14 +208,17 @@ impl Mesh {
         // both scales.
         let side = |layers: usize, span: f64, d: f64, z: f64| -> Vec<f64> {
             let ex = extra(span, d);
-            if ex < 2 {
-                let n = cap(layers + ex, span, z);
-                return (0..n).map(|k| span * sigma.powi(k as i32)).collect();
-            }
             let j = ex / 2;
             let s = d * (1.0 / sigma).powi(j as i32);
             let full = d * (1.0 / sigma).powi(ex as i32);
             let n = cap(layers + ex, full, z);
+            // Not anchored: few extra layers, or layers cut by the floor
+            // (the panels beside a point within ~1e-12 of 1 are then set by
+            // rounding, not by the gap).
+            if ex < 2 || n < layers + ex {
+                let n = cap(layers + ex, span, z);
+                return (0..n).map(|k| span * sigma.powi(k as i32)).collect();
+            }
             let mut r: Vec<f64> = (0..ex - j).map(|k| span * sigma.powi(k as i32)).collect();
             // The outer layers end at `x ∈ [s/σ, s/σ²)`; two panels of one
             // ratio `√(x/s)` between 1/σ and 1/√σ join them to `s`.
