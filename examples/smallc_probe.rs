@@ -34,7 +34,11 @@ fn run() -> Result<(), String> {
     let pb = SplitProblem::from_input(input).map_err(|e| e.to_string())?;
     let lvl = SplitLevel::level(k);
     for i in 0..n {
-        let f = if n > 1 { i as f64 / (n - 1) as f64 } else { 0.0 };
+        let f = if n > 1 {
+            i as f64 / (n - 1) as f64
+        } else {
+            0.0
+        };
         let c = c0 * (c1 / c0).powf(f);
         let d = pb.discretise(&[c], &lvl).map_err(|e| e.to_string())?;
         let b = pb.coefficient(&d, 0).ok_or("no coefficient B")?;

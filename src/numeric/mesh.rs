@@ -240,8 +240,16 @@ impl Mesh {
                 (true, false) => b,
                 _ => a,
             };
-            let la = if ga { side(la, mid - a, gap[i], a) } else { vec![] };
-            let lb = if gb { side(lb, b - mid, gap[i + 1], b) } else { vec![] };
+            let la = if ga {
+                side(la, mid - a, gap[i], a)
+            } else {
+                vec![]
+            };
+            let lb = if gb {
+                side(lb, b - mid, gap[i + 1], b)
+            } else {
+                vec![]
+            };
             if ga {
                 // Panels [a + r_k, a + r_{k-1}], r_0 = mid - a.
                 let n = la.len();
