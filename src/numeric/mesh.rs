@@ -262,11 +262,14 @@ impl Mesh {
                 }
             }
             if gb {
+                // Panels [b - r_{k-1}, b - r_k], the last ending at b.
                 let n = lb.len();
-                for k in 1..=n {
-                    breaks.push(if k == n { b } else { b - lb[k] });
+                for (k, r) in lb.iter().enumerate().skip(1) {
+                    breaks.push(b - r);
                     levels.push(n - k);
                 }
+                breaks.push(b);
+                levels.push(0);
             } else if !ga {
                 breaks.push(b);
                 levels.push(1);
