@@ -277,10 +277,12 @@ fn negative_poisson_ratio_solves() {
 #[test]
 fn the_ends_are_refused_with_their_limit() {
     // ν = −0.9, μ = 0.01: the stick zone (c ≈ 1e-46) is below the
-    // resolved range, and the condition's trend there does not show the
-    // root (so no answer at the end, src/plan/split_end.rs); the roots
+    // resolved range (c is bounded at the end, src/plan/split_end.rs); the roots
     // near c → 1 violate the Coulomb bound and are not returned.
-    let e = solve("-9/10", "1/100").expect_err("refused");
+    // At tol 1e-10 it is answered at the end (tests/end_answers.rs); at
+    // 1e-11 the bounded c (within 5e-11) is not enough.
+    let r = root_at_end_tol("-9/10", "1/100", 1e-11);
+    let e = PlanError::RootAtEnd(Box::new(r)).to_string();
     assert!(
         e.contains("violates the bound") && e.contains("closer than"),
         "{e}"
@@ -293,6 +295,11 @@ fn the_ends_are_refused_with_their_limit() {
 /// The split solver's refusal at an end as data: `(nu, mu)` through
 /// `examples/hertz.lmx`.
 fn root_at_end(nu: &str, mu: &str) -> RootAtEnd {
+    root_at_end_tol(nu, mu, SplitOptions::default().tol)
+}
+
+/// As [`root_at_end`] at the tolerance `tol`.
+fn root_at_end_tol(nu: &str, mu: &str, tol: f64) -> RootAtEnd {
     let path = "examples/hertz.lmx";
     let src = std::fs::read_to_string(path).expect("example exists");
     let sets = vec![
@@ -300,7 +307,11 @@ fn root_at_end(nu: &str, mu: &str) -> RootAtEnd {
         ("mu".to_string(), parse_exact(mu).expect("exact")),
     ];
     let prog = parse_program_with(&src, path, &sets).expect("valid");
-    match solve_split(&prog, &SplitOptions::default()) {
+    let o = SplitOptions {
+        tol,
+        ..SplitOptions::default()
+    };
+    match solve_split(&prog, &o) {
         Err(PlanError::RootAtEnd(r)) => *r,
         other => panic!("ν={nu} μ={mu}: not a root at an end: {other:?}"),
     }
@@ -329,8 +340,8 @@ fn the_ends_are_structured_refusals_naming_the_scalar_the_end_and_the_trend() {
     assert!(r.message.contains("no answer at the end either"));
     // ν = −0.9, μ = 0.01: the only sign change is a root near c = 1 that
     // violates the Coulomb bound (the physical root, c ≈ 1e-46, lies
-    // below the resolved range).
-    let r = root_at_end("-9/10", "1/100");
+    // below the resolved range; at tol 1e-11 not answered at the end).
+    let r = root_at_end_tol("-9/10", "1/100", 1e-11);
     let EndReason::NoneAdmissible { rejected } = &r.reason else {
         panic!("{:?}", r.reason);
     };
@@ -353,9 +364,17 @@ fn the_front_names_every_physical_limit_from_the_structured_refusal() {
         assert!(!r.error.is_input_error());
         (r.limit, r.error.to_string())
     };
-    // Small friction (c ≈ 1e-46 at ν = −0.9, μ = 0.01; refused since the
-    // condition's trend does not show the root beyond the end).
-    let (l, text) = limit(-0.9, Given::Mu(0.01));
+    // Small friction (c ≈ 1e-46 at ν = −0.9, μ = 0.01; at the tolerance
+    // 1e-11 refused, since the end answer's c, within 5e-11, is not).
+    let tight = SplitOptions {
+        tol: 1e-11,
+        ..SplitOptions::default()
+    };
+    let r = solve_with_limit(-0.9, Given::Mu(0.01), &tight)
+        .err()
+        .expect("refused");
+    assert!(!r.error.is_input_error());
+    let (l, text) = (r.limit, r.error.to_string());
     assert!(matches!(l, Some(Limit::SmallFriction { .. })), "{l:?}");
     assert!(text.contains("small-friction limit"), "{text}");
     // Thin slip: ν = 0.49, μ = 1 (1 − c below 1e-12).
