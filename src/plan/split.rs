@@ -71,6 +71,13 @@ pub struct SplitProblem {
     pub domain: (f64, f64),
     /// `ops[e][j]`: the operator of equation `e` on unknown `j`.
     ops: Vec<Vec<Option<Operator>>>,
+    /// Ends of the unknowns' interval toward which the mesh is graded
+    /// although no `singular` declaration names them: set by the end
+    /// check of the ladder (`split_ends.rs`) when grading them moved an
+    /// answer beyond its estimate (an undeclared weak end singularity).
+    graded_ends: Vec<f64>,
+    /// The end check's record, once it was made.
+    end_check: Option<super::split_ends::EndCheck>,
     /// Assembled blocks, by everything that defines them (see
     /// [`SplitProblem::block`]).
     cache: std::sync::Mutex<std::collections::HashMap<Vec<u64>, Arc<DMatrix<f64>>>>,
@@ -145,6 +152,49 @@ impl Discrete {
 }
 
 impl SplitProblem {
+    /// The ends of the unknowns' interval toward which the mesh is not
+    /// graded at the scalar values `scalars`: no `singular` declaration
+    /// names them (at those values) and the end check has not graded them
+    /// ([`SplitProblem::graded_ends`]). Interior breakpoints are always
+    /// graded from both sides, so these are the only places where an
+    /// undeclared end singularity of an unknown meets a panel of full
+    /// degree.
+    pub fn ungraded_ends(&self, scalars: &[f64]) -> Vec<f64> {
+        let vars = self.contact.values(scalars);
+        let (a, b) = self.domain;
+        let declared: Vec<f64> = self
+            .contact
+            .singulars
+            .iter()
+            .map(|s| s.at.eval(&vars, 0.0))
+            .collect();
+        [a, b]
+            .into_iter()
+            .filter(|&z| z.is_finite() && !declared.contains(&z) && !self.graded_ends.contains(&z))
+            .collect()
+    }
+
+    /// The ends graded although not declared singular (by the end check).
+    pub fn graded_ends(&self) -> &[f64] {
+        &self.graded_ends
+    }
+
+    /// Grades the mesh toward the ends `ends` of the unknowns' interval
+    /// from now on, as a `singular u at end ~ 1` declaration would (or
+    /// stops grading toward the ends graded so far, with `ends` empty).
+    pub(super) fn set_graded_ends(&mut self, ends: Vec<f64>) {
+        self.graded_ends = ends;
+    }
+
+    /// The end check's record (`split_ends.rs`), once it was made.
+    pub fn end_check(&self) -> Option<&super::split_ends::EndCheck> {
+        self.end_check.as_ref()
+    }
+
+    pub(super) fn set_end_check(&mut self, c: super::split_ends::EndCheck) {
+        self.end_check = Some(c);
+    }
+
     /// The operator of equation `e` on unknown `j` (`None` where the
     /// unknown does not appear).
     pub fn operator(&self, e: usize, j: usize) -> Option<&Operator> {
@@ -245,6 +295,8 @@ impl SplitProblem {
             contact,
             domain,
             ops,
+            graded_ends: Vec::new(),
+            end_check: None,
             cache: Default::default(),
         })
     }
@@ -291,6 +343,13 @@ impl SplitProblem {
             gradings.push(Grading {
                 at: z,
                 side,
+                layers: lvl.layers,
+            });
+        }
+        for &z in &self.graded_ends {
+            gradings.push(Grading {
+                at: z,
+                side: if z == a { Side::Right } else { Side::Left },
                 layers: lvl.layers,
             });
         }

@@ -86,6 +86,11 @@ pub struct SplitReport {
     /// value above is the answer there with that bound included
     /// (`split_end.rs`).
     pub end_answer: Option<super::split_end::EndAnswer>,
+    /// The end check (`split_ends.rs`): whether grading the ends of the
+    /// unknowns' interval that no `singular` declaration names moved an
+    /// answer beyond its estimate (then the mesh was graded there), when
+    /// the check was made.
+    pub end_check: Option<super::split_ends::EndCheck>,
 }
 
 pub(super) struct Level {
@@ -155,7 +160,7 @@ pub fn solve_split_input_fields(
     opts: &SplitOptions,
 ) -> Result<SplitSolution, PlanError> {
     check_tolerance(opts)?;
-    let problem = SplitProblem::from_input(input)?;
+    let mut problem = SplitProblem::from_input(input)?;
     let ns = problem.contact.scalars.len();
     if ns > 1 {
         return Err(PlanError::Invalid(format!(
@@ -196,8 +201,24 @@ pub fn solve_split_input_fields(
         } else {
             0.0
         };
-        let est = (!levels.is_empty()).then(|| estimate(&levels, &this) + rt);
-        let converged = est.is_some_and(|e| e <= opts.tol);
+        let mut est = (!levels.is_empty()).then(|| estimate(&levels, &this) + rt);
+        let mut converged = est.is_some_and(|e| e <= opts.tol);
+        if converged {
+            // Would grading the undeclared ends move the answer?
+            use super::split_ends::{Verdict, check};
+            match check(&mut problem, &lvl, k, &levels, &this, opts, false)? {
+                Verdict::Accept => {}
+                Verdict::Climb { level, discrete } => {
+                    levels = vec![*level];
+                    previous = Some(*discrete);
+                    continue;
+                }
+                Verdict::Refuse { worst } => {
+                    converged = false;
+                    est = est.map(|e| e.max(worst));
+                }
+            }
+        }
         if converged || k == opts.max_level {
             let est = est.unwrap_or(f64::INFINITY);
             let report = report(
@@ -313,7 +334,7 @@ pub(super) fn report(
         level_estimate(&history(climbed, this, f, i)) + extra
     };
     let c = &problem.contact;
-    SplitReport {
+    let mut rep = SplitReport {
         scalars: c
             .scalars
             .iter()
@@ -357,7 +378,18 @@ pub(super) fn report(
             .map(|t| (problem.sys.unknowns[t.unknown].clone(), t.at, t.beta))
             .collect(),
         end_answer: None,
+        end_check: problem.end_check().cloned(),
+    };
+    // An answer on the level where grading the ends moved it (the last
+    // level allowed): each estimate is at least its change.
+    if let Some(c) = problem.end_check().filter(|c| c.graded && c.level + 1 == levels) {
+        for e in rep.scalars.iter_mut().chain(rep.outputs.iter_mut()) {
+            if let Some(ch) = c.changes.iter().find(|ch| ch.name == e.name) {
+                e.error = e.error.max(ch.change);
+            }
+        }
     }
+    rep
 }
 
 /// The map between a scalar `x` in its declared range `(lo, hi)` and the
@@ -368,13 +400,13 @@ pub(super) fn report(
 /// resolve to a *relative* accuracy in its distance to the end as one in
 /// the middle.
 #[derive(Debug, Clone, Copy)]
-struct ScalarMap {
-    lo: f64,
-    hi: f64,
+pub(super) struct ScalarMap {
+    pub(super) lo: f64,
+    pub(super) hi: f64,
 }
 
 impl ScalarMap {
-    fn x(&self, s: f64) -> f64 {
+    pub(super) fn x(&self, s: f64) -> f64 {
         let (lo, hi) = (self.lo, self.hi);
         match (lo.is_finite(), hi.is_finite()) {
             (true, true) => {
@@ -391,7 +423,7 @@ impl ScalarMap {
         }
     }
 
-    fn s(&self, x: f64) -> f64 {
+    pub(super) fn s(&self, x: f64) -> f64 {
         let (lo, hi) = (self.lo, self.hi);
         match (lo.is_finite(), hi.is_finite()) {
             (true, true) => ((x - lo) / (hi - x)).ln(),
@@ -513,7 +545,7 @@ fn predicted_slope(levels: &[Level]) -> f64 {
 /// respect to the map's variable `s`) and the discrete solution at it.
 /// `levels` are the levels solved so far (the root is warm-started from
 /// the last one).
-fn find_scalar(
+pub(super) fn find_scalar(
     problem: &SplitProblem,
     lvl: &SplitLevel,
     levels: &[Level],
