@@ -121,10 +121,15 @@ pub fn end_grading_line(c: &crate::plan::split_ends::EndCheck) -> String {
         .join(" and ");
     let why = match c.worst() {
         Some(w) => format!(
-            ": on level {} grading it moved {} by {:.1e}, beyond its estimate {:.1e} (an undeclared singular behaviour there; declaring it with `singular … at {}` says so in the file)",
+            ": on level {} grading it moved {} by {:.1e}, {} its estimate {:.1e} (an undeclared singular behaviour there; declaring it with `singular … at {}` says so in the file)",
             c.level,
             w.name,
             w.change,
+            if c.share < 1.0 {
+                format!("more than {} of", c.share)
+            } else {
+                "beyond".to_string()
+            },
             w.estimate,
             c.ends.first().copied().unwrap_or(f64::NAN)
         ),

@@ -78,6 +78,9 @@ pub struct SplitProblem {
     graded_ends: Vec<f64>,
     /// The end check's record, once it was made.
     end_check: Option<super::split_ends::EndCheck>,
+    /// While the end check probes: the ends it grades and the most layers
+    /// it gives them.
+    probe: Option<(Vec<f64>, usize)>,
     /// Assembled blocks, by everything that defines them (see
     /// [`SplitProblem::block`]).
     cache: std::sync::Mutex<std::collections::HashMap<Vec<u64>, Arc<DMatrix<f64>>>>,
@@ -170,7 +173,9 @@ impl SplitProblem {
             .collect();
         [a, b]
             .into_iter()
-            .filter(|&z| z.is_finite() && !declared.contains(&z) && !self.graded_ends.contains(&z))
+            .filter(|&z| {
+                z.is_finite() && !declared.contains(&z) && !self.graded_ends.contains(&z)
+            })
             .collect()
     }
 
@@ -189,6 +194,12 @@ impl SplitProblem {
     /// The end check's record (`split_ends.rs`), once it was made.
     pub fn end_check(&self) -> Option<&super::split_ends::EndCheck> {
         self.end_check.as_ref()
+    }
+
+    /// While the end check probes: grade the mesh also toward `ends`, with
+    /// at most `most` layers (`None`: stop).
+    pub(super) fn set_probe(&mut self, probe: Option<(Vec<f64>, usize)>) {
+        self.probe = probe;
     }
 
     pub(super) fn set_end_check(&mut self, c: super::split_ends::EndCheck) {
@@ -297,6 +308,7 @@ impl SplitProblem {
             ops,
             graded_ends: Vec::new(),
             end_check: None,
+            probe: None,
             cache: Default::default(),
         })
     }
@@ -346,11 +358,12 @@ impl SplitProblem {
                 layers: lvl.layers,
             });
         }
-        for &z in &self.graded_ends {
+        let probed = self.probe.iter().flat_map(|(e, most)| e.iter().map(|&z| (z, *most)));
+        for (z, most) in self.graded_ends.iter().map(|&z| (z, usize::MAX)).chain(probed) {
             gradings.push(Grading {
                 at: z,
                 side: if z == a { Side::Right } else { Side::Left },
-                layers: lvl.layers,
+                layers: lvl.layers.min(most),
             });
         }
         pts.sort_by(f64::total_cmp);

@@ -333,8 +333,8 @@ pub fn answer_at_end(
         let mut done = !levels.is_empty() && est + worst0 <= opts.tol;
         if done {
             // Would grading the undeclared ends move the outputs?
-            use super::split_ends::{Verdict, check};
-            match check(&mut problem, &lvl, k, &levels, &this, opts, true)? {
+            use super::split_ends::{Mode, Verdict, check};
+            match check(&mut problem, &lvl, k, &levels, &this, opts, Mode::Accept, true)? {
                 Verdict::Accept => {}
                 Verdict::Climb { level, discrete } => {
                     levels = vec![*level];

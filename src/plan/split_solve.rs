@@ -203,10 +203,17 @@ pub fn solve_split_input_fields(
         };
         let mut est = (!levels.is_empty()).then(|| estimate(&levels, &this) + rt);
         let mut converged = est.is_some_and(|e| e <= opts.tol);
-        if converged {
-            // Would grading the undeclared ends move the answer?
-            use super::split_ends::{Verdict, check};
-            match check(&mut problem, &lvl, k, &levels, &this, opts, false)? {
+        // Would grading the undeclared ends move the answer?
+        use super::split_ends::{APPROACH_LEVEL, Mode, Verdict, check};
+        let mode = if converged {
+            Some(Mode::Accept)
+        } else if (APPROACH_LEVEL..opts.max_level).contains(&k) {
+            Some(Mode::Approach)
+        } else {
+            None
+        };
+        if let Some(mode) = mode {
+            match check(&mut problem, &lvl, k, &levels, &this, opts, mode, false)? {
                 Verdict::Accept => {}
                 Verdict::Climb { level, discrete } => {
                     levels = vec![*level];
