@@ -215,9 +215,6 @@ pub(super) fn check(
         compare(name, this.outputs[i], outputs[i], level_estimate(&h));
     }
     let worst = changes.iter().fold(0.0f64, |m, c| m.max(c.change));
-    if std::env::var_os("WEAK_DEBUG").is_some() {
-        eprintln!("ENDCHECK k={k} mode={mode:?} exceeded={exceeded} {:?}", changes.iter().map(|c| c.change / c.estimate).collect::<Vec<_>>());
-    }
     problem.set_end_check(EndCheck {
         ends: ends.clone(),
         level: k,
@@ -356,4 +353,48 @@ fn coefficients_of(problem: &SplitProblem, d: &Discrete) -> Vec<f64> {
     (0..problem.contact.coefficients.len())
         .map(|c| problem.coefficient(d, c).unwrap_or(f64::NAN))
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::converges_cleanly;
+
+    fn from_differences(d: &[f64]) -> Vec<f64> {
+        let mut h = vec![1.0];
+        for (i, x) in d.iter().enumerate() {
+            // Alternating signs, as levels often come.
+            let s = if i % 2 == 0 { 1.0 } else { -1.0 };
+            h.push(h[i] + s * x);
+        }
+        h
+    }
+
+    #[test]
+    fn clean_convergence_is_told_from_an_unresolved_end() {
+        let tol = 1e-10;
+        // The Hertz problem's c at ν = 1/4, μ = 0.1801 (first difference
+        // assumed 15 times the second): clean on four and five levels.
+        let c = [2.5e-7, 1.7e-8, 1.1e-9, 8.7e-11];
+        assert!(converges_cleanly(&from_differences(&c[..3]), tol));
+        assert!(converges_cleanly(&from_differences(&c), tol));
+        // P at ν = 0.3, μ = 2.154: in pairs, falling about tenfold per two.
+        let p = [2.3e-8, 7.1e-10, 1.45e-9, 1.1e-10, 1.06e-10, 1.2e-11, 8.2e-12];
+        assert!(converges_cleanly(&from_differences(&p), tol));
+        // The full-slip problem's P without grading at the centre: never.
+        let slip = [3.6e-8, 2.9e-10, 1.02e-8, 8.1e-10, 3.77e-9, 5.4e-10, 1.64e-9];
+        for n in 2..=slip.len() {
+            assert!(!converges_cleanly(&from_differences(&slip[..n]), tol), "{n}");
+        }
+        // Algebraic convergence n^(-4) in the degree n = 7 + level.
+        let alg: Vec<f64> = (0..8)
+            .map(|k| (7.0 + k as f64).powi(-4) - (8.0 + k as f64).powi(-4))
+            .collect();
+        assert!(!converges_cleanly(&from_differences(&alg), tol));
+        // Two equal levels, and fewer than four levels, are not clean.
+        assert!(!converges_cleanly(&[1.0, 1.0 + 1e-3, 1.0 + 1e-3, 1.0 + 1e-3], tol));
+        assert!(!converges_cleanly(&[1.0, 1.1, 1.1001], tol));
+        // Differences at the outputs' rounding noise pass.
+        let noise = [3.7e-11, 3.7e-13, 2.2e-12, 1.0e-13];
+        assert!(converges_cleanly(&from_differences(&noise), tol));
+    }
 }
