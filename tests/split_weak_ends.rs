@@ -50,13 +50,22 @@ fn an_undeclared_power_at_an_end_is_graded_and_the_estimates_bound_the_errors() 
         let check = &r["end_check"];
         assert_eq!(check["graded"], true, "{a:?}: {check}");
         assert!(
-            check["ends"].as_array().expect("ends").contains(&Value::from(0.0)),
+            check["ends"]
+                .as_array()
+                .expect("ends")
+                .contains(&Value::from(0.0)),
             "{check}"
         );
         for (name, exact) in [("I", i_exact), ("V", v_exact)] {
             let (v, e) = value(&r, name);
-            eprintln!("a = {a:?}: {name} error {:.1e}, estimate {e:.1e}", (v - exact).abs());
-            assert!((v - exact).abs() <= e, "{a:?}: {name} = {v} ± {e:.1e}, exact {exact}");
+            eprintln!(
+                "a = {a:?}: {name} error {:.1e}, estimate {e:.1e}",
+                (v - exact).abs()
+            );
+            assert!(
+                (v - exact).abs() <= e,
+                "{a:?}: {name} = {v} ± {e:.1e}, exact {exact}"
+            );
         }
     }
 }
@@ -108,7 +117,10 @@ fn the_full_slip_problem_without_grading_at_the_centre_agrees_with_the_graded_on
         let r = json(&["solve", &path(&plain), "--tol", tol]);
         let (p, e) = value(&r, "P");
         eprintln!("tol {tol}: P = {p} ± {e:.1e}, graded P = {p_ref} ± {e_ref:.1e}");
-        assert!((p - p_ref).abs() <= e + e_ref, "tol {tol}: {p} ± {e:.1e} vs {p_ref}");
+        assert!(
+            (p - p_ref).abs() <= e + e_ref,
+            "tol {tol}: {p} ± {e:.1e} vs {p_ref}"
+        );
         assert_eq!(r["end_check"]["graded"], true);
         assert_eq!(r["end_check"]["ends"], serde_json::json!([0.0]));
     }

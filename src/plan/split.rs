@@ -173,9 +173,7 @@ impl SplitProblem {
             .collect();
         [a, b]
             .into_iter()
-            .filter(|&z| {
-                z.is_finite() && !declared.contains(&z) && !self.graded_ends.contains(&z)
-            })
+            .filter(|&z| z.is_finite() && !declared.contains(&z) && !self.graded_ends.contains(&z))
             .collect()
     }
 
@@ -358,8 +356,16 @@ impl SplitProblem {
                 layers: lvl.layers,
             });
         }
-        let probed = self.probe.iter().flat_map(|(e, most)| e.iter().map(|&z| (z, *most)));
-        for (z, most) in self.graded_ends.iter().map(|&z| (z, usize::MAX)).chain(probed) {
+        let probed = self
+            .probe
+            .iter()
+            .flat_map(|(e, most)| e.iter().map(|&z| (z, *most)));
+        for (z, most) in self
+            .graded_ends
+            .iter()
+            .map(|&z| (z, usize::MAX))
+            .chain(probed)
+        {
             gradings.push(Grading {
                 at: z,
                 side: if z == a { Side::Right } else { Side::Left },

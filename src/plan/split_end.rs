@@ -334,7 +334,16 @@ pub fn answer_at_end(
         if done {
             // Would grading the undeclared ends move the outputs?
             use super::split_ends::{Mode, Verdict, check};
-            match check(&mut problem, &lvl, k, &levels, &this, opts, Mode::Accept, true)? {
+            match check(
+                &mut problem,
+                &lvl,
+                k,
+                &levels,
+                &this,
+                opts,
+                Mode::Accept,
+                true,
+            )? {
                 Verdict::Accept => {}
                 Verdict::Climb { level, discrete } => {
                     levels = vec![*level];

@@ -375,12 +375,17 @@ mod tests {
         assert!(converges_cleanly(&from_differences(&c[..3]), tol));
         assert!(converges_cleanly(&from_differences(&c), tol));
         // P at ν = 0.3, μ = 2.154: in pairs, falling about tenfold per two.
-        let p = [2.3e-8, 7.1e-10, 1.45e-9, 1.1e-10, 1.06e-10, 1.2e-11, 8.2e-12];
+        let p = [
+            2.3e-8, 7.1e-10, 1.45e-9, 1.1e-10, 1.06e-10, 1.2e-11, 8.2e-12,
+        ];
         assert!(converges_cleanly(&from_differences(&p), tol));
         // The full-slip problem's P without grading at the centre: never.
         let slip = [3.6e-8, 2.9e-10, 1.02e-8, 8.1e-10, 3.77e-9, 5.4e-10, 1.64e-9];
         for n in 2..=slip.len() {
-            assert!(!converges_cleanly(&from_differences(&slip[..n]), tol), "{n}");
+            assert!(
+                !converges_cleanly(&from_differences(&slip[..n]), tol),
+                "{n}"
+            );
         }
         // Algebraic convergence n^(-4) in the degree n = 7 + level.
         let alg: Vec<f64> = (0..8)
@@ -388,7 +393,10 @@ mod tests {
             .collect();
         assert!(!converges_cleanly(&from_differences(&alg), tol));
         // Two equal levels, and fewer than four levels, are not clean.
-        assert!(!converges_cleanly(&[1.0, 1.0 + 1e-3, 1.0 + 1e-3, 1.0 + 1e-3], tol));
+        assert!(!converges_cleanly(
+            &[1.0, 1.0 + 1e-3, 1.0 + 1e-3, 1.0 + 1e-3],
+            tol
+        ));
         assert!(!converges_cleanly(&[1.0, 1.1, 1.1001], tol));
         // Differences at the outputs' rounding noise pass.
         let noise = [3.7e-11, 3.7e-13, 2.2e-12, 1.0e-13];

@@ -389,7 +389,10 @@ pub(super) fn report(
     };
     // An answer on the level where grading the ends moved it (the last
     // level allowed): each estimate is at least its change.
-    if let Some(c) = problem.end_check().filter(|c| c.graded && c.level + 1 == levels) {
+    if let Some(c) = problem
+        .end_check()
+        .filter(|c| c.graded && c.level + 1 == levels)
+    {
         for e in rep.scalars.iter_mut().chain(rep.outputs.iter_mut()) {
             if let Some(ch) = c.changes.iter().find(|ch| ch.name == e.name) {
                 e.error = e.error.max(ch.change);
