@@ -106,7 +106,37 @@ pub fn to_json(r: &SplitReport) -> Value {
         "cond": r.cond,
         "singular_exponents": r.singular_exponents,
         "end_answer": r.end_answer,
+        "end_check": r.end_check,
     })
+}
+
+/// The line saying that the mesh was graded toward ends no `singular`
+/// declaration names, and why.
+pub fn end_grading_line(c: &crate::plan::split_ends::EndCheck) -> String {
+    let ends = c
+        .ends
+        .iter()
+        .map(|z| z.to_string())
+        .collect::<Vec<_>>()
+        .join(" and ");
+    let why = match c.worst() {
+        Some(w) => format!(
+            ": on level {} grading it moved {} by {:.1e}, {} its estimate {:.1e} (an undeclared singular behaviour there; declaring it with `singular … at {}` says so in the file)",
+            c.level,
+            w.name,
+            w.change,
+            if c.share < 1.0 {
+                format!("more than {} of", c.share)
+            } else {
+                "beyond".to_string()
+            },
+            w.estimate,
+            c.ends.first().copied().unwrap_or(f64::NAN)
+        ),
+        None => String::new(),
+    };
+    let s = if c.ends.len() > 1 { "s" } else { "" };
+    format!("mesh graded toward the end{s} {ends} of the interval automatically{why}")
 }
 
 /// The text report.
@@ -131,6 +161,9 @@ pub fn write_text(r: &SplitReport, w: &mut dyn Write) -> Result<(), CliError> {
             "scalar {} is bounded, not resolved: the root of its condition lies within {:.1e} of the end {} (it is given as the middle of that gap); the outputs are those at {} = {:.6e}, each with its variation over the gap in its estimate",
             e.scalar, e.distance, e.end_value, e.scalar, e.at
         )?;
+    }
+    if let Some(c) = r.end_check.as_ref().filter(|c| c.graded) {
+        writeln!(w, "{}", end_grading_line(c))?;
     }
     for (kind, list) in [
         ("scalar", &r.scalars),

@@ -17,6 +17,8 @@
 //! * [`split`]: one discretisation of a split-domain (contact) problem;
 //! * [`split_input`]: its input (built from a program or by generated code);
 //! * [`split_solve`]: its scalar root solve and refinement ladder;
+//! * [`split_ends`]: the ladder's end check (grading undeclared singular
+//!   ends when they matter);
 //! * [`split_fields`]: the unknowns and equation residuals of a solved
 //!   split-domain problem at any point.
 
@@ -29,6 +31,7 @@ pub mod operators;
 pub mod refine;
 pub mod split;
 pub mod split_end;
+pub mod split_ends;
 pub mod split_fields;
 pub mod split_input;
 pub mod split_solve;

@@ -89,6 +89,16 @@ pub struct SplitProblem {
     pub domain: (f64, f64),
     /// `ops[e][j]`: the operator of equation `e` on unknown `j`.
     ops: Vec<Vec<Option<Operator>>>,
+    /// Ends of the unknowns' interval toward which the mesh is graded
+    /// although no `singular` declaration names them: set by the end
+    /// check of the ladder (`split_ends.rs`) when grading them moved an
+    /// answer beyond its estimate (an undeclared weak end singularity).
+    graded_ends: Vec<f64>,
+    /// The end check's record, once it was made.
+    end_check: Option<super::split_ends::EndCheck>,
+    /// While the end check probes: the ends it grades and the most layers
+    /// it gives them.
+    probe: Option<(Vec<f64>, usize)>,
     /// Assembled blocks, by everything that defines them (see
     /// [`SplitProblem::block`]).
     cache: std::sync::Mutex<std::collections::HashMap<Vec<u64>, Arc<DMatrix<f64>>>>,
@@ -163,6 +173,55 @@ impl Discrete {
 }
 
 impl SplitProblem {
+    /// The ends of the unknowns' interval toward which the mesh is not
+    /// graded at the scalar values `scalars`: no `singular` declaration
+    /// names them (at those values) and the end check has not graded them
+    /// ([`SplitProblem::graded_ends`]). Interior breakpoints are always
+    /// graded from both sides, so these are the only places where an
+    /// undeclared end singularity of an unknown meets a panel of full
+    /// degree.
+    pub fn ungraded_ends(&self, scalars: &[f64]) -> Vec<f64> {
+        let vars = self.contact.values(scalars);
+        let (a, b) = self.domain;
+        let declared: Vec<f64> = self
+            .contact
+            .singulars
+            .iter()
+            .map(|s| s.at.eval(&vars, 0.0))
+            .collect();
+        [a, b]
+            .into_iter()
+            .filter(|&z| z.is_finite() && !declared.contains(&z) && !self.graded_ends.contains(&z))
+            .collect()
+    }
+
+    /// The ends graded although not declared singular (by the end check).
+    pub fn graded_ends(&self) -> &[f64] {
+        &self.graded_ends
+    }
+
+    /// Grades the mesh toward the ends `ends` of the unknowns' interval
+    /// from now on, as a `singular u at end ~ 1` declaration would (or
+    /// stops grading toward the ends graded so far, with `ends` empty).
+    pub(super) fn set_graded_ends(&mut self, ends: Vec<f64>) {
+        self.graded_ends = ends;
+    }
+
+    /// The end check's record (`split_ends.rs`), once it was made.
+    pub fn end_check(&self) -> Option<&super::split_ends::EndCheck> {
+        self.end_check.as_ref()
+    }
+
+    /// While the end check probes: grade the mesh also toward `ends`, with
+    /// at most `most` layers (`None`: stop).
+    pub(super) fn set_probe(&mut self, probe: Option<(Vec<f64>, usize)>) {
+        self.probe = probe;
+    }
+
+    pub(super) fn set_end_check(&mut self, c: super::split_ends::EndCheck) {
+        self.end_check = Some(c);
+    }
+
     /// The operator of equation `e` on unknown `j` (`None` where the
     /// unknown does not appear).
     pub fn operator(&self, e: usize, j: usize) -> Option<&Operator> {
@@ -263,6 +322,9 @@ impl SplitProblem {
             contact,
             domain,
             ops,
+            graded_ends: Vec::new(),
+            end_check: None,
+            probe: None,
             cache: Default::default(),
         })
     }
@@ -310,6 +372,22 @@ impl SplitProblem {
                 at: z,
                 side,
                 layers: lvl.layers,
+            });
+        }
+        let probed = self
+            .probe
+            .iter()
+            .flat_map(|(e, most)| e.iter().map(|&z| (z, *most)));
+        for (z, most) in self
+            .graded_ends
+            .iter()
+            .map(|&z| (z, usize::MAX))
+            .chain(probed)
+        {
+            gradings.push(Grading {
+                at: z,
+                side: if z == a { Side::Right } else { Side::Left },
+                layers: lvl.layers.min(most),
             });
         }
         pts.sort_by(f64::total_cmp);

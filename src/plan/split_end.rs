@@ -250,7 +250,7 @@ fn variations(
 /// The end answer for the refusal `r` of the first level's root search,
 /// or `r` itself (its message saying why there is no end answer).
 pub fn answer_at_end(
-    problem: SplitProblem,
+    mut problem: SplitProblem,
     r: Box<RootAtEnd>,
     opts: &SplitOptions,
 ) -> Result<SplitSolution, PlanError> {
@@ -330,7 +330,29 @@ pub fn answer_at_end(
         let est = (0..n_out)
             .map(|i| estimate_of(&levels, &this, &|l| &l.outputs, i))
             .fold(0.0f64, f64::max);
-        let done = !levels.is_empty() && est + worst0 <= opts.tol;
+        let mut done = !levels.is_empty() && est + worst0 <= opts.tol;
+        if done {
+            // Would grading the undeclared ends move the outputs?
+            use super::split_ends::{Mode, Verdict, check};
+            match check(
+                &mut problem,
+                &lvl,
+                k,
+                &levels,
+                &this,
+                opts,
+                Mode::Accept,
+                true,
+            )? {
+                Verdict::Accept => {}
+                Verdict::Climb { level, discrete } => {
+                    levels = vec![*level];
+                    previous = Some(*discrete);
+                    continue;
+                }
+                Verdict::Refuse { .. } => done = false,
+            }
+        }
         if done || k == opts.max_level {
             let vars = variations(&problem, (&this.outputs, &this.coefficients), pts, &lvl)?;
             let mut rep = report(

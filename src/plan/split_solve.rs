@@ -87,6 +87,11 @@ pub struct SplitReport {
     /// value above is the answer there with that bound included
     /// (`split_end.rs`).
     pub end_answer: Option<super::split_end::EndAnswer>,
+    /// The end check (`split_ends.rs`): whether grading the ends of the
+    /// unknowns' interval that no `singular` declaration names moved an
+    /// answer beyond its estimate (then the mesh was graded there), when
+    /// the check was made.
+    pub end_check: Option<super::split_ends::EndCheck>,
 }
 
 pub(super) struct Level {
@@ -158,7 +163,7 @@ pub fn solve_split_input_fields(
     opts: &SplitOptions,
 ) -> Result<SplitSolution, PlanError> {
     check_tolerance(opts)?;
-    let problem = SplitProblem::from_input(input)?;
+    let mut problem = SplitProblem::from_input(input)?;
     let ns = problem.contact.scalars.len();
     if ns > 1 {
         return Err(PlanError::Invalid(format!(
@@ -200,8 +205,31 @@ pub fn solve_split_input_fields(
         } else {
             0.0
         };
-        let est = (!levels.is_empty()).then(|| estimate(&levels, &this) + rt);
-        let converged = est.is_some_and(|e| e <= opts.tol);
+        let mut est = (!levels.is_empty()).then(|| estimate(&levels, &this) + rt);
+        let mut converged = est.is_some_and(|e| e <= opts.tol);
+        // Would grading the undeclared ends move the answer?
+        use super::split_ends::{APPROACH_LEVEL, Mode, Verdict, check};
+        let mode = if converged {
+            Some(Mode::Accept)
+        } else if (APPROACH_LEVEL..opts.max_level).contains(&k) {
+            Some(Mode::Approach)
+        } else {
+            None
+        };
+        if let Some(mode) = mode {
+            match check(&mut problem, &lvl, k, &levels, &this, opts, mode, false)? {
+                Verdict::Accept => {}
+                Verdict::Climb { level, discrete } => {
+                    levels = vec![*level];
+                    previous = Some(*discrete);
+                    continue;
+                }
+                Verdict::Refuse { worst } => {
+                    converged = false;
+                    est = est.map(|e| e.max(worst));
+                }
+            }
+        }
         if converged || k == opts.max_level {
             let est = est.unwrap_or(f64::INFINITY);
             let report = report(
@@ -363,7 +391,7 @@ pub(super) fn report(
         estimate_of(climbed, this, f, i) + extra
     };
     let c = &problem.contact;
-    SplitReport {
+    let mut rep = SplitReport {
         scalars: c
             .scalars
             .iter()
@@ -407,7 +435,21 @@ pub(super) fn report(
             .map(|t| (problem.sys.unknowns[t.unknown].clone(), t.at, t.beta))
             .collect(),
         end_answer: None,
+        end_check: problem.end_check().cloned(),
+    };
+    // An answer on the level where grading the ends moved it (the last
+    // level allowed): each estimate is at least its change.
+    if let Some(c) = problem
+        .end_check()
+        .filter(|c| c.graded && c.level + 1 == levels)
+    {
+        for e in rep.scalars.iter_mut().chain(rep.outputs.iter_mut()) {
+            if let Some(ch) = c.changes.iter().find(|ch| ch.name == e.name) {
+                e.error = e.error.max(ch.change);
+            }
+        }
     }
+    rep
 }
 
 /// The map between a scalar `x` in its declared range `(lo, hi)` and the
@@ -418,13 +460,13 @@ pub(super) fn report(
 /// resolve to a *relative* accuracy in its distance to the end as one in
 /// the middle.
 #[derive(Debug, Clone, Copy)]
-struct ScalarMap {
-    lo: f64,
-    hi: f64,
+pub(super) struct ScalarMap {
+    pub(super) lo: f64,
+    pub(super) hi: f64,
 }
 
 impl ScalarMap {
-    fn x(&self, s: f64) -> f64 {
+    pub(super) fn x(&self, s: f64) -> f64 {
         let (lo, hi) = (self.lo, self.hi);
         match (lo.is_finite(), hi.is_finite()) {
             (true, true) => {
@@ -441,7 +483,7 @@ impl ScalarMap {
         }
     }
 
-    fn s(&self, x: f64) -> f64 {
+    pub(super) fn s(&self, x: f64) -> f64 {
         let (lo, hi) = (self.lo, self.hi);
         match (lo.is_finite(), hi.is_finite()) {
             (true, true) => ((x - lo) / (hi - x)).ln(),
@@ -563,7 +605,7 @@ fn predicted_slope(levels: &[Level]) -> f64 {
 /// respect to the map's variable `s`) and the discrete solution at it.
 /// `levels` are the levels solved so far (the root is warm-started from
 /// the last one).
-fn find_scalar(
+pub(super) fn find_scalar(
     problem: &SplitProblem,
     lvl: &SplitLevel,
     levels: &[Level],
