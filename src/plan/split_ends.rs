@@ -240,6 +240,7 @@ pub(super) fn check(
         )
     } else {
         let warm = [Level {
+            dim: this.dim,
             scalars: this.scalars.clone(),
             slope: this.slope,
             outputs: this.outputs.clone(),
@@ -249,6 +250,7 @@ pub(super) fn check(
         (vec![x], slope, d)
     };
     let level = Level {
+        dim: SplitProblem::size(&d),
         scalars,
         slope,
         outputs: outputs_of(problem, &d)?,
