@@ -75,6 +75,19 @@ impl SplitLevel {
     }
 }
 
+impl SplitLevel {
+    /// Layers toward an end the end check graded automatically
+    /// (`split_ends.rs`): the ladder's layers without the cap, three more
+    /// on every level. There the unknown behaves like an undeclared power
+    /// `x^α` the basis does not carry, so past the cap only a smaller
+    /// innermost panel reduces the error (its share `~h^(1+α)` is 4e-9 at
+    /// `h = 0.25^20`, α = −0.3); more nodes on a capped panel converge
+    /// algebraically, too slowly for the level estimate to bound.
+    pub fn end_layers(&self) -> usize {
+        self.layers + 3 * (self.n_min - 3)
+    }
+}
+
 /// Most grading layers per side of a graded point: the smallest panel
 /// stays above `0.25^20 ≈ 1e-12` of its neighbourhood.
 pub const MAX_LAYERS: usize = 20;
@@ -387,7 +400,7 @@ impl SplitProblem {
             gradings.push(Grading {
                 at: z,
                 side: if z == a { Side::Right } else { Side::Left },
-                layers: lvl.layers.min(most),
+                layers: lvl.end_layers().min(most),
             });
         }
         pts.sort_by(f64::total_cmp);
