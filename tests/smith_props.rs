@@ -199,31 +199,7 @@ fn gcd_domain_normal_forms_are_idempotent() {
 
 // ── principal mode: the fraction-free route against the field elimination ──
 
-fn over_k(
-    a: &Matrix<PolyRing>,
-    p: usize,
-) -> Matrix<lambdamat::algebra::upoly::UPolyRing<lambdamat::algebra::ratfunc::RatFuncField>> {
-    use lambdamat::algebra::ratfunc::{RatFunc, RatFuncField};
-    use lambdamat::algebra::upoly::UPolyRing;
-    let names = a.ring.names.clone();
-    let shown = names
-        .iter()
-        .enumerate()
-        .filter(|(i, _)| *i != p)
-        .map(|(_, n)| n.clone())
-        .collect();
-    let ring = UPolyRing::new(
-        RatFuncField {
-            names: names.clone(),
-            shown,
-        },
-        names[p].clone(),
-    );
-    let r2 = ring.clone();
-    a.map(ring, |e| {
-        r2.trim(e.coeffs_in(p).into_iter().map(RatFunc::from_poly).collect())
-    })
-}
+use lambdamat::algebra::smith::modes::to_principal as over_k;
 
 /// Random matrices up to 4×4 (4×4 only in two symbols) with entries of
 /// degree ≤ 1 in each symbol: the fraction-free route over Q[others][λ]

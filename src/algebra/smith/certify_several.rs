@@ -741,26 +741,7 @@ mod tests {
         assert!(!certify_last_factor_several(&a, &x, &b, &[0]).verified());
     }
 
-    fn principal(a: &Matrix<PolyRing>, p: usize) -> Matrix<UPolyRing<RatFuncField>> {
-        let names = a.ring.names.clone();
-        let shown = names
-            .iter()
-            .enumerate()
-            .filter(|(i, _)| *i != p)
-            .map(|(_, n)| n.clone())
-            .collect();
-        let ring = UPolyRing::new(
-            RatFuncField {
-                names: names.clone(),
-                shown,
-            },
-            names[p].clone(),
-        );
-        let r2 = ring.clone();
-        a.map(ring, |e| {
-            r2.trim(e.coeffs_in(p).into_iter().map(RatFunc::from_poly).collect())
-        })
-    }
+    use crate::algebra::smith::modes::to_principal as principal;
 
     #[test]
     fn principal_degrees_certify_the_fraction_free_route_and_catch_a_non_unit() {

@@ -682,8 +682,9 @@ fn coefficient_field(a: &PolyRing, p: usize) -> RatFuncField {
     }
 }
 
-/// Q[all] → Q(others)[λ].
-fn to_principal(a: &Matrix<PolyRing>, p: usize) -> Matrix<UPolyRing<RatFuncField>> {
+/// Q[all] → Q(others)[λ]: the matrix principal mode works on, with `p`
+/// the index of λ among the ring's symbols.
+pub fn to_principal(a: &Matrix<PolyRing>, p: usize) -> Matrix<UPolyRing<RatFuncField>> {
     let k = coefficient_field(&a.ring, p);
     let ring = UPolyRing::new(k, a.ring.names[p].clone());
     let r2 = ring.clone();
