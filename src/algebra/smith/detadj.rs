@@ -21,6 +21,15 @@ use num_traits::{Signed, Zero};
 /// An integer polynomial (coefficients, low degree first).
 pub type IntPoly = Vec<BigInt>;
 
+/// The degree of a row of integer polynomials (its largest entry's
+/// degree; 0 for a row of zeros). The sum over the rows bounds deg det.
+pub fn row_degree(row: &[IntPoly]) -> usize {
+    row.iter()
+        .map(|p| p.len().saturating_sub(1))
+        .max()
+        .unwrap_or(0)
+}
+
 /// Upper bound, in bits, of every coefficient of det A and of every
 /// (n−1)-minor; `None` when a row is zero (A is singular).
 pub fn coefficient_bound_bits(m: &[Vec<IntPoly>]) -> Option<u64> {

@@ -217,11 +217,7 @@ pub fn try_fast(a: &Matrix<QxRing>, limit_bits: u64) -> Option<FastPath> {
             .iter()
             .map(|p| p.num().iter().map(|c| c * (&l / p.den())).collect())
             .collect();
-        bound += row
-            .iter()
-            .map(|p| p.len().saturating_sub(1))
-            .max()
-            .unwrap_or(0);
+        bound += super::detadj::row_degree(&row);
         delta.push(l);
         at.push(row);
     }

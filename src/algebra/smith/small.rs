@@ -24,7 +24,7 @@
 //! touch the other routes.
 
 use super::certify::{Certificate, Check, mul_cleared};
-use super::detadj::IntPoly;
+use super::detadj::{IntPoly, row_degree};
 use crate::algebra::matrix::Matrix;
 use crate::algebra::modular::{self, Fp, UP};
 use crate::algebra::qx::{QPoly, QxRing};
@@ -91,15 +91,7 @@ fn reduce_int(f: Fp, c: &BigInt) -> u64 {
 /// the sum of the row degrees).
 fn leading_nonsingular(f: Fp, at: &[Vec<Vec<BigInt>>]) -> Option<usize> {
     let n = at.len();
-    let degs: Vec<usize> = at
-        .iter()
-        .map(|row| {
-            row.iter()
-                .map(|p| p.len().saturating_sub(1))
-                .max()
-                .unwrap_or(0)
-        })
-        .collect();
+    let degs: Vec<usize> = at.iter().map(|row| row_degree(row)).collect();
     let mut m = vec![0u64; n * n];
     for (i, row) in at.iter().enumerate() {
         for (j, p) in row.iter().enumerate() {
@@ -774,15 +766,7 @@ mod tests {
     /// The old exact route: Q[x] Hermite structure, then integral rows.
     fn exact_route(a: &Matrix<QxRing>) -> SmithDecomposition<QxRing> {
         let (at, delta) = integral(a);
-        let bound = at
-            .iter()
-            .map(|row| {
-                row.iter()
-                    .map(|p| p.len().saturating_sub(1))
-                    .max()
-                    .unwrap_or(0)
-            })
-            .sum();
+        let bound = at.iter().map(|row| row_degree(row)).sum();
         let (det, adj) = super::super::detadj::det_adj(&at, bound).expect("nonsingular");
         let Some(Hermite::Decomposition(mut d)) = exact_hermite(a, &det, &adj, &delta) else {
             panic!("the exact route applies");
