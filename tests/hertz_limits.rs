@@ -331,13 +331,15 @@ fn the_ends_are_structured_refusals_naming_the_scalar_the_end_and_the_trend() {
     assert!(1.0 - r.reached <= 2.0 * r.resolved, "{}", r.reached);
     assert!(r.trend.len() >= 7 && r.trend.windows(2).all(|w| w[0].0 < w[1].0));
     assert!(r.trend.iter().all(|t| t.1 < 0.0));
-    // ν = 0.49, μ = 1: thin slip (1 − c∞ ≈ 1e-90 heuristically),
-    // |condition| falls toward c = 1; P* varies too steeply there for an
-    // answer at the end.
-    let r = root_at_end("49/100", "1");
+    // ν = 0.49, μ = 1: thin slip (1 − c∞ = 4e-109, derived), |condition|
+    // falls toward c = 1. At tol 1e-10 it is answered at the end
+    // (tests/hertz_edges.rs); at 1e-13 half the resolved distance
+    // (4.7e-13) is above the tolerance.
+    let r = root_at_end_tol("49/100", "1", 1e-13);
     assert_eq!((r.end, r.end_value), (RangeEnd::Upper, 1.0));
     assert!(r.shrinks_toward(RangeEnd::Upper, 3));
     assert!(r.message.contains("no answer at the end either"));
+    assert!(r.message.contains("half of it is above the tolerance"));
     // ν = −0.9, μ = 0.01: the only sign change is a root near c = 1 that
     // violates the Coulomb bound (the physical root, c ≈ 1e-46, lies
     // below the resolved range; at tol 1e-11 not answered at the end).
@@ -377,8 +379,18 @@ fn the_front_names_every_physical_limit_from_the_structured_refusal() {
     let (l, text) = (r.limit, r.error.to_string());
     assert!(matches!(l, Some(Limit::SmallFriction { .. })), "{l:?}");
     assert!(text.contains("small-friction limit"), "{text}");
-    // Thin slip: ν = 0.49, μ = 1 (1 − c below 1e-12).
-    let (l, text) = limit(0.49, Given::Mu(1.0));
+    // Thin slip: ν = 0.49, μ = 1 (1 − c below 1e-12) at tol 1e-13, below
+    // half the resolved distance 9.3e-13 (at 1e-10 it is answered at the
+    // end, tests/hertz_edges.rs).
+    let tighter = SplitOptions {
+        tol: 1e-13,
+        ..SplitOptions::default()
+    };
+    let r = solve_with_limit(0.49, Given::Mu(1.0), &tighter)
+        .err()
+        .expect("refused");
+    assert!(!r.error.is_input_error());
+    let (l, text) = (r.limit, r.error.to_string());
     assert!(matches!(l, Some(Limit::ThinSlip { .. })), "{l:?}");
     assert!(text.contains("1 − c is below 1e-12"), "{text}");
     // A given c beyond c∞(ν): at ν = 0 the condition in μ levels off toward

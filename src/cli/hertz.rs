@@ -204,11 +204,12 @@ fn limit_info(l: &Limit) -> String {
             "small-friction limit (information, not refined): c = C₀·exp(−a/μ)·(1 + O(μ)), a = {exponent:.4} (derived) gives c ≈ {lo:.2e}–{hi:.2e} (the range is the measured O(μ) term); P* = 1 + γμ(1−2/π) + γ²Jμ² + O(μ³) = {compliance_asymptotic:.8} + O(μ³) (derived)"
         ),
         Limit::ThinSlip {
-            one_minus_c_infinity,
             compliance_infinity,
             compliance_full_stick,
+            ..
         } => format!(
-            "near-full stick (information, not refined): as μ → ∞ a slip annulus 1 − c∞ = δ₀(1 − δ₀/2 + O(δ₀²)) = {one_minus_c_infinity:.3e} remains, δ₀ = 8·exp(−π/(2ε₀)) (derived), and P* → P*ₛ(1 − δ₀/2) = {compliance_infinity:.10} < artanh(γ)/γ = {compliance_full_stick:.10} (full stick)"
+            "near-full stick (information, not refined): as μ → ∞ a slip annulus 1 − c∞ = δ₀(1 − δ₀/2 + O(δ₀²)) = {} remains, δ₀ = 8·exp(−π/(2ε₀)) (derived), and P* → P*ₛ(1 − δ₀/2) = {compliance_infinity:.16} ≤ artanh(γ)/γ = {compliance_full_stick:.16} (full stick)",
+            l.one_minus_c_infinity_text()
         ),
         Limit::BeyondLargeFriction { .. } => String::new(),
     }
@@ -239,14 +240,23 @@ fn text(s: &HertzResult, given_c: bool) -> String {
             } else {
                 ("c", format!("μ = {}", s.mu), s.c)
             };
-            let rel = match e.end {
-                RangeEnd::Lower => "<",
-                RangeEnd::Upper => ">",
+            // Near the upper end (c → 1 near full stick) the gap is
+            // stated as the distance from the end, which is what is known.
+            let (rel, reported) = match e.end {
+                RangeEnd::Lower => ("<", format!("{value:.4e}")),
+                RangeEnd::Upper => (
+                    ">",
+                    format!(
+                        "{value:.16}, i.e. {} − {:.2e}",
+                        e.end_value,
+                        e.end_value - value
+                    ),
+                ),
             };
             let _ = writeln!(
                 o,
-                "  given {given}  →  {name} {rel} {:.4e}, bounded, not resolved: the root of the free-boundary condition lies within {:.1e} of the end {} (reported as {value:.4e}{})",
-                e.at,
+                "  given {given}  →  {name} {rel} {}, bounded, not resolved: the root of the free-boundary condition lies within {:.1e} of the end {} (reported as {reported}{})",
+                end_point(e),
                 e.distance,
                 e.end_value,
                 pm(e.scalar.as_str())
@@ -307,9 +317,9 @@ fn text(s: &HertzResult, given_c: bool) -> String {
     if let Some(e) = &s.end_answer {
         let _ = writeln!(
             o,
-            "          at c: not checked (c is bounded, not resolved); the outputs are those at {} = {:.4e}, each with its variation over the gap to the end in its estimate ({})",
+            "          at c: not checked (c is bounded, not resolved); the outputs are those at {} = {}, each with its variation over the gap to the end in its estimate ({})",
             e.scalar,
-            e.at,
+            end_point(e),
             e.variations
                 .iter()
                 .filter(|v| v.name == "P" || v.name == "P_shear")
@@ -719,6 +729,16 @@ struct SweepRow {
     limit: Option<Limit>,
     /// At an end answer: `c < δ` or `c > 1 − δ` (bounded, not resolved).
     end_answer: Option<String>,
+}
+
+/// The resolved point of an end answer: `1.0262e-10` near the lower end,
+/// `1 − 9.334e-13` near the upper one (where `{:.4e}` of the point itself
+/// would print `1.0000e0`).
+fn end_point(e: &crate::plan::split_end::EndAnswer) -> String {
+    match e.end {
+        RangeEnd::Lower => format!("{:.4e}", e.at),
+        RangeEnd::Upper => format!("{} − {:.4e}", e.end_value, e.distance),
+    }
 }
 
 /// `c < 1.03e-10, bounded` (or `c > 1 − …`) for an end answer.

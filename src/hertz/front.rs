@@ -373,8 +373,12 @@ pub enum Limit {
     /// `ln((1 − c)/(1 − c∞)) = (1/(2μ) + O(μ⁻²))/ε₀`; `P* → P*ₛ(1 − δ₀/2)`
     /// below the full-stick `P*ₛ = artanh(γ)/γ` (docs/hertz_asymptotics.md).
     ThinSlip {
-        /// `δ₀(1 − δ₀/2)`, see [`large_friction_asymptotics`].
+        /// `δ₀(1 − δ₀/2)`, see [`large_friction_asymptotics`] (0 when it
+        /// underflows, as for ν ≥ 0.4998; see the next field).
         one_minus_c_infinity: f64,
+        /// `log₁₀` of `1 − c∞`, finite where the value itself underflows
+        /// (`−1073.6` at ν = 0.499).
+        log10_one_minus_c_infinity: f64,
         /// `P*ₛ(1 − δ₀/2)`, the compliance as μ → ∞.
         compliance_infinity: f64,
         /// The full-stick compliance `artanh(γ)/γ`, an upper bound of P*.
@@ -422,12 +426,39 @@ impl Limit {
 
     /// The near-full-stick limit at `γ` with its derived values as μ → ∞.
     fn thin_slip(gamma: f64) -> Limit {
-        let (one_minus_c_infinity, _) = large_friction_asymptotics(gamma);
+        let (one_minus_c_infinity, eps0) = large_friction_asymptotics(gamma);
         let full_stick = gamma.atanh() / gamma;
+        // ln δ₀ = ln 8 − π/(2ε₀); the factor (1 − δ₀/2) is 1 wherever δ₀
+        // underflows.
+        let log10_one_minus_c_infinity = if one_minus_c_infinity > 0.0 {
+            one_minus_c_infinity.log10()
+        } else {
+            (8.0f64.ln() - PI / (2.0 * eps0)) / std::f64::consts::LN_10
+        };
         Limit::ThinSlip {
             one_minus_c_infinity,
+            log10_one_minus_c_infinity,
             compliance_infinity: full_stick * (1.0 - one_minus_c_infinity / 2.0),
             compliance_full_stick: full_stick,
+        }
+    }
+
+    /// `1 − c∞` of [`Limit::ThinSlip`] as text: `4.081e-7`, or `1e-1073.6`
+    /// where it is below the smallest double (empty for the other limits).
+    pub fn one_minus_c_infinity_text(&self) -> String {
+        match *self {
+            Limit::ThinSlip {
+                one_minus_c_infinity,
+                log10_one_minus_c_infinity,
+                ..
+            } => {
+                if one_minus_c_infinity >= f64::MIN_POSITIVE {
+                    format!("{one_minus_c_infinity:.3e}")
+                } else {
+                    format!("1e{log10_one_minus_c_infinity:.1}")
+                }
+            }
+            _ => String::new(),
         }
     }
 
@@ -536,10 +567,11 @@ impl Limit {
                 )
             }
             Limit::ThinSlip {
-                one_minus_c_infinity,
                 compliance_infinity,
                 compliance_full_stick,
+                ..
             } => {
+                let width = self.one_minus_c_infinity_text();
                 let eps0 = gamma.atanh() / PI;
                 let rate = match given {
                     Given::Mu(m) => format!(
@@ -552,9 +584,9 @@ impl Limit {
                 format!(
                     "1 − c is below {RESOLVED:.0e}, which the solver does not resolve: near-full stick \
                      (ν = {nu}, γ = {gamma:.4}, ε₀ = artanh(γ)/π = {eps0:.5}); as μ → ∞ a slip annulus of width \
-                     1 − c∞(ν) = δ₀(1 − δ₀/2 + O(δ₀²)) = {one_minus_c_infinity:.3e} remains, δ₀ = 8·exp(−π/(2ε₀)) \
-                     (derived){rate}, and P* → P*ₛ(1 − δ₀/2) = {compliance_infinity:.10}, below the \
-                     full-stick P*ₛ = artanh(γ)/γ = {compliance_full_stick:.10} by {:.3e}. These asymptotic \
+                     1 − c∞(ν) = δ₀(1 − δ₀/2 + O(δ₀²)) = {width} remains, δ₀ = 8·exp(−π/(2ε₀)) \
+                     (derived){rate}, and P* → P*ₛ(1 − δ₀/2) = {compliance_infinity:.16}, below the \
+                     full-stick P*ₛ = artanh(γ)/γ = {compliance_full_stick:.16} by {:.3e}. These asymptotic \
                      values are not refined to the tolerance, so no answer is given (docs/hertz_asymptotics.md)",
                     compliance_full_stick - compliance_infinity
                 )

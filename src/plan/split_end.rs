@@ -24,20 +24,34 @@
 //!   such as the spurious roots of a contact condition that accumulate at
 //!   `c → 1`, say nothing about this end).
 //! - **The outputs are insensitive.** Each output is computed at the
-//!   distances `δ, 2δ, 4δ` from the end. The assumption is that it varies
-//!   there like a power of the distance, `O(end ± x) = O₀ + K·x^p`
-//!   (monotone), with `p ≥ 1/2`. `p` is fitted from the two differences,
-//!   taking the rounding `η` of the values (64 ulps) against the
-//!   assumption: the ratio `2^p` is taken at its lower bound
-//!   `(|D₂| − η)/(|D₁| + η)`, and the variation over the whole gap,
-//!   `(|D₁| + η)/(2^p − 1)`, is doubled. Differences that change sign, or
-//!   a fitted `p` below 1/2, give no bound and keep the refusal. When both
-//!   differences are below rounding the variation is bounded with
-//!   `p = 1/2`.
+//!   distances `δ, 2δ, 4δ` from the end, on the same level. The assumption
+//!   is that it varies there like a power of the distance,
+//!   `O(end ± x) = O₀ + K·x^p` (monotone), with `p ≥ 1/2`. Each computed
+//!   value carries an allowance `η`: its rounding (64 ulps of its size)
+//!   plus its own level estimate (the three points are discretised on
+//!   meshes that differ by their grading layers, so their discretisation
+//!   errors differ by up to that much). The variation over the whole gap is
+//!   `|K|δ^p = |D₁|/(2^p − 1)`, and the true first difference is within
+//!   `|d₁| + 2η` of the computed one, so it is at most
+//!   `(|d₁| + 2η)/(r − 1)`, doubled for safety, where `r` is the lower
+//!   bound of `2^p`: `(|d₂| − 2η)/(|d₁| + 2η)` when that is above `√2`,
+//!   and `√2` (the assumption's steepest law) otherwise. Values flat within
+//!   their allowance thus get a bound of a few allowances. Differences that
+//!   change sign beyond their allowances, or that fall away from the end
+//!   faster than any `p ≥ 1/2` allows (`|d₂| + 2η < √2(|d₁| − 2η)`), give
+//!   no bound and keep the refusal. Near full stick at `ν = 0.499` the
+//!   values vary like `x¹` (`P` at `1 − c = 9.3e-13, 1.9e-12, 3.7e-12`
+//!   converges to `P*ₛ + 1.6e-14, 3.3e-14, 6.4e-14` at `μ = 1`), while on
+//!   the coarsest level they scatter by the level's discretisation error
+//!   (`1.9e-8` at `μ = 100`): so the bound is taken on the level that
+//!   converged, never on the first.
 //! - **Refinement.** The ladder of levels is climbed at `x₁` as for any
-//!   solve; each output's error is its level estimate plus its variation
-//!   bound, the scalar's is `δ/2`, and the answer is converged only if
-//!   every one is within the tolerance.
+//!   solve. Once the outputs' level estimates are within the tolerance,
+//!   the variations are computed on that level; each output's error is its
+//!   level estimate plus its variation bound, the scalar's is `δ/2`, and
+//!   the answer is converged only if every one is within the tolerance.
+//!   If an output has no bound on two such levels in turn (or on the last
+//!   level), the refusal is kept.
 //!
 //! Owns this decision and the end answer's report; the scan, the root
 //! solve and the ladder are `split_solve.rs`'s, the discretisation
@@ -83,43 +97,47 @@ pub struct EndVariation {
     pub name: String,
     /// Its values at the distances `δ, 2δ, 4δ` from the end.
     pub values: [f64; 3],
-    /// The fitted exponent `p` of `K·x^p` (`None` when both differences
-    /// are below rounding, where `p = 1/2` is assumed).
+    /// The fitted exponent `p` of `K·x^p` (`None` when a difference is
+    /// within its allowance, where `p = 1/2` is assumed).
     pub exponent: Option<f64>,
+    /// The allowance of each value: its rounding (64 ulps) plus its level
+    /// estimate on the level the values were computed on.
+    pub allowance: f64,
     /// The bound of `|O(root) − O(x₁)|` (infinite when there is none:
     /// the values change direction, or vary more steeply than `x^(1/2)`).
     pub bound: f64,
 }
 
-/// Rounding of an output's value, in ulps of its size: the noise floor of
-/// the differences in [`variation_bound`] (measured on the Hertz problem
-/// at `c = 1e-10, 2e-10, 4e-10`: `P*` differs by 1–2 ulps).
+/// Rounding of an output's value, in ulps of its size: part of the
+/// allowance of each value in [`variation_bound`] (measured on the Hertz
+/// problem at `c = 1e-10, 2e-10, 4e-10`: `P*` differs by 1–2 ulps).
 const ROUNDING_ULPS: f64 = 64.0;
 
 /// The bound of `|O(x) − O(x₁)|` for `x` between the end and `x₁` from
-/// `O` at the distances `δ, 2δ, 4δ`, and the fitted exponent (see the
-/// module's paragraph); `None` when the values do not follow the
-/// assumption.
-pub fn variation_bound(o: [f64; 3]) -> Option<(f64, Option<f64>)> {
+/// `O` at the distances `δ, 2δ, 4δ`, each value known within `noise`
+/// (its discretisation error estimate) plus its rounding, and the fitted
+/// exponent (see the module's paragraph); `None` when the values do not
+/// follow the assumption.
+pub fn variation_bound(o: [f64; 3], noise: f64) -> Option<(f64, Option<f64>)> {
     let scale = o.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-    if !scale.is_finite() {
+    if !(scale.is_finite() && noise >= 0.0 && noise.is_finite()) {
         return None;
     }
-    let eta = ROUNDING_ULPS * f64::EPSILON * scale;
+    // The allowance of one difference: two values' rounding and noise.
+    let a = 2.0 * (ROUNDING_ULPS * f64::EPSILON * scale + noise);
     let (d1, d2) = (o[1] - o[0], o[2] - o[1]);
-    if d1.abs() <= 2.0 * eta && d2.abs() <= 2.0 * eta {
-        let bound = 2.0 * (d1.abs().max(d2.abs()) + eta) / (SQRT_2 - 1.0);
-        return Some((bound, None));
-    }
-    if d1 * d2 <= 0.0 {
+    // A change of direction beyond the allowances.
+    if d1 * d2 < 0.0 && d1.abs() > a && d2.abs() > a {
         return None;
     }
-    let ratio = (d2.abs() - eta) / (d1.abs() + eta);
-    if ratio.is_nan() || ratio < SQRT_2 {
+    // Steeper toward the end than x^(1/2) even within the allowances.
+    if d2.abs() + a < SQRT_2 * (d1.abs() - a) {
         return None;
     }
-    let bound = 2.0 * (d1.abs() + eta) / (ratio - 1.0);
-    Some((bound, Some((d2 / d1).log2())))
+    let ratio = ((d2.abs() - a) / (d1.abs() + a)).max(SQRT_2);
+    let bound = 2.0 * (d1.abs() + a) / (ratio - 1.0);
+    let exponent = (d1.abs() > a && d2.abs() > a).then(|| (d2 / d1).log2());
+    Some((bound, exponent))
 }
 
 /// Whether the scan's refusal `r` shows a root beyond the end (see the
@@ -214,12 +232,15 @@ fn values_at(
 }
 
 /// The variation of every output and coefficient on level `lvl`, given
-/// their values at `x₁` (`first`) and the points `x₂, x₃`.
+/// their values at `x₁` (`first`), the points `x₂, x₃`, and each one's
+/// level estimate (`noise`, outputs then coefficients; infinite on the
+/// first level, which gives no bound).
 fn variations(
     problem: &SplitProblem,
     first: (&[f64], &[f64]),
     pts: [f64; 2],
     lvl: &SplitLevel,
+    noise: &[f64],
 ) -> Result<Vec<EndVariation>, PlanError> {
     let (o2, c2, _) = values_at(problem, pts[0], lvl)?;
     let (o3, c3, _) = values_at(problem, pts[1], lvl)?;
@@ -234,14 +255,17 @@ fn variations(
     let v3 = o3.iter().chain(&c3);
     Ok(names
         .zip(v1.zip(v2).zip(v3))
-        .map(|(name, ((&a, &b), &c))| {
+        .zip(noise)
+        .map(|((name, ((&a, &b), &c)), &n)| {
             let values = [a, b, c];
-            let (bound, exponent) = variation_bound(values).unwrap_or((f64::INFINITY, None));
+            let (bound, exponent) = variation_bound(values, n).unwrap_or((f64::INFINITY, None));
+            let scale = a.abs().max(b.abs()).max(c.abs());
             EndVariation {
                 name,
                 values,
                 exponent,
                 bound,
+                allowance: ROUNDING_ULPS * f64::EPSILON * scale + n,
             }
         })
         .collect())
@@ -289,20 +313,12 @@ pub fn answer_at_end(
         );
     }
     let n_out = problem.sys.outputs.len();
-    // A first look on the coarsest level: no climb when the outputs vary
-    // too much over the gap.
-    let lvl0 = SplitLevel::level(0);
-    let (o, c, _) = values_at(&problem, x1, &lvl0)?;
-    let var0 = variations(&problem, (&o, &c), pts, &lvl0)?;
-    let worst0 = var0[..n_out].iter().fold(0.0f64, |m, v| m.max(v.bound));
-    if let Some(v) = var0[..n_out]
-        .iter()
-        .find(|v| (v.bound + half).is_nan() || v.bound + half > opts.tol)
-    {
-        return refuse(
-            &r,
+    let n_coef = problem.contact.coefficients.len();
+    let no_bound = |r: &RootAtEnd, v: &EndVariation| {
+        refuse(
+            r,
             format!(
-                "the output {} varies over the gap by up to {:.1e} (values {:.12e}, {:.12e}, {:.12e} at {:.1e}, {:.1e}, {:.1e} from the end), more than the tolerance {:.0e} allows",
+                "the output {} varies over the gap by up to {:.1e} (values {:.12e}, {:.12e}, {:.12e} at {:.1e}, {:.1e}, {:.1e} from the end, each within {:.1e}; the bound assumes a monotone power law of the distance, at most as steep as its square root), more than the tolerance {:.0e} allows",
                 v.name,
                 v.bound,
                 v.values[0],
@@ -311,12 +327,16 @@ pub fn answer_at_end(
                 delta,
                 2.0 * delta,
                 4.0 * delta,
+                v.allowance,
                 opts.tol
             ),
-        );
-    }
+        )
+    };
     let mut levels: Vec<Level> = Vec::new();
     let mut previous = None;
+    // Whether the previous level whose estimates were within the
+    // tolerance left an output without a variation bound.
+    let mut unbounded_before = false;
     for k in 0..=opts.max_level {
         let lvl = SplitLevel::level(k);
         let (outputs, coefficients, d) = values_at(&problem, x1, &lvl)?;
@@ -327,10 +347,40 @@ pub fn answer_at_end(
             outputs,
             coefficients,
         };
-        let est = (0..n_out)
+        // Each output's and coefficient's own level estimate.
+        let noise: Vec<f64> = (0..n_out)
             .map(|i| estimate_of(&levels, &this, &|l| &l.outputs, i))
-            .fold(0.0f64, f64::max);
-        let mut done = !levels.is_empty() && est + worst0 <= opts.tol;
+            .chain((0..n_coef).map(|i| estimate_of(&levels, &this, &|l| &l.coefficients, i)))
+            .collect();
+        let est = noise[..n_out].iter().fold(0.0f64, |m, &e| m.max(e));
+        // The variations, once the level estimates are within the
+        // tolerance (or on the last level).
+        let mut vars = None;
+        if (!levels.is_empty() && est <= opts.tol) || k == opts.max_level {
+            let v = variations(
+                &problem,
+                (&this.outputs, &this.coefficients),
+                pts,
+                &lvl,
+                &noise,
+            )?;
+            if let Some(bad) = v[..n_out].iter().find(|v| !v.bound.is_finite()) {
+                if unbounded_before || k == opts.max_level {
+                    return no_bound(&r, bad);
+                }
+                unbounded_before = true;
+            } else {
+                unbounded_before = false;
+            }
+            vars = Some(v);
+        }
+        let mut done = vars.as_ref().is_some_and(|v| {
+            !levels.is_empty()
+                && v[..n_out]
+                    .iter()
+                    .zip(&noise)
+                    .all(|(v, e)| e + v.bound <= opts.tol)
+        });
         if done {
             // Would grading the undeclared ends move the outputs?
             use super::split_ends::{Mode, Verdict, check};
@@ -353,8 +403,7 @@ pub fn answer_at_end(
                 Verdict::Refuse { .. } => done = false,
             }
         }
-        if done || k == opts.max_level {
-            let vars = variations(&problem, (&this.outputs, &this.coefficients), pts, &lvl)?;
+        if let (true, Some(vars)) = (done || k == opts.max_level, vars) {
             let mut rep = report(
                 &problem,
                 &d,
@@ -423,20 +472,53 @@ mod tests {
         // O = 1 + x²: D₂/D₁ = 4, variation over (0, δ) = δ² (bound 2·δ²/3 … 2δ²).
         let d = 1e-3;
         let o = [1.0 + d * d, 1.0 + 4.0 * d * d, 1.0 + 16.0 * d * d];
-        let (b, p) = variation_bound(o).unwrap();
+        let (b, p) = variation_bound(o, 0.0).unwrap();
         assert!(b >= d * d && b <= 3.0 * d * d, "{b}");
         assert!((p.unwrap() - 2.0).abs() < 1e-6);
-        // √x: exactly the steepest accepted (ratio √2), but the rounding
-        // floor takes the ratio below √2: refused.
+        // √x: exactly the steepest law the assumption admits: bounded, by
+        // at least its true variation √δ over (0, δ).
         let o = [d.sqrt(), (2.0 * d).sqrt(), (4.0 * d).sqrt()];
-        assert!(variation_bound(o).is_none());
+        let (b, _) = variation_bound(o, 0.0).unwrap();
+        assert!(b >= d.sqrt() && b <= 3.0 * d.sqrt(), "{b}");
         // x^(1/3) (steeper than the assumption) and a change of direction.
         let o = [d.cbrt(), (2.0 * d).cbrt(), (4.0 * d).cbrt()];
-        assert!(variation_bound(o).is_none());
-        assert!(variation_bound([1.0, 1.0 + 1e-9, 1.0]).is_none());
+        assert!(variation_bound(o, 0.0).is_none());
+        assert!(variation_bound([1.0, 1.0 + 1e-9, 1.0], 0.0).is_none());
+        // A level estimate as large as the differences covers the change
+        // of direction (the three meshes differ), and widens the bound.
+        let o = [1.0, 1.0 + 1e-12, 1.0 + 0.5e-12];
+        assert!(variation_bound(o, 0.0).is_none());
+        let (b, p) = variation_bound(o, 1e-12).unwrap();
+        assert!(p.is_none() && b > 1e-12 && b < 1e-10, "{b}");
         // Differences at rounding: a bound of a few dozen ulps.
         let e = f64::EPSILON;
-        let (b, p) = variation_bound([1.0, 1.0 + e, 1.0 - e]).unwrap();
+        let (b, p) = variation_bound([1.0, 1.0 + e, 1.0 - e], 0.0).unwrap();
         assert!(p.is_none() && b > 64.0 * e && b < 1e-12, "{b}");
+        // Flat within rounding but not in the order of a power law (the
+        // old rule took the ratio of two rounding-level differences and
+        // gave no bound): a bound of the order of the rounding.
+        let (b, _) = variation_bound([1.0, 1.0 + 100.0 * e, 1.0 + 110.0 * e], 0.0).unwrap();
+        assert!(b > 100.0 * e && b < 1e-12, "{b}");
+    }
+
+    #[test]
+    fn the_variation_bound_holds_near_full_stick_at_nu_0499() {
+        // P of examples/hertz.lmx at ν = 0.499, μ = 1 with 1 − c fixed at
+        // 9.3e-13, 1.9e-12, 3.7e-12 on level 5 (level estimate 6.5e-15),
+        // measured by `examples/edges_probe.rs`; the root lies beyond
+        // (1 − c ≈ e^(−1685) by docs/hertz_asymptotics.md), where P* is the
+        // full-stick artanh(γ)/γ to double precision. The old rule gave no
+        // bound here.
+        let nu: f64 = 0.499;
+        let g = (1.0 - 2.0 * nu) / (2.0 - 2.0 * nu);
+        let full_stick = g.atanh() / g;
+        let o = [
+            1.000_001_328_019_148,
+            1.000_001_328_019_165_5,
+            1.000_001_328_019_196,
+        ];
+        let (b, _) = variation_bound(o, 6.5e-15).unwrap();
+        assert!(b < 1e-12, "{b}");
+        assert!((o[0] - full_stick).abs() <= b + 6.5e-15, "{b}");
     }
 }
