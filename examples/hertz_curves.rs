@@ -29,6 +29,9 @@ struct Point {
     pe: f64,
     converged: bool,
     secs: f64,
+    /// At an end answer: the distance from the end within which the root
+    /// lies (c bounded, not resolved), with the end.
+    bounded: Option<(f64, f64)>,
 }
 
 /// The shortest decimal that reads back as `x` (Rust's `Display` for
@@ -70,6 +73,7 @@ fn solve(src: &str, nu: f64, mu: f64, tol: f64) -> Result<Point, String> {
         pe,
         converged: r.converged,
         secs,
+        bounded: r.end_answer.as_ref().map(|e| (e.end_value, e.distance)),
     })
 }
 
@@ -275,7 +279,10 @@ fn main() {
                  Each value is followed by its error estimate (distance between the \
                  last two refinement levels plus the root tolerance); it is absolute, \
                  so a small c (the μ → 0 end) is known to the relative accuracy \
-                 estimate/c. A refusal is printed with the limit it names. The \
+                 estimate/c. A c marked bounded lies closer to an end than the \
+                 solver resolves (an end answer, `src/plan/split_end.rs`): it is \
+                 the middle of that gap, and P*'s estimate includes its variation \
+                 over the gap. A refusal is printed with the limit it names. The \
                  limits are explained in `docs/hertz_asymptotics.md`.\n"
             );
             for nu in nus {
@@ -285,8 +292,13 @@ fn main() {
                 for mu in mus {
                     match solve(&src, nu, mu, tol) {
                         Ok(p) if p.converged => println!(
-                            "| {mu} | {} | {:.1e} | {:.12} | {:.1e} |",
+                            "| {mu} | {}{} | {:.1e} | {:.12} | {:.1e} |",
                             ten_digits(p.c),
+                            p.bounded.map_or(String::new(), |(end, d)| if end == 1.0 {
+                                format!(" (bounded: 1 − c < {d:.1e})")
+                            } else {
+                                format!(" (bounded: c < {d:.2e})")
+                            }),
                             p.ce,
                             p.p,
                             p.pe
