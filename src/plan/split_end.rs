@@ -28,9 +28,10 @@
 //!   is that it varies there like a power of the distance,
 //!   `O(end ± x) = O₀ + K·x^p` (monotone), with `p ≥ 1/2`. Each computed
 //!   value carries an allowance `η`: its rounding (64 ulps of its size)
-//!   plus its own level estimate (the three points are discretised on
-//!   meshes that differ by their grading layers, so their discretisation
-//!   errors differ by up to that much). The variation over the whole gap is
+//!   plus half the change of its two differences since the previous level
+//!   (the level estimate of the differences: the three points are
+//!   discretised on meshes that differ by their grading layers, so their
+//!   discretisation errors need not cancel in the differences). The variation over the whole gap is
 //!   `|K|δ^p = |D₁|/(2^p − 1)`, and the true first difference is within
 //!   `|d₁| + 2η` of the computed one, so it is at most
 //!   `(|d₁| + 2η)/(r − 1)`, doubled for safety, where `r` is the lower
@@ -42,16 +43,16 @@
 //!   no bound and keep the refusal. Near full stick at `ν = 0.499` the
 //!   values vary like `x¹` (`P` at `1 − c = 9.3e-13, 1.9e-12, 3.7e-12`
 //!   converges to `P*ₛ + 1.6e-14, 3.3e-14, 6.4e-14` at `μ = 1`), while on
-//!   the coarsest level they scatter by the level's discretisation error
-//!   (`1.9e-8` at `μ = 100`): so the bound is taken on the level that
-//!   converged, never on the first.
+//!   the coarsest level they are off by up to `1.9e-8` (`μ = 100`), so a
+//!   bound is only taken on a level whose estimates are known.
 //! - **Refinement.** The ladder of levels is climbed at `x₁` as for any
-//!   solve. Once the outputs' level estimates are within the tolerance,
-//!   the variations are computed on that level; each output's error is its
-//!   level estimate plus its variation bound, the scalar's is `δ/2`, and
-//!   the answer is converged only if every one is within the tolerance.
-//!   If an output has no bound on two such levels in turn (or on the last
-//!   level), the refusal is kept.
+//!   solve, and the variations are computed on every level from the
+//!   second on (the first has no previous one to give the allowance).
+//!   Each output's error is its level estimate plus its variation bound,
+//!   the scalar's is `δ/2`, and the answer is converged only if every one
+//!   is within the tolerance. If an output has no bound (its allowance
+//!   known) on two levels in turn whose level estimates are within the
+//!   tolerance, or on the last level, the refusal is kept.
 //!
 //! Owns this decision and the end answer's report; the scan, the root
 //! solve and the ladder are `split_solve.rs`'s, the discretisation
@@ -100,8 +101,9 @@ pub struct EndVariation {
     /// The fitted exponent `p` of `K·x^p` (`None` when a difference is
     /// within its allowance, where `p = 1/2` is assumed).
     pub exponent: Option<f64>,
-    /// The allowance of each value: its rounding (64 ulps) plus its level
-    /// estimate on the level the values were computed on.
+    /// The allowance of each value: its rounding (64 ulps) plus half the
+    /// change of its differences since the previous level (infinite on
+    /// the first level, which gives no bound).
     pub allowance: f64,
     /// The bound of `|O(root) − O(x₁)|` (infinite when there is none:
     /// the values change direction, or vary more steeply than `x^(1/2)`).
@@ -232,15 +234,17 @@ fn values_at(
 }
 
 /// The variation of every output and coefficient on level `lvl`, given
-/// their values at `x₁` (`first`), the points `x₂, x₃`, and each one's
-/// level estimate (`noise`, outputs then coefficients; infinite on the
-/// first level, which gives no bound).
+/// their values at `x₁` (`first`) and the points `x₂, x₃`. The allowance
+/// of each value is its rounding plus half the largest change of its two
+/// differences since the previous level's variations `prev` (the level
+/// estimate of the differences, whose meshes differ); without `prev` it
+/// is infinite and there is no bound yet.
 fn variations(
     problem: &SplitProblem,
     first: (&[f64], &[f64]),
     pts: [f64; 2],
     lvl: &SplitLevel,
-    noise: &[f64],
+    prev: Option<&[EndVariation]>,
 ) -> Result<Vec<EndVariation>, PlanError> {
     let (o2, c2, _) = values_at(problem, pts[0], lvl)?;
     let (o3, c3, _) = values_at(problem, pts[1], lvl)?;
@@ -255,17 +259,24 @@ fn variations(
     let v3 = o3.iter().chain(&c3);
     Ok(names
         .zip(v1.zip(v2).zip(v3))
-        .zip(noise)
-        .map(|((name, ((&a, &b), &c)), &n)| {
+        .enumerate()
+        .map(|(i, (name, ((&a, &b), &c)))| {
             let values = [a, b, c];
-            let (bound, exponent) = variation_bound(values, n).unwrap_or((f64::INFINITY, None));
+            let noise = prev.and_then(|p| p.get(i)).map_or(f64::INFINITY, |p| {
+                let d = |v: &[f64; 3], j: usize| v[j + 1] - v[j];
+                let change = (d(&values, 0) - d(&p.values, 0))
+                    .abs()
+                    .max((d(&values, 1) - d(&p.values, 1)).abs());
+                0.5 * change
+            });
+            let (bound, exponent) = variation_bound(values, noise).unwrap_or((f64::INFINITY, None));
             let scale = a.abs().max(b.abs()).max(c.abs());
             EndVariation {
                 name,
                 values,
                 exponent,
                 bound,
-                allowance: ROUNDING_ULPS * f64::EPSILON * scale + n,
+                allowance: ROUNDING_ULPS * f64::EPSILON * scale + noise,
             }
         })
         .collect())
@@ -313,7 +324,6 @@ pub fn answer_at_end(
         );
     }
     let n_out = problem.sys.outputs.len();
-    let n_coef = problem.contact.coefficients.len();
     let no_bound = |r: &RootAtEnd, v: &EndVariation| {
         refuse(
             r,
@@ -334,6 +344,9 @@ pub fn answer_at_end(
     };
     let mut levels: Vec<Level> = Vec::new();
     let mut previous = None;
+    // The previous level's variations (their differences' change is the
+    // allowance of this level's).
+    let mut prev_vars: Option<Vec<EndVariation>> = None;
     // Whether the previous level whose estimates were within the
     // tolerance left an output without a variation bound.
     let mut unbounded_before = false;
@@ -347,31 +360,37 @@ pub fn answer_at_end(
             outputs,
             coefficients,
         };
-        // Each output's and coefficient's own level estimate.
+        // Each output's own level estimate.
         let noise: Vec<f64> = (0..n_out)
             .map(|i| estimate_of(&levels, &this, &|l| &l.outputs, i))
-            .chain((0..n_coef).map(|i| estimate_of(&levels, &this, &|l| &l.coefficients, i)))
             .collect();
-        let est = noise[..n_out].iter().fold(0.0f64, |m, &e| m.max(e));
-        // The variations, once the level estimates are within the
-        // tolerance (or on the last level).
+        let est = noise.iter().fold(0.0f64, |m, &e| m.max(e));
+        // The variations from the second level on (the first has nothing
+        // to compare them with).
         let mut vars = None;
-        if (!levels.is_empty() && est <= opts.tol) || k == opts.max_level {
+        if !levels.is_empty() || k == opts.max_level {
             let v = variations(
                 &problem,
                 (&this.outputs, &this.coefficients),
                 pts,
                 &lvl,
-                &noise,
+                prev_vars.as_deref(),
             )?;
-            if let Some(bad) = v[..n_out].iter().find(|v| !v.bound.is_finite()) {
-                if unbounded_before || k == opts.max_level {
-                    return no_bound(&r, bad);
+            // An output without a bound although its allowance is known:
+            // the values contradict the assumption on this level.
+            let bad = v[..n_out]
+                .iter()
+                .find(|v| !v.bound.is_finite() && v.allowance.is_finite());
+            if est <= opts.tol || k == opts.max_level {
+                match bad {
+                    Some(bad) if unbounded_before || k == opts.max_level => {
+                        return no_bound(&r, bad);
+                    }
+                    Some(_) => unbounded_before = true,
+                    None => unbounded_before = false,
                 }
-                unbounded_before = true;
-            } else {
-                unbounded_before = false;
             }
+            prev_vars = Some(v.clone());
             vars = Some(v);
         }
         let mut done = vars.as_ref().is_some_and(|v| {
@@ -398,6 +417,7 @@ pub fn answer_at_end(
                 Verdict::Climb { level, discrete } => {
                     levels = vec![*level];
                     previous = Some(*discrete);
+                    prev_vars = None;
                     continue;
                 }
                 Verdict::Refuse { .. } => done = false,
