@@ -374,7 +374,7 @@ pub enum Limit {
     /// below the full-stick `P*ₛ = artanh(γ)/γ` (docs/hertz_asymptotics.md).
     ThinSlip {
         /// `δ₀(1 − δ₀/2)`, see [`large_friction_asymptotics`] (0 when it
-        /// underflows, as for ν ≥ 0.4998; see the next field).
+        /// underflows, as for ν ≥ 0.4967; subnormal from ν ≈ 0.4966; see the next field).
         one_minus_c_infinity: f64,
         /// `log₁₀` of `1 − c∞`, finite where the value itself underflows
         /// (`−1073.6` at ν = 0.499).

@@ -515,9 +515,10 @@ mod tests {
         let (b, p) = variation_bound([1.0, 1.0 + e, 1.0 - e], 0.0).unwrap();
         assert!(p.is_none() && b > 64.0 * e && b < 1e-12, "{b}");
         // Flat within rounding but not in the order of a power law (the
-        // old rule took the ratio of two rounding-level differences and
-        // gave no bound): a bound of the order of the rounding.
-        let (b, _) = variation_bound([1.0, 1.0 + 100.0 * e, 1.0 + 110.0 * e], 0.0).unwrap();
+        // old rule, with one difference above 128 ulps, took the ratio of
+        // two rounding-level differences and gave no bound): a bound of
+        // the order of the rounding.
+        let (b, _) = variation_bound([1.0, 1.0 + 100.0 * e, 1.0 + 250.0 * e], 0.0).unwrap();
         assert!(b > 100.0 * e && b < 1e-12, "{b}");
     }
 
