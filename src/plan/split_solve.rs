@@ -656,7 +656,18 @@ pub(super) fn find_scalar(
             if step == 0.0 {
                 step = 1e-12;
             }
+            // A first step shorter than the tolerance could not tell the
+            // root from `s0` (and, where the tolerance is a few ulps of
+            // `x`, would land on `x(s0)` itself: near `c → 1` the root
+            // moves by less than that from level to level). A step of the
+            // tolerance toward the predicted root brackets it there, and
+            // the secant stops after that one evaluation.
             let step = step.clamp(-0.5, 0.5);
+            let step = if step.abs() < stol {
+                stol.copysign(step)
+            } else {
+                step
+            };
             match secant(&mut f, s0, f0, step, stol, 12, (-S_LIMIT_LO, S_LIMIT))? {
                 Some(r) => r,
                 None => {
@@ -740,7 +751,10 @@ pub(super) fn find_scalar(
                 }));
                 return Err(at_end(e, name, &evals.borrow()));
             };
-            let h = 1e-6;
+            // A step the map's variable resolves: within `1e-10` of an end
+            // of a unit range one ulp of `x` is more than `1e-6` in `s`,
+            // and `x(s + 1e-6)` would be `x(s)` itself (slope 0).
+            let h = map.s_tolerance(s, xtol).max(1e-6);
             let slope = (f(s + h)? - f(s)?) / h;
             (s, slope)
         }
