@@ -519,10 +519,22 @@ impl ScalarMap {
         if !(dxds > 0.0 && dxds.is_finite()) {
             return xtol;
         }
-        let ulps = 4.0 * f64::EPSILON * self.x(s).abs() / dxds;
+        let ulps = self.s_ulps(s);
         // `dx/ds ≤ (hi - lo)/4`: in the middle of the range this is
         // `xtol` in `s`, the tolerance the solver always had there.
         (0.25 * xtol / dxds).min(S_REL_TOL).max(ulps).max(xtol)
+    }
+
+    /// Four ulps of `x(s)` in the map's variable, `4ε|x|/(dx/ds)`: a
+    /// step in `s` shorter than about this may leave `x` unchanged (within
+    /// `1e-10` of the upper end of a unit range it is more than `1e-6`);
+    /// 0 (no floor) where `dx/ds` is not a positive number.
+    pub(super) fn s_ulps(&self, s: f64) -> f64 {
+        let dxds = self.dx_ds(s);
+        if !(dxds > 0.0 && dxds.is_finite()) {
+            return 0.0;
+        }
+        4.0 * f64::EPSILON * self.x(s).abs() / dxds
     }
 
     /// Whether `x(s)` is within `1e-8` (relative) of an end.
@@ -656,15 +668,20 @@ pub(super) fn find_scalar(
             if step == 0.0 {
                 step = 1e-12;
             }
-            // A first step shorter than the tolerance could not tell the
-            // root from `s0` (and, where the tolerance is a few ulps of
-            // `x`, would land on `x(s0)` itself: near `c → 1` the root
-            // moves by less than that from level to level). A step of the
-            // tolerance toward the predicted root brackets it there, and
-            // the secant stops after that one evaluation.
+            // A first step within a few ulps of `x` would land on `x(s0)`
+            // itself (near `c → 1`, where one ulp of `c` is more than the
+            // root moves from level to level), and the secant would stop
+            // without a slope and fall back to a bracket and Brent (4–7
+            // discretisations instead of 2). So it is at least the
+            // tolerance there, which the map's ulps set: then the step
+            // brackets the root and the secant stops after that one
+            // evaluation. Elsewhere the step is as predicted (lengthening
+            // it to the tolerance near `c → 0`, where the condition is
+            // noisy on that scale, made the secant chase the noise).
             let step = step.clamp(-0.5, 0.5);
-            let step = if step.abs() < stol {
-                stol.copysign(step)
+            let ulps = map.s_ulps(s0);
+            let step = if step.abs() < ulps {
+                stol.max(ulps).copysign(step)
             } else {
                 step
             };
@@ -754,7 +771,7 @@ pub(super) fn find_scalar(
             // A step the map's variable resolves: within `1e-10` of an end
             // of a unit range one ulp of `x` is more than `1e-6` in `s`,
             // and `x(s + 1e-6)` would be `x(s)` itself (slope 0).
-            let h = map.s_tolerance(s, xtol).max(1e-6);
+            let h = map.s_ulps(s).max(1e-6);
             let slope = (f(s + h)? - f(s)?) / h;
             (s, slope)
         }
