@@ -1175,6 +1175,36 @@ mod tests {
     }
 
     #[test]
+    fn a_step_of_the_maps_ulps_moves_x_where_a_millionth_does_not() {
+        // Near full stick (ν = 0.4, μ = 4.64: 1 − c = 2.9e-11; the
+        // resolved limit s = S_LIMIT) a step of 1e-6 in s leaves c where
+        // it is, so a slope from it is 0 and a secant from it stops: the
+        // level-0 slope and the warm start's first step use at least
+        // `s_ulps`, which moves c by a few ulps and no more.
+        let m = ScalarMap { lo: 0.0, hi: 1.0 };
+        let mut stuck = 0;
+        for s in [m.s(1.0 - 2.9e-11), m.s(1.0 - 1.6e-12), S_LIMIT] {
+            let x = m.x(s);
+            stuck += usize::from(m.x(s + 1e-6) == x);
+            let h = m.s_ulps(s).max(1e-6);
+            for step in [h, -h] {
+                let moved = (m.x(s + step) - x).abs() / (f64::EPSILON / 2.0);
+                assert!((1.0..=16.0).contains(&moved), "s = {s}: {moved} ulps");
+            }
+            // And it is the tolerance there: the iterations stop at it.
+            assert_eq!(m.s_tolerance(s, 5e-13), m.s_ulps(s));
+        }
+        assert!(stuck >= 2, "the case the floor is for did not occur");
+        // Elsewhere it is far below the steps the solver takes (1e-6), so
+        // the warm start's predicted step is left as it is.
+        for x in [1e-10, 2e-8, 0.5, 1.0 - 4.3e-7] {
+            assert!(m.s_ulps(m.s(x)) < 1e-8, "{x}");
+        }
+        // At an end (dx/ds = 0) there is no floor.
+        assert_eq!(m.s_ulps(800.0), 0.0);
+    }
+
+    #[test]
     fn the_tolerance_in_s_keeps_the_absolute_one_and_stops_at_the_ulps() {
         let m = ScalarMap { lo: 0.0, hi: 1.0 };
         let xtol = 5e-12;
