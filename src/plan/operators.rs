@@ -96,8 +96,8 @@ pub fn build_operator(
                 kernel,
                 ..
             } => {
-                let k = kernel.compile();
-                Operator::integral(limits, kernel.singularity(), move |x, t| k(x, t)).scaled(sign)
+                Operator::integral_shared(limits, kernel.singularity(), kernel.compile())
+                    .scaled(sign)
             }
         };
         op = op + piece;

@@ -9,7 +9,10 @@
 //! bound of every relation (`|q| ≤ |μ p|` where `q` is free: the Coulomb
 //! stick inequality) is taken. On every further level: a secant iteration
 //! warm-started from the previous root with a Newton step on the previous
-//! slope (a local bracket and Brent if it misbehaves). Every root
+//! slope, never shorter than a few ulps of the scalar (near `c → 1` the
+//! root moves by less than one between levels; the step then brackets it
+//! and the level costs two discretisations), and a local bracket and
+//! Brent if it misbehaves. Every root
 //! iteration stops at the tolerance in `s` that keeps the absolute root
 //! tolerance in `x`, capped at a relative `1e-6` of the distance to the
 //! nearer end and no finer than a few ulps of `x`. The levels of
