@@ -168,11 +168,7 @@ impl Operator {
     /// [`Operator::integral`] with a kernel already behind an `Arc` (a
     /// compiled one): used as it is, not wrapped in a further closure
     /// (assembly calls it once per quadrature node).
-    pub fn integral_shared(
-        limits: Limits,
-        singularity: Singularity,
-        kernel: Kernel,
-    ) -> Operator {
+    pub fn integral_shared(limits: Limits, singularity: Singularity, kernel: Kernel) -> Operator {
         Operator {
             terms: vec![(
                 1.0,

@@ -95,10 +95,8 @@ pub fn build_operator(
                 sign,
                 kernel,
                 ..
-            } => {
-                Operator::integral_shared(limits, kernel.singularity(), kernel.compile())
-                    .scaled(sign)
-            }
+            } => Operator::integral_shared(limits, kernel.singularity(), kernel.compile())
+                .scaled(sign),
         };
         op = op + piece;
     }
