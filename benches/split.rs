@@ -64,8 +64,12 @@ fn split(c: &mut Criterion) {
 /// were slowest (c near 1) beside Spence's and Kalker's mid-range cases and
 /// the smallest stick zone, through the `hertz` front (what `lambdamat
 /// hertz` and `hertz sweep` run per point), at tol 1e-10. The goal is at
-/// most 0.5 s CPU per point. Run alone:
-/// `cargo bench --bench split -- sweep_points --warm-up-time 1 --measurement-time 3`.
+/// most 0.5 s CPU per point. The last seven are the near-full-stick points
+/// (1 − c from 4.6e-5 down to 1.6e-12, where one ulp of c is more than the
+/// root moves between levels) that took 0.5–0.7 s before the warm start
+/// learned to step by at least the map's ulps. Run alone:
+/// `cargo bench --bench split -- sweep_points --warm-up-time 1 --measurement-time 3`;
+/// the CPU time of every point of the sweep: `benches/sweep_times.py`.
 fn sweep_points(c: &mut Criterion) {
     let opts = SplitOptions::default();
     let mut g = c.benchmark_group("sweep_points");
@@ -82,6 +86,13 @@ fn sweep_points(c: &mut Criterion) {
         (0.25, 0.1801),
         (0.0, 0.2986),
         (0.0, 0.03),
+        (0.4, 4.641588833612779),
+        (0.4, 10.0),
+        (0.4, 21.54434690031882),
+        (0.4, 46.41588833612773),
+        (0.4, 100.0),
+        (-0.4, 21.54434690031882),
+        (0.2, 10.0),
     ] {
         g.bench_function(format!("front (nu,mu)=({nu},{mu})"), |b| {
             b.iter(|| solve(nu, Given::Mu(mu), &opts))

@@ -162,13 +162,20 @@ impl Operator {
         singularity: Singularity,
         kernel: impl Fn(f64, f64) -> f64 + Send + Sync + 'static,
     ) -> Operator {
+        Operator::integral_shared(limits, singularity, Arc::new(kernel))
+    }
+
+    /// [`Operator::integral`] with a kernel already behind an `Arc` (a
+    /// compiled one): used as it is, not wrapped in a further closure
+    /// (assembly calls it once per quadrature node).
+    pub fn integral_shared(limits: Limits, singularity: Singularity, kernel: Kernel) -> Operator {
         Operator {
             terms: vec![(
                 1.0,
                 Term::Integral {
                     limits,
                     singularity,
-                    kernel: Arc::new(kernel),
+                    kernel,
                 },
             )],
         }

@@ -95,10 +95,8 @@ pub fn build_operator(
                 sign,
                 kernel,
                 ..
-            } => {
-                let k = kernel.compile();
-                Operator::integral(limits, kernel.singularity(), move |x, t| k(x, t)).scaled(sign)
-            }
+            } => Operator::integral_shared(limits, kernel.singularity(), kernel.compile())
+                .scaled(sign),
         };
         op = op + piece;
     }

@@ -9,7 +9,10 @@
 //! bound of every relation (`|q| ≤ |μ p|` where `q` is free: the Coulomb
 //! stick inequality) is taken. On every further level: a secant iteration
 //! warm-started from the previous root with a Newton step on the previous
-//! slope (a local bracket and Brent if it misbehaves). Every root
+//! slope, never shorter than a few ulps of the scalar (near `c → 1` the
+//! root moves by less than one between levels; the step then brackets it
+//! and the level costs two discretisations), and a local bracket and
+//! Brent if it misbehaves. Every root
 //! iteration stops at the tolerance in `s` that keeps the absolute root
 //! tolerance in `x`, capped at a relative `1e-6` of the distance to the
 //! nearer end and no finer than a few ulps of `x`. The levels of
@@ -519,10 +522,22 @@ impl ScalarMap {
         if !(dxds > 0.0 && dxds.is_finite()) {
             return xtol;
         }
-        let ulps = 4.0 * f64::EPSILON * self.x(s).abs() / dxds;
+        let ulps = self.s_ulps(s);
         // `dx/ds ≤ (hi - lo)/4`: in the middle of the range this is
         // `xtol` in `s`, the tolerance the solver always had there.
         (0.25 * xtol / dxds).min(S_REL_TOL).max(ulps).max(xtol)
+    }
+
+    /// Four ulps of `x(s)` in the map's variable, `4ε|x|/(dx/ds)`: a
+    /// step in `s` shorter than about this may leave `x` unchanged (within
+    /// `1e-10` of the upper end of a unit range it is more than `1e-6`);
+    /// 0 (no floor) where `dx/ds` is not a positive number.
+    pub(super) fn s_ulps(&self, s: f64) -> f64 {
+        let dxds = self.dx_ds(s);
+        if !(dxds > 0.0 && dxds.is_finite()) {
+            return 0.0;
+        }
+        4.0 * f64::EPSILON * self.x(s).abs() / dxds
     }
 
     /// Whether `x(s)` is within `1e-8` (relative) of an end.
@@ -656,7 +671,23 @@ pub(super) fn find_scalar(
             if step == 0.0 {
                 step = 1e-12;
             }
+            // A first step within a few ulps of `x` would land on `x(s0)`
+            // itself (near `c → 1`, where one ulp of `c` is more than the
+            // root moves from level to level), and the secant would stop
+            // without a slope and fall back to a bracket and Brent (4–7
+            // discretisations instead of 2). So it is at least the
+            // tolerance there, which the map's ulps set: then the step
+            // brackets the root and the secant stops after that one
+            // evaluation. Elsewhere the step is as predicted (lengthening
+            // it to the tolerance near `c → 0`, where the condition is
+            // noisy on that scale, made the secant chase the noise).
             let step = step.clamp(-0.5, 0.5);
+            let ulps = map.s_ulps(s0);
+            let step = if step.abs() < ulps {
+                stol.max(ulps).copysign(step)
+            } else {
+                step
+            };
             match secant(&mut f, s0, f0, step, stol, 12, (-S_LIMIT_LO, S_LIMIT))? {
                 Some(r) => r,
                 None => {
@@ -740,7 +771,10 @@ pub(super) fn find_scalar(
                 }));
                 return Err(at_end(e, name, &evals.borrow()));
             };
-            let h = 1e-6;
+            // A step the map's variable resolves: within `1e-10` of an end
+            // of a unit range one ulp of `x` is more than `1e-6` in `s`,
+            // and `x(s + 1e-6)` would be `x(s)` itself (slope 0).
+            let h = map.s_ulps(s).max(1e-6);
             let slope = (f(s + h)? - f(s)?) / h;
             (s, slope)
         }
@@ -1141,6 +1175,36 @@ mod tests {
             hi: f64::INFINITY,
         };
         assert!((half.x(half.s(0.3)) - 0.3).abs() < 1e-15);
+    }
+
+    #[test]
+    fn a_step_of_the_maps_ulps_moves_x_where_a_millionth_does_not() {
+        // Near full stick (ν = 0.4, μ = 4.64: 1 − c = 2.9e-11; the
+        // resolved limit s = S_LIMIT) a step of 1e-6 in s leaves c where
+        // it is, so a slope from it is 0 and a secant from it stops: the
+        // level-0 slope and the warm start's first step use at least
+        // `s_ulps`, which moves c by a few ulps and no more.
+        let m = ScalarMap { lo: 0.0, hi: 1.0 };
+        let mut stuck = 0;
+        for s in [m.s(1.0 - 2.9e-11), m.s(1.0 - 1.6e-12), S_LIMIT] {
+            let x = m.x(s);
+            stuck += usize::from(m.x(s + 1e-6) == x);
+            let h = m.s_ulps(s).max(1e-6);
+            for step in [h, -h] {
+                let moved = (m.x(s + step) - x).abs() / (f64::EPSILON / 2.0);
+                assert!((1.0..=16.0).contains(&moved), "s = {s}: {moved} ulps");
+            }
+            // And it is the tolerance there: the iterations stop at it.
+            assert_eq!(m.s_tolerance(s, 5e-13), m.s_ulps(s));
+        }
+        assert!(stuck >= 2, "the case the floor is for did not occur");
+        // Elsewhere it is far below the steps the solver takes (1e-6), so
+        // the warm start's predicted step is left as it is.
+        for x in [1e-10, 2e-8, 0.5, 1.0 - 4.3e-7] {
+            assert!(m.s_ulps(m.s(x)) < 1e-8, "{x}");
+        }
+        // At an end (dx/ds = 0) there is no floor.
+        assert_eq!(m.s_ulps(800.0), 0.0);
     }
 
     #[test]
