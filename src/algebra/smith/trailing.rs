@@ -289,15 +289,17 @@ fn trailing_with(
     } else {
         None
     };
-    // CRT idempotents: e_loc ≡ 1 (c_loc), ≡ 0 (c_gen); e_gen = 1 − e_loc.
-    let (e_loc, e_gen) = if gen_part {
-        let s = r.inverse_mod(&c_gen, &c_loc)?;
-        let e = r.mul(&c_gen, &s);
-        (e.clone(), r.sub(&r.one(), &e))
+    // The last entry by CRT modulo t_last = p_last·c_gen (p_last the local
+    // pivot, coprime to c_gen): x = far + c_gen·y with
+    // y ≡ (h_loc − far)·c_gen⁻¹ (mod p_last), deg y < deg p_last, so x is
+    // already reduced modulo t_last.
+    let p_last = &h_loc[n - 1][n - 1];
+    let gen_inv = if gen_part && p_last.degree()? > 0 {
+        Some(r.inverse_mod(&c_gen, p_last)?)
     } else {
-        (r.one(), r.zero())
+        None
     };
-    let t_last = r.mul(&h_loc[n - 1][n - 1], &c_gen);
+    let t_last = r.mul(p_last, &c_gen);
     let mut h = Matrix::zeros(r.clone(), n, n);
     for (i, hl) in h_loc.iter().enumerate().take(n - 1) {
         let d = if i < first { r.one() } else { hl[i].clone() };
@@ -314,8 +316,16 @@ fn trailing_with(
             }
             None => r.zero(),
         };
-        let x = r.add(&r.mul(&hl[n - 1], &e_loc), &r.mul(&far, &e_gen));
-        h.set(i, n - 1, r.rem(&x, &t_last));
+        let x = match &gen_inv {
+            Some(s) => {
+                let diff = r.rem(&r.sub(&hl[n - 1], &far), p_last);
+                let y = r.rem(&r.mul(&diff, s), p_last);
+                r.add(&far, &r.mul(&c_gen, &y))
+            }
+            None if gen_part => far,
+            None => r.rem(&hl[n - 1], &t_last),
+        };
+        h.set(i, n - 1, x);
         for t in mid {
             h.set(i, t, hl[t].clone());
         }
