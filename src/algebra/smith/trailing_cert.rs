@@ -165,3 +165,71 @@ pub fn certify_transforms(a: &Matrix<QxRing>, s: &SmallDecomposition) -> Certifi
     );
     cert
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::algebra::qx::QPoly;
+    use crate::algebra::smith::nonsingular::{FastPath, try_fast};
+    use crate::algebra::smith::trailing::{tests::planted, trailing_hermite};
+    use num_bigint::BigInt;
+
+    fn p(c: &[i64]) -> QPoly {
+        QPoly::from_ints(c.iter().map(|&x| BigInt::from(x)).collect())
+    }
+
+    fn decomposition(n: usize) -> (Matrix<QxRing>, SmallDecomposition) {
+        let a = planted(n, &[p(&[-1, 1]), p(&[-2, 1, 1])], 5);
+        let Some(FastPath::NoHermite { c, b }) = try_fast(&a, u64::MAX) else {
+            panic!("two non-trivial factors");
+        };
+        let dec = trailing_hermite(&a, &c, &b).expect("the trailing route applies");
+        (a, dec)
+    }
+
+    fn failing(cert: &Certificate) -> Vec<String> {
+        cert.failures().map(|c| c.property.clone()).collect()
+    }
+
+    #[test]
+    fn the_route_is_certified_and_tampering_is_caught() {
+        let (a, dec) = decomposition(6);
+        let r = a.ring.clone();
+        assert!(certify_transforms(&a, &dec).verified());
+        // A changed entry of U breaks U·A·V = D.
+        let mut bad = dec.clone_parts();
+        let e = r.add(bad.u.get(0, 0), &r.one());
+        bad.u.set(0, 0, e);
+        assert!(failing(&certify_transforms(&a, &bad)).contains(&"U·A·V = D".to_string()));
+        // A V⁻¹ that is not V's inverse.
+        let mut bad = dec.clone_parts();
+        let e = r.add(bad.v_inv.get(0, 1), &r.one());
+        bad.v_inv.set(0, 1, e);
+        assert!(failing(&certify_transforms(&a, &bad)).contains(&"V unimodular".to_string()));
+        // x·U with x·D: U·A·V = D still holds and D is still a chain, so
+        // only the degree argument rejects it (det U = x^n).
+        let mut bad = dec.clone_parts();
+        let x = p(&[0, 1]);
+        for i in 0..6 {
+            for j in 0..6 {
+                let e = r.mul(bad.u.get(i, j), &x);
+                bad.u.set(i, j, e);
+            }
+            let e = r.mul(bad.d.get(i, i), &x);
+            bad.d.set(i, i, e);
+        }
+        let cert = certify_transforms(&a, &bad);
+        assert_eq!(failing(&cert), vec!["U unimodular".to_string()]);
+    }
+
+    impl SmallDecomposition {
+        fn clone_parts(&self) -> SmallDecomposition {
+            SmallDecomposition {
+                d: self.d.clone(),
+                u: self.u.clone(),
+                v: self.v.clone(),
+                v_inv: self.v_inv.clone(),
+            }
+        }
+    }
+}
