@@ -140,5 +140,26 @@ fn small(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, peers, seed, scale, large, small);
+/// The trailing Hermite route at 8×8 (issue 15's B·diag(chain)·C grid,
+/// `benches/peers_grid.py build`, seed 1): two factors (x − 1,
+/// (x − 1)(x + 2)) and three (…, (x − 1)(x + 2)x), B of degree 1–3, with
+/// transforms and the certificate, as `lambdamat smith` runs them.
+fn trailing(c: &mut Criterion) {
+    let mut g = c.benchmark_group("smith_trailing_8");
+    g.sample_size(20);
+    for shape in ["bdc2", "bdc3"] {
+        for d in 1..=3 {
+            let case = format!("{shape}_8_{d}");
+            let a = first_matrix(&format!("benches/data/trailing_{case}.lmx"));
+            g.bench_function(&case, |b| {
+                b.iter(|| {
+                    smith_report("A", black_box(&a), &SmithOptions::default()).expect("certified")
+                })
+            });
+        }
+    }
+    g.finish();
+}
+
+criterion_group!(benches, peers, seed, scale, large, small, trailing);
 criterion_main!(benches);

@@ -140,8 +140,6 @@ fn degree_from_values(f: Fp, values: &[u64]) -> Option<usize> {
 
 /// Step 3: `(deg det A, p)`.
 fn det_degree(a: &Matrix<QxRing>, b: &Matrix<QxRing>, c: &QPoly) -> Option<(usize, u64)> {
-    let n = a.rows();
-    let bound = degree_bound(a);
     let lc = c.num().last()?;
     let p = modular::primes().find(|&p| {
         let f = Fp::new(p);
@@ -152,10 +150,23 @@ fn det_degree(a: &Matrix<QxRing>, b: &Matrix<QxRing>, c: &QPoly) -> Option<(usiz
                 .chain(b.entries())
                 .all(|e| f.reduce(e.den()) != 0)
     })?;
-    if bound as u64 + 1 >= p {
+    Some((det_degree_mod(a, p)?, p))
+}
+
+/// The degree of `det A mod p` (`None` when it is zero, or when p divides
+/// a denominator of A or is too small for the values at `0, …, N`, N
+/// [`degree_bound`]): a lower bound on `deg det A`, since reduction mod p
+/// is a ring map and cannot raise a degree.
+pub(super) fn det_degree_mod(a: &Matrix<QxRing>, p: u64) -> Option<usize> {
+    let n = a.rows();
+    let bound = degree_bound(a);
+    if bound as u64 + 1 >= p || a.cols() != n {
         return None;
     }
     let f = Fp::new(p);
+    if a.entries().iter().any(|e| f.reduce(e.den()) == 0) {
+        return None;
+    }
     let img: Vec<Vec<u64>> = a
         .entries()
         .iter()
@@ -172,7 +183,7 @@ fn det_degree(a: &Matrix<QxRing>, b: &Matrix<QxRing>, c: &QPoly) -> Option<(usiz
         }
         values.push(super::minors_cert::det_mod(f, &mut m, n));
     }
-    Some((degree_from_values(f, &values)?, p))
+    degree_from_values(f, &values)
 }
 
 /// Certifies the invariant factors of a square nonsingular A over Q[x]

@@ -25,6 +25,8 @@ pub mod nonsingular;
 pub mod several;
 pub mod small;
 pub mod trailing;
+pub mod trailing_cert;
+pub mod trailing_mod;
 pub mod two_by_two;
 
 use crate::algebra::matrix::Matrix;

@@ -465,6 +465,45 @@ fn degree_certified_report(
     ))
 }
 
+/// The trailing (Hermite-basis) route's transforms
+/// ([`super::trailing::trailing_hermite`]) certified by
+/// [`super::trailing_cert::certify_transforms`] (no `U⁻¹`); `None` when
+/// the route declines or its certificate fails (the caller falls back to
+/// the elimination, certified the usual way).
+#[allow(clippy::too_many_arguments)]
+fn trailing_report(
+    name: &str,
+    a_poly: &Matrix<PolyRing>,
+    au: &Matrix<QxRing>,
+    c: &QPoly,
+    b: &Matrix<QxRing>,
+    ring: &str,
+    note: &str,
+    opts: &SmithOptions,
+) -> Option<SmithReport> {
+    opts.progress
+        .phase("Hermite basis from A·B = c·I: rank-one part and HNF modulo the repeated part, Smith of the trailing block");
+    let dec = super::trailing::trailing_hermite(au, c, b)?;
+    opts.progress
+        .phase("certifying U·A·V = D, V·V⁻¹ = I, det U constant from degrees");
+    let cert = super::trailing_cert::certify_transforms(au, &dec);
+    if !cert.verified() {
+        return None;
+    }
+    opts.progress.phase("formatting the report");
+    Some(transforms_report(
+        name,
+        a_poly,
+        [&dec.d, &dec.u, &dec.v],
+        cert,
+        TRAILING_ALGORITHM,
+        Mode::OneSymbol,
+        ring.to_string(),
+        note.to_string(),
+        opts,
+    ))
+}
+
 #[allow(clippy::too_many_arguments)]
 fn generic_report<R: crate::algebra::ring::EuclideanDomain>(
     name: &str,
@@ -594,10 +633,10 @@ fn one_symbol(
             // The form-only certificate declined (e.g. a trailing block
             // beyond its size): the Hermite-basis route with (large)
             // transforms, far cheaper than the elimination.
-            match super::trailing::trailing_hermite(&au, &c, &b) {
-                Some(d) => (d, TRAILING_ALGORITHM),
-                None => (SmithDecomposition::new(&au), ELIMINATION_ALGORITHM),
+            if let Some(report) = trailing_report(name, a, &au, &c, &b, &ring, &note, opts) {
+                return Ok(report);
             }
+            (SmithDecomposition::new(&au), ELIMINATION_ALGORITHM)
         }
         Some(FastPath::NoHermite { c, b }) => {
             let big = super::hermite_cert::degree_bound(&au) > NO_HERMITE_TRANSFORM_DEGREE;
@@ -617,22 +656,8 @@ fn one_symbol(
             {
                 return Ok(report);
             }
-            opts.progress
-                .phase("Hermite basis from A·B = c·I: rank-one part and HNF modulo the repeated part, Smith of the trailing block");
-            if let Some(d) = super::trailing::trailing_hermite(&au, &c, &b) {
-                return Ok(generic_report(
-                    name,
-                    a,
-                    &au,
-                    d,
-                    TRAILING_ALGORITHM,
-                    Mode::OneSymbol,
-                    ring,
-                    note,
-                    opts,
-                    &super::certify::ClearedQx,
-                )?
-                .0);
+            if let Some(report) = trailing_report(name, a, &au, &c, &b, &ring, &note, opts) {
+                return Ok(report);
             }
             if au.rows() >= TWO_FACTOR_MIN
                 && let Some(report) = two_factor_report(

@@ -24,6 +24,7 @@
 //! or print.
 
 use super::SmithDecomposition;
+use super::small::SmallDecomposition;
 use crate::algebra::intgcd;
 use crate::algebra::matrix::Matrix;
 use crate::algebra::qx::{QPoly, QxRing};
@@ -230,7 +231,18 @@ pub fn trailing_hermite(
     a: &Matrix<QxRing>,
     c: &QPoly,
     b: &Matrix<QxRing>,
-) -> Option<SmithDecomposition<QxRing>> {
+) -> Option<SmallDecomposition> {
+    trailing_with(a, c, b, true).or_else(|| trailing_with(a, c, b, false))
+}
+
+/// [`trailing_hermite`] with the local Hermite basis from modular images
+/// ([`super::trailing_mod`]) or by elimination over Q.
+fn trailing_with(
+    a: &Matrix<QxRing>,
+    c: &QPoly,
+    b: &Matrix<QxRing>,
+    modular: bool,
+) -> Option<SmallDecomposition> {
     let r = a.ring.clone();
     let n = a.rows();
     if n < 3 || a.cols() != n || c.is_zero() || c.degree() == Some(0) {
@@ -249,7 +261,12 @@ pub fn trailing_hermite(
     if c_loc.degree()? > MAX_LOCAL_DEGREE {
         return None;
     }
-    let (h_loc, first) = local_hermite(a, &c_loc)?;
+    let (h_loc, first) = if modular {
+        let rows: Vec<Vec<QPoly>> = (0..n).map(|i| a.row(i).to_vec()).collect();
+        super::trailing_mod::local_hermite_modular(&rows, &c_loc)?
+    } else {
+        local_hermite(a, &c_loc)?
+    };
     let k = n - first;
     if !(2..=MAX_TRAILING).contains(&k) {
         return None;
@@ -272,15 +289,17 @@ pub fn trailing_hermite(
     } else {
         None
     };
-    // CRT idempotents: e_loc ≡ 1 (c_loc), ≡ 0 (c_gen); e_gen = 1 − e_loc.
-    let (e_loc, e_gen) = if gen_part {
-        let s = r.inverse_mod(&c_gen, &c_loc)?;
-        let e = r.mul(&c_gen, &s);
-        (e.clone(), r.sub(&r.one(), &e))
+    // The last entry by CRT modulo t_last = p_last·c_gen (p_last the local
+    // pivot, coprime to c_gen): x = far + c_gen·y with
+    // y ≡ (h_loc − far)·c_gen⁻¹ (mod p_last), deg y < deg p_last, so x is
+    // already reduced modulo t_last.
+    let p_last = &h_loc[n - 1][n - 1];
+    let gen_inv = if gen_part && p_last.degree()? > 0 {
+        Some(r.inverse_mod(&c_gen, p_last)?)
     } else {
-        (r.one(), r.zero())
+        None
     };
-    let t_last = r.mul(&h_loc[n - 1][n - 1], &c_gen);
+    let t_last = r.mul(p_last, &c_gen);
     let mut h = Matrix::zeros(r.clone(), n, n);
     for (i, hl) in h_loc.iter().enumerate().take(n - 1) {
         let d = if i < first { r.one() } else { hl[i].clone() };
@@ -297,29 +316,22 @@ pub fn trailing_hermite(
             }
             None => r.zero(),
         };
-        let x = r.add(&r.mul(&hl[n - 1], &e_loc), &r.mul(&far, &e_gen));
-        h.set(i, n - 1, r.rem(&x, &t_last));
+        let x = match &gen_inv {
+            Some(s) => {
+                let diff = r.rem(&r.sub(&hl[n - 1], &far), p_last);
+                let y = r.rem(&r.mul(&diff, s), p_last);
+                r.add(&far, &r.mul(&c_gen, &y))
+            }
+            None if gen_part => far,
+            None => r.rem(&hl[n - 1], &t_last),
+        };
+        h.set(i, n - 1, x);
         for t in mid {
             h.set(i, t, hl[t].clone());
         }
         h.set(i, i, d);
     }
     h.set(n - 1, n - 1, t_last);
-    // W = H·B/c, exactly.
-    let mut w = Matrix::zeros(r.clone(), n, n);
-    for i in 0..n {
-        let support: Vec<usize> = std::iter::once(i).chain(first.max(i + 1)..n).collect();
-        for col in 0..n {
-            let mut acc = r.zero();
-            for &t in &support {
-                let ht = h.get(i, t);
-                if !ht.is_zero() {
-                    acc = r.add(&acc, &r.mul(ht, b.get(t, col)));
-                }
-            }
-            w.set(i, col, super::two_by_two::exact_quotient(&r, &acc, c)?);
-        }
-    }
     // Smith form of the trailing block T.
     let idx: Vec<usize> = (first..n).collect();
     let t = h.submatrix(&idx, &idx);
@@ -327,27 +339,106 @@ pub fn trailing_hermite(
     if st.d.diagonal().iter().any(|e| e.is_zero()) {
         return None;
     }
-    // U = diag(I, U_T)·W.
-    let mut u_mat = w.clone();
-    for (s, &i) in idx.iter().enumerate() {
-        for col in 0..n {
-            let e = r.dot(&mut (0..k).map(|q| (st.u.get(s, q), w.get(first + q, col))));
-            u_mat.set(i, col, e);
-        }
+    // W = H·B/c exactly, over Z: row i is M_i/(L_i·cont c) with L_i the
+    // lcm of the row's denominators and M_i = (Σ_t L_i·H_it·B_t)/pp(c),
+    // an integer division by Gauss's lemma (B is integral).
+    if !c.den().is_one() || b.entries().iter().any(|e| !e.den().is_one()) {
+        return None;
     }
-    // V = [[I, −h·V_T], [0, V_T]], V⁻¹ = [[I, h], [0, V_T⁻¹]].
-    let mut v = Matrix::identity(r.clone(), n);
-    let mut v_inv = Matrix::identity(r.clone(), n);
+    let cont = c
+        .num()
+        .iter()
+        .fold(BigInt::zero(), |g, x| intgcd::gcd(&g, x));
+    let pp: Vec<BigInt> = c.num().iter().map(|x| x / &cont).collect();
+    let mut rows: Vec<(Vec<QPoly>, Q)> = Vec::with_capacity(n);
     for i in 0..n {
+        let support: Vec<usize> = std::iter::once(i)
+            .chain(first.max(i + 1)..n)
+            .filter(|&t| !h.get(i, t).is_zero())
+            .collect();
+        let l = support
+            .iter()
+            .fold(BigInt::one(), |l, &t| intgcd::lcm(&l, h.get(i, t).den()));
+        let scaled: Vec<Vec<BigInt>> = support
+            .iter()
+            .map(|&t| {
+                let e = h.get(i, t);
+                let f = &l / e.den();
+                e.num().iter().map(|x| x * &f).collect()
+            })
+            .collect();
+        let mut m_row = Vec::with_capacity(n);
+        for col in 0..n {
+            let mut acc: Vec<BigInt> = Vec::new();
+            for (x, &t) in scaled.iter().zip(&support) {
+                add_product(&mut acc, x, b.get(t, col).num());
+            }
+            while acc.last().is_some_and(|x| x.is_zero()) {
+                acc.pop();
+            }
+            m_row.push(crate::algebra::modgcd::int_div_exact(&acc, &pp)?);
+        }
+        // The row's content g > 0: U_i = M_i/g and λ_i = L_i·cont/g.
+        let g = m_row
+            .iter()
+            .flatten()
+            .fold(BigInt::zero(), |g, x| intgcd::gcd(&g, x));
+        if g.is_zero() {
+            return None;
+        }
+        let prim: Vec<QPoly> = m_row
+            .into_iter()
+            .map(|p| QPoly::from_ints(p.into_iter().map(|x| x / &g).collect()))
+            .collect();
+        rows.push((prim, Q::new(&l * &cont, g)));
+    }
+    // U = diag(I, U_T)·W: rows before `first` are W's, made primitive
+    // (U_i = λ_i·W_i); the trailing rows are combined from W's rows
+    // (W_i = U_i/λ_i) and made primitive by their own scale.
+    let mut u_mat = Matrix::zeros(r.clone(), n, n);
+    let mut lambda: Vec<Q> = Vec::with_capacity(n);
+    for (i, (prim, lam)) in rows.iter().enumerate().take(first) {
+        for (col, e) in prim.iter().enumerate() {
+            u_mat.set(i, col, e.clone());
+        }
+        lambda.push(lam.clone());
+    }
+    let w_t: Vec<Vec<QPoly>> = rows[first..]
+        .iter()
+        .map(|(prim, lam)| {
+            let inv = lam.recip();
+            prim.iter().map(|e| e.scale(&inv)).collect()
+        })
+        .collect();
+    for s in 0..k {
+        let row: Vec<QPoly> = (0..n)
+            .map(|col| r.dot(&mut (0..k).map(|q| (st.u.get(s, q), &w_t[q][col]))))
+            .collect();
+        let lam = primitive_scale(&row).unwrap_or_else(|| Q::from_integer(BigInt::one()));
+        for (col, e) in row.iter().enumerate() {
+            u_mat.set(first + s, col, e.scale(&lam));
+        }
+        lambda.push(lam);
+    }
+    // V = [[I, −h·V_T], [0, V_T]]·Λ⁻¹, V⁻¹ = Λ·[[I, h], [0, V_T⁻¹]].
+    let mut v = Matrix::zeros(r.clone(), n, n);
+    let mut v_inv = Matrix::zeros(r.clone(), n, n);
+    for i in 0..n {
+        let (lam, inv) = (&lambda[i], lambda[i].recip());
+        if i < first {
+            v.set(i, i, QPoly::constant(&inv));
+            v_inv.set(i, i, QPoly::constant(lam));
+        }
         for s in 0..k {
+            let inv_s = lambda[first + s].recip();
             if i < first {
                 let e = r.dot(&mut (0..k).map(|q| (h.get(i, first + q), st.v.get(q, s))));
-                v.set(i, first + s, r.neg(&e));
-                v_inv.set(i, first + s, h.get(i, first + s).clone());
+                v.set(i, first + s, r.neg(&e).scale(&inv_s));
+                v_inv.set(i, first + s, h.get(i, first + s).scale(lam));
             } else {
                 let q = i - first;
-                v.set(i, first + s, st.v.get(q, s).clone());
-                v_inv.set(i, first + s, st.v_inv.get(q, s).clone());
+                v.set(i, first + s, st.v.get(q, s).scale(&inv_s));
+                v_inv.set(i, first + s, st.v_inv.get(q, s).scale(lam));
             }
         }
     }
@@ -355,25 +446,38 @@ pub fn trailing_hermite(
     for s in 0..k {
         d.set(first + s, first + s, st.d.get(s, s).clone());
     }
-    // U⁻¹ = A·V·D⁻¹: A's first columns, then (A·v_j)/d_j.
-    let mut u_inv = a.clone();
-    for s in 0..k {
-        let j = first + s;
-        let dj = d.get(j, j).clone();
-        for i in 0..n {
-            let e = r.dot(&mut (0..n).map(|q| (a.get(i, q), v.get(q, j))));
-            u_inv.set(i, j, super::two_by_two::exact_quotient(&r, &e, &dj)?);
-        }
-    }
-    let mut dec = SmithDecomposition {
+    Some(SmallDecomposition {
         d,
         u: u_mat,
         v,
-        u_inv,
         v_inv,
-    };
-    integral_rows(&mut dec);
-    Some(dec)
+    })
+}
+
+/// `acc += x·y` over Z[x] (schoolbook, or Kronecker substitution where
+/// [`crate::algebra::qx::kronecker_pays`]).
+fn add_product(acc: &mut Vec<BigInt>, x: &[BigInt], y: &[BigInt]) {
+    if x.is_empty() || y.is_empty() {
+        return;
+    }
+    let len = x.len() + y.len() - 1;
+    if acc.len() < len {
+        acc.resize(len, BigInt::zero());
+    }
+    if crate::algebra::qx::kronecker_pays(x, y) {
+        for (s, c) in acc.iter_mut().zip(crate::algebra::qx::conv(x, y)) {
+            *s += c;
+        }
+        return;
+    }
+    for (i, p) in x.iter().enumerate() {
+        if p.is_zero() {
+            continue;
+        }
+        for (j, q) in y.iter().enumerate() {
+            acc[i + j] += p * q;
+        }
+    }
 }
 
 /// Scales each row i of U by the constant λ_i that makes it a primitive
@@ -461,7 +565,7 @@ pub(super) mod tests {
         bm.mul(&dm).and_then(|x| x.mul(&cm)).expect("shapes")
     }
 
-    fn run(a: &Matrix<QxRing>) -> Option<SmithDecomposition<QxRing>> {
+    fn run(a: &Matrix<QxRing>) -> Option<SmallDecomposition> {
         match super::super::nonsingular::try_fast(a, u64::MAX)? {
             super::super::nonsingular::FastPath::NoHermite { c, b } => trailing_hermite(a, &c, &b),
             _ => None,
@@ -491,8 +595,29 @@ pub(super) mod tests {
         for (seed, chain) in chains.iter().enumerate() {
             let a = planted(7, chain, 11 + seed as u64);
             let dec = run(&a).expect("the trailing route applies");
-            assert!(dec.certify(&a).verified());
-            let inv = dec.invariant_factors();
+            let cert = super::super::trailing_cert::certify_transforms(&a, &dec);
+            assert!(cert.verified(), "{:?}", cert.failures().collect::<Vec<_>>());
+            // Independently: U⁻¹ = A·V·D⁻¹ is polynomial and the generic
+            // certificate (U·A·V = D, U·U⁻¹ = I, V·V⁻¹ = I) holds.
+            let av = a.mul(&dec.v).expect("shapes");
+            let mut u_inv = av.clone();
+            for j in 0..7 {
+                for i in 0..7 {
+                    let q = r
+                        .div_exact(av.get(i, j), dec.d.get(j, j))
+                        .expect("divisible");
+                    u_inv.set(i, j, q);
+                }
+            }
+            let full = SmithDecomposition {
+                d: dec.d.clone(),
+                u: dec.u.clone(),
+                v: dec.v.clone(),
+                u_inv,
+                v_inv: dec.v_inv.clone(),
+            };
+            assert!(full.certify(&a).verified());
+            let inv = full.invariant_factors();
             for (s, f) in chain.iter().take(chain.len() - 1).enumerate() {
                 assert_eq!(inv[7 - chain.len() + s], r.normalize(f), "{inv:?}");
             }
