@@ -6,7 +6,7 @@
 
 use num_bigint::BigInt;
 use num_integer::Integer;
-use num_traits::{One, Signed, ToPrimitive, Zero};
+use num_traits::{One, Signed, Zero};
 
 /// The prime field Z_p, `p < 2^62` odd, elements in `0..p` (products by
 /// Montgomery reduction: two REDC steps instead of a 128-bit division).
@@ -103,9 +103,15 @@ impl Fp {
     }
     /// The residue of a big integer.
     pub fn reduce(self, a: &BigInt) -> u64 {
-        a.mod_floor(&BigInt::from(self.p))
-            .to_u64()
-            .expect("residue below p")
+        // Horner on the 64-bit digits from the top: acc·2^64 is
+        // `mul_pre(r2, acc)` (r2 = 2^128 mod p is 2^64 in Montgomery form),
+        // so no allocation and no 128-bit division.
+        let r = a
+            .magnitude()
+            .iter_u64_digits()
+            .rev()
+            .fold(0u64, |acc, d| self.add(self.mul_pre(self.r2, acc), d % self.p));
+        if a.is_negative() { self.neg(r) } else { r }
     }
 }
 
@@ -451,6 +457,27 @@ mod tests {
                 assert_eq!(f.inv(a), f.pow(a % p, p - 2));
             }
         }
+    }
+
+    #[test]
+    fn residues_of_big_integers_agree_with_division() {
+        use num_integer::Integer;
+        use num_traits::ToPrimitive;
+        let mut checked = 0;
+        for p in primes().take(3).chain([3, 5, 1_000_000_007]) {
+            let f = Fp::new(p);
+            let mut x = BigInt::from(0x1234_5678_9abc_def1u64);
+            for k in 0..40 {
+                for a in [x.clone(), -x.clone(), x.clone() + 1, BigInt::from(k)] {
+                    let want = a.mod_floor(&BigInt::from(p)).to_u64().expect("< p");
+                    assert_eq!(f.reduce(&a), want, "p = {p}, a = {a}");
+                    checked += 1;
+                }
+                // Grow by about 61 bits, with all-ones and zero digits.
+                x = x * BigInt::from(0x1fff_ffff_ffff_fffbu64) + BigInt::from(u64::MAX) * k;
+            }
+        }
+        assert_eq!(checked, 6 * 40 * 4);
     }
 
     #[test]

@@ -75,15 +75,9 @@ fn reduce(f: Fp, p: &[BigInt]) -> UP {
     modular::trim(p.iter().map(|c| reduce_int(f, c)).collect())
 }
 
-/// `c mod p` without allocating (Horner on the 64-bit digits).
+/// `c mod p` without allocating.
 fn reduce_int(f: Fp, c: &BigInt) -> u64 {
-    let m = f.p as u128;
-    let r = c
-        .magnitude()
-        .iter_u64_digits()
-        .rev()
-        .fold(0u128, |r, d| ((r << 64) | d as u128) % m) as u64;
-    if c.is_negative() { f.neg(r) } else { r }
+    f.reduce(c)
 }
 
 /// Row degrees of Ã and whether the matrix of the rows' leading
@@ -272,8 +266,12 @@ fn content_split(v: &[BigInt]) -> (BigInt, Vec<BigInt>) {
 
 /// One prime's images of the rows `N_i = (den_i·adj_i + num_i·adj_n)·Δ /
 /// pp(det)` (i < n−1), each entry padded to `wlen`, flattened per row;
-/// `None` when the prime is unusable or a division leaves a remainder
-/// (then h is wrong).
+/// `None` when the prime is unusable or a quotient does not fit. With
+/// `full`, the whole products are formed and a remainder gives `None`
+/// (then h is wrong); otherwise only the quotients, from the products'
+/// coefficients of index ≥ deg pp (which determine an exact quotient):
+/// about half the work, the remainders left to the `full` prime and, as
+/// always, to the certificate.
 #[allow(clippy::too_many_arguments)]
 fn row_image(
     f: Fp,
@@ -282,6 +280,7 @@ fn row_image(
     delta: &[BigInt],
     h: &[(Vec<BigInt>, BigInt)],
     wlen: usize,
+    full: bool,
 ) -> Option<Vec<Vec<u64>>> {
     let n = adj.len();
     let ppp = reduce(f, pp);
@@ -289,6 +288,7 @@ fn row_image(
         return None;
     }
     let np = ppp.len() - 1;
+    let lo = if full { 0 } else { np };
     let inv_lc = f.prep(f.inv(ppp[np]));
     let last: Vec<UP> = adj[n - 1].iter().map(|p| reduce(f, p)).collect();
     let dl: Vec<u64> = delta.iter().map(|d| reduce_int(f, d)).collect();
@@ -304,51 +304,49 @@ fn row_image(
         let nump = reduce(f, num);
         let mut out = vec![0u64; n * wlen];
         for (k, (bk, lk)) in row.iter().zip(&last).enumerate() {
-            // x = den·adj_ik + num·adj_nk (mod p), products summed in u128.
+            // x = den·adj_ik + num·adj_nk (mod p), coefficients lo.., the
+            // products summed in u128.
             let len = bk.len().max((nump.len() + lk.len()).saturating_sub(1));
+            if len <= lo {
+                continue;
+            }
             acc.clear();
-            acc.resize(len, 0);
-            for (t, c) in bk.iter().enumerate() {
-                acc[t] = reduce_int(f, c) as u128 * denp as u128;
+            acc.resize(len - lo, 0);
+            for (t, c) in bk.iter().enumerate().skip(lo) {
+                acc[t - lo] = reduce_int(f, c) as u128 * denp as u128;
             }
             for (t, &y) in nump.iter().enumerate() {
                 if y == 0 {
                     continue;
                 }
-                for (s, &z) in lk.iter().enumerate() {
-                    let v = acc[t + s] + y as u128 * z as u128;
-                    acc[t + s] = if v >= p128 << 64 { v % p128 } else { v };
+                for (s, &z) in lk.iter().enumerate().skip(lo.saturating_sub(t)) {
+                    let i = t + s - lo;
+                    let v = acc[i] + y as u128 * z as u128;
+                    acc[i] = if v >= p128 << 64 { v % p128 } else { v };
                 }
             }
             x.clear();
             x.extend(acc.iter().map(|&v| (v % p128) as u64));
-            while x.last() == Some(&0) {
-                x.pop();
-            }
-            // Exact division by pp(c) mod p.
-            if x.len() <= np {
-                if !x.is_empty() {
-                    return None;
-                }
-                continue;
-            }
-            let qlen = x.len() - np;
-            if qlen > wlen {
-                return None;
-            }
+            // Exact division by pp(c) mod p, from the top: x[i] holds
+            // the coefficient of index i + lo.
+            let qlen = len.saturating_sub(np);
             let dm = f.prep(dl[k]);
             for t in (0..qlen).rev() {
-                let q = f.mul_pre(inv_lc, x[t + np]);
+                let q = f.mul_pre(inv_lc, x[t + np - lo]);
                 if q == 0 {
                     continue;
                 }
+                if t >= wlen {
+                    return None;
+                }
                 let qm = f.prep(q);
-                for (j, &c) in ppp.iter().enumerate() {
-                    x[t + j] = f.sub(x[t + j], f.mul_pre(qm, c));
+                for (j, &c) in ppp.iter().enumerate().skip(lo.saturating_sub(t)) {
+                    let i = t + j - lo;
+                    x[i] = f.sub(x[i], f.mul_pre(qm, c));
                 }
                 out[k * wlen + t] = f.mul_pre(dm, q);
             }
-            if x[..np].iter().any(|&c| c != 0) {
+            if full && x[..np.min(x.len())].iter().any(|&c| c != 0) {
                 return None;
             }
         }
@@ -380,7 +378,7 @@ fn lift_rows(
     let start = (hbits as usize).div_ceil(61).max(1);
     for p in modular::primes() {
         let f = Fp::new(p);
-        let Some(img) = row_image(f, pp, adj, delta, h, wlen) else {
+        let Some(img) = row_image(f, pp, adj, delta, h, wlen, fps.is_empty()) else {
             unlucky += 1;
             if unlucky > 3 {
                 return None;
@@ -457,6 +455,36 @@ pub fn hermite_from_adjugate(
     det: &[BigInt],
     adj: &[Vec<IntPoly>],
 ) -> Option<super::SmithDecomposition<QxRing>> {
+    small_parts(a, det, adj, delta).and_then(|p| p.into_decomposition(at, delta))
+}
+
+/// [`hermite_from_adjugate`]'s result before `U⁻¹` is built: the parts
+/// [`certify_small`] needs, and what `U⁻¹` is built from when that
+/// certificate does not apply ([`SmallParts::into_decomposition`]).
+pub struct SmallParts {
+    /// D, U, V, V⁻¹.
+    pub dec: SmallDecomposition,
+    /// h as (numerators, denominator) per row.
+    h: Vec<(Vec<BigInt>, BigInt)>,
+    /// The contents of U's rows.
+    gs: Vec<BigInt>,
+    /// The content of det Ã.
+    cont: BigInt,
+    /// Its primitive part.
+    pp: Vec<BigInt>,
+    /// The content of U's last row.
+    g: BigInt,
+    /// Whether lc(det Ã) is negative.
+    lc_negative: bool,
+}
+
+/// [`hermite_from_adjugate`] without `U⁻¹` (see [`SmallParts`]).
+pub fn small_parts(
+    a: &Matrix<QxRing>,
+    det: &[BigInt],
+    adj: &[Vec<IntPoly>],
+    delta: &[BigInt],
+) -> Option<SmallParts> {
     let n = a.rows();
     let r = a.ring.clone();
     let big_n = det.len().checked_sub(1).filter(|&d| d >= 1)?;
@@ -541,70 +569,98 @@ pub fn hermite_from_adjugate(
     let f = r.normalize(&QPoly::from_ints(det.to_vec()));
     let mut d = Matrix::identity(r.clone(), n);
     d.set(n - 1, n - 1, f);
-    // U⁻¹ = A·V·D⁻¹: column k < n is A's over λ_k, i.e. Ã_rk·g_k/(δ_r·den_k·cont);
-    // the last is (A_n − Σ_k A_k·h_k)/(f·λ_n) = Y_r·sign(lc)·g_n/(δ_r·E·cont)
-    // with E = lcm(den_k), H_k = h_k·E and Y_r = (Ã_rn·E − Σ_k Ã_rk·H_k)/pp(c)
-    // (exact over Z by Gauss's lemma).
-    let e = h.iter().fold(BigInt::one(), |l, (_, de)| {
-        crate::algebra::intgcd::lcm(&l, de)
-    });
-    let hs: Vec<Vec<BigInt>> = h
-        .iter()
-        .map(|(nu, de)| {
-            let s = &e / de;
-            nu.iter().map(|c| c * &s).collect()
-        })
-        .collect();
-    let mut u_inv = Matrix::zeros(r.clone(), n, n);
-    for (row, (ar, dr)) in at.iter().zip(delta).enumerate() {
-        for k in 0..n - 1 {
-            let den = dr * &h[k].1 * &cont;
-            u_inv.set(
-                row,
-                k,
-                QPoly::new(ar[k].iter().map(|c| c * &gs[k]).collect(), den),
-            );
-        }
-        let mut x: Vec<BigInt> = ar[n - 1].iter().map(|c| c * &e).collect();
-        for (ak, hk) in ar.iter().zip(&hs) {
-            if ak.is_empty() || hk.is_empty() {
-                continue;
+    Some(SmallParts {
+        dec: SmallDecomposition { d, u, v, v_inv },
+        h,
+        gs,
+        cont,
+        pp,
+        g,
+        lc_negative: lc.is_negative(),
+    })
+}
+
+impl SmallParts {
+    /// The full decomposition: `U⁻¹` built exactly over Z from `Ã = Δ·A`
+    /// (`at`, `delta`); `None` when an exact division fails (then h was
+    /// wrong).
+    pub fn into_decomposition(
+        self,
+        at: &[Vec<IntPoly>],
+        delta: &[BigInt],
+    ) -> Option<super::SmithDecomposition<QxRing>> {
+        let SmallParts {
+            dec: SmallDecomposition { d, u, v, v_inv },
+            h,
+            gs,
+            cont,
+            pp,
+            g,
+            lc_negative,
+        } = self;
+        let n = u.rows();
+        let r = u.ring.clone();
+        // U⁻¹ = A·V·D⁻¹: column k < n is A's over λ_k, i.e. Ã_rk·g_k/(δ_r·den_k·cont);
+        // the last is (A_n − Σ_k A_k·h_k)/(f·λ_n) = Y_r·sign(lc)·g_n/(δ_r·E·cont)
+        // with E = lcm(den_k), H_k = h_k·E and Y_r = (Ã_rn·E − Σ_k Ã_rk·H_k)/pp(c)
+        // (exact over Z by Gauss's lemma).
+        let e = h.iter().fold(BigInt::one(), |l, (_, de)| {
+            crate::algebra::intgcd::lcm(&l, de)
+        });
+        let hs: Vec<Vec<BigInt>> = h
+            .iter()
+            .map(|(nu, de)| {
+                let s = &e / de;
+                nu.iter().map(|c| c * &s).collect()
+            })
+            .collect();
+        let mut u_inv = Matrix::zeros(r.clone(), n, n);
+        for (row, (ar, dr)) in at.iter().zip(delta).enumerate() {
+            for k in 0..n - 1 {
+                let den = dr * &h[k].1 * &cont;
+                u_inv.set(
+                    row,
+                    k,
+                    QPoly::new(ar[k].iter().map(|c| c * &gs[k]).collect(), den),
+                );
             }
-            let len = ak.len() + hk.len() - 1;
-            if x.len() < len {
-                x.resize(len, BigInt::zero());
-            }
-            for (t, c) in ak.iter().enumerate() {
-                if c.is_zero() {
+            let mut x: Vec<BigInt> = ar[n - 1].iter().map(|c| c * &e).collect();
+            for (ak, hk) in ar.iter().zip(&hs) {
+                if ak.is_empty() || hk.is_empty() {
                     continue;
                 }
-                for (s2, y) in hk.iter().enumerate() {
-                    x[t + s2] -= c * y;
+                let len = ak.len() + hk.len() - 1;
+                if x.len() < len {
+                    x.resize(len, BigInt::zero());
+                }
+                for (t, c) in ak.iter().enumerate() {
+                    if c.is_zero() {
+                        continue;
+                    }
+                    for (s2, y) in hk.iter().enumerate() {
+                        x[t + s2] -= c * y;
+                    }
                 }
             }
+            while x.last().is_some_and(|c| c.is_zero()) {
+                x.pop();
+            }
+            let y = crate::algebra::modgcd::int_div_exact(&x, &pp)?;
+            let scale = if lc_negative { -g.clone() } else { g.clone() };
+            u_inv.set(
+                row,
+                n - 1,
+                QPoly::new(y.into_iter().map(|c| c * &scale).collect(), dr * &e * &cont),
+            );
         }
-        while x.last().is_some_and(|c| c.is_zero()) {
-            x.pop();
-        }
-        let y = crate::algebra::modgcd::int_div_exact(&x, &pp)?;
-        let scale = if lc.is_negative() {
-            -g.clone()
-        } else {
-            g.clone()
-        };
-        u_inv.set(
-            row,
-            n - 1,
-            QPoly::new(y.into_iter().map(|c| c * &scale).collect(), dr * &e * &cont),
-        );
+        Some(super::SmithDecomposition {
+            d,
+            u,
+            v,
+            u_inv,
+            v_inv,
+        })
     }
-    Some(super::SmithDecomposition {
-        d,
-        u,
-        v,
-        u_inv,
-        v_inv,
-    })
 }
 
 impl SmallDecomposition {
