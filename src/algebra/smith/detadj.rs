@@ -235,7 +235,10 @@ impl Garner {
             let f = self.ps[i];
             let mut t = res[i];
             for (&inv, &vj) in self.inv[i].iter().zip(v.iter()) {
-                t = f.mul_pre(inv, f.sub(t, vj % f.p));
+                // vj < p_j; the word primes lie within a factor 2 of each
+                // other, so the division is almost never needed.
+                let vj = if vj >= f.p { vj % f.p } else { vj };
+                t = f.mul_pre(inv, f.sub(t, vj));
             }
             v[i] = t;
         }

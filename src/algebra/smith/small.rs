@@ -118,15 +118,46 @@ fn h_image(f: Fp, det: &[BigInt], adj: &[Vec<IntPoly>], order: &[usize]) -> Opti
         let a = reduce(f, &adj[n - 1][j]);
         modular::inverse_and_resultant(f, &a, &fp).map(|(s, _)| (j, s))
     })?;
+    // h_i = −Σ_t adj_ij[t]·S_t with S_t = x^t·inv mod fp (one table for
+    // all rows; the sums accumulate lazily in u128).
+    let len = adj
+        .iter()
+        .take(n - 1)
+        .map(|row| row[j].len())
+        .max()
+        .unwrap_or(0);
+    let mut table = vec![0u64; len * big_n];
+    let mut cur = inv;
+    cur.resize(big_n, 0);
+    for t in 0..len {
+        table[t * big_n..(t + 1) * big_n].copy_from_slice(&cur);
+        // cur ← x·cur mod fp (fp monic of degree N).
+        let top = cur[big_n - 1];
+        cur.copy_within(0..big_n - 1, 1);
+        cur[0] = 0;
+        if top != 0 {
+            let tm = f.prep(top);
+            for (c, &m) in cur.iter_mut().zip(&fp) {
+                *c = f.sub(*c, f.mul_pre(tm, m));
+            }
+        }
+    }
+    let mut acc = vec![0u128; big_n];
     let h = adj
         .iter()
         .take(n - 1)
         .map(|row| {
-            let prod = modular::mul(f, &reduce(f, &row[j]), &inv);
-            let r = modular::div_rem(f, &prod, &fp).1;
-            let mut v: Vec<u64> = r.iter().map(|&c| f.neg(c)).collect();
-            v.resize(big_n, 0);
-            v
+            acc.iter_mut().for_each(|a| *a = 0);
+            for (t, c) in row[j].iter().enumerate() {
+                let c = f.reduce(c);
+                if c == 0 {
+                    continue;
+                }
+                for (a, &s) in acc.iter_mut().zip(&table[t * big_n..(t + 1) * big_n]) {
+                    *a = f.mul_add_wide(*a, c, s);
+                }
+            }
+            acc.iter().map(|&v| f.neg(f.reduce_wide(v))).collect()
         })
         .collect();
     Some(HImage { f, h })
@@ -184,13 +215,14 @@ fn reconstruct_h(
     order: &[usize],
 ) -> Option<Vec<(Vec<BigInt>, BigInt)>> {
     // Measured on random dense inputs (n = 8, 12; degree 1–3), h's
-    // numerators and common denominator each have about 0.85·(N − 1)·b
-    // bits, b the bits of det's coefficients: reconstruction is first tried
-    // a little below that (an early try only costs a failed attempt, a
-    // late one a few cheap images).
+    // numerators and common denominator each have 0.84–0.94·(N − 1)·b
+    // bits, b the bits of det's coefficients, so reconstruction needs
+    // 1.7–1.9·(N − 1)·b bits. It is first tried at 1.8·(N − 1)·b: a failed
+    // attempt costs a whole Euclid on the lifted value (at n = 8, d = 3
+    // about eight images' work), a late one only a few images.
     let big_n = det.len() - 1;
     let detbits = det.iter().map(|c| c.bits()).max().unwrap_or(0) as usize;
-    let first_try = (3 * big_n.saturating_sub(1) * detbits / 2) / 61;
+    let first_try = (9 * big_n.saturating_sub(1) * detbits).div_ceil(5 * 61);
     let mut images: Vec<HImage> = Vec::new();
     let mut unlucky = 0;
     for p in modular::primes() {
@@ -292,7 +324,14 @@ fn row_image(
     let inv_lc = f.prep(f.inv(ppp[np]));
     let last: Vec<UP> = adj[n - 1].iter().map(|p| reduce(f, p)).collect();
     let dl: Vec<u64> = delta.iter().map(|d| reduce_int(f, d)).collect();
-    let p128 = f.p as u128;
+    if !full
+        && adj
+            .iter()
+            .take(n - 1)
+            .all(|row| row.iter().all(|p| p.len() <= np))
+    {
+        return quotient_rows(f, &ppp, &last, &dl, h, wlen);
+    }
     let mut acc: Vec<u128> = Vec::new();
     let mut x: Vec<u64> = Vec::new();
     let mut rows = Vec::with_capacity(n - 1);
@@ -313,7 +352,7 @@ fn row_image(
             acc.clear();
             acc.resize(len - lo, 0);
             for (t, c) in bk.iter().enumerate().skip(lo) {
-                acc[t - lo] = reduce_int(f, c) as u128 * denp as u128;
+                acc[t - lo] = f.mul_add_wide(0, reduce_int(f, c), denp);
             }
             for (t, &y) in nump.iter().enumerate() {
                 if y == 0 {
@@ -321,12 +360,11 @@ fn row_image(
                 }
                 for (s, &z) in lk.iter().enumerate().skip(lo.saturating_sub(t)) {
                     let i = t + s - lo;
-                    let v = acc[i] + y as u128 * z as u128;
-                    acc[i] = if v >= p128 << 64 { v % p128 } else { v };
+                    acc[i] = f.mul_add_wide(acc[i], y, z);
                 }
             }
             x.clear();
-            x.extend(acc.iter().map(|&v| (v % p128) as u64));
+            x.extend(acc.iter().map(|&v| f.reduce_wide(v)));
             // Exact division by pp(c) mod p, from the top: x[i] holds
             // the coefficient of index i + lo.
             let qlen = len.saturating_sub(np);
@@ -348,6 +386,97 @@ fn row_image(
             }
             if full && x[..np.min(x.len())].iter().any(|&c| c != 0) {
                 return None;
+            }
+        }
+        rows.push(out);
+    }
+    Some(rows)
+}
+
+/// [`row_image`]'s quotients when every `adj_ik` (i < n−1) has degree
+/// below deg pp, so that `quo(den_i·adj_ik + num_i·adj_nk, pp) =
+/// quo(num_i·adj_nk, pp)`: by reversed power series,
+/// `rev(q) = rev(num_i)·G_k mod x^len(q)` with `G_k = rev(adj_nk)·rev(pp)⁻¹`
+/// (one series per column and prime), the sums accumulated lazily in u128.
+fn quotient_rows(
+    f: Fp,
+    ppp: &[u64],
+    last: &[UP],
+    dl: &[u64],
+    h: &[(Vec<BigInt>, BigInt)],
+    wlen: usize,
+) -> Option<Vec<Vec<u64>>> {
+    let n = last.len();
+    let np = ppp.len() - 1;
+    let nums: Vec<UP> = h.iter().map(|(num, _)| reduce(f, num)).collect();
+    for (_, den) in h {
+        if reduce_int(f, den) == 0 {
+            return None;
+        }
+    }
+    let max_num = nums.iter().map(|v| v.len()).max().unwrap_or(0);
+    // Quotient lengths are at most max_num + len(adj_nk) − 1 − np.
+    let qmax = |a: &UP| (max_num + a.len()).saturating_sub(np + 1);
+    let series_len = last.iter().map(qmax).max().unwrap_or(0);
+    // I = rev(pp)⁻¹ mod x^series_len.
+    let inv_lc = f.inv(ppp[np]);
+    let neg_inv_lc = f.prep(f.neg(inv_lc));
+    let mut inv = vec![0u64; series_len];
+    for m in 0..series_len {
+        inv[m] = if m == 0 {
+            inv_lc
+        } else {
+            let mut acc = 0u128;
+            for i in 1..=m.min(np) {
+                acc = f.mul_add_wide(acc, ppp[np - i], inv[m - i]);
+            }
+            f.mul_pre(neg_inv_lc, f.reduce_wide(acc))
+        };
+    }
+    // G_k = rev(adj_nk)·I, truncated.
+    let gs: Vec<Vec<u64>> = last
+        .iter()
+        .map(|a| {
+            let len = qmax(a);
+            (0..len)
+                .map(|m| {
+                    let mut acc = 0u128;
+                    for s in 0..=m.min(a.len() - 1) {
+                        acc = f.mul_add_wide(acc, a[a.len() - 1 - s], inv[m - s]);
+                    }
+                    f.reduce_wide(acc)
+                })
+                .collect()
+        })
+        .collect();
+    let mut rows = Vec::with_capacity(n - 1);
+    let mut rq: Vec<u64> = Vec::new();
+    for nump in &nums {
+        let mut out = vec![0u64; n * wlen];
+        for (k, (a, g)) in last.iter().zip(&gs).enumerate() {
+            if nump.is_empty() || a.is_empty() {
+                continue;
+            }
+            let Some(qlen) = (nump.len() + a.len() - 1).checked_sub(np) else {
+                continue;
+            };
+            if qlen == 0 {
+                continue;
+            }
+            if qlen > wlen {
+                return None;
+            }
+            rq.clear();
+            rq.extend((0..qlen).map(|m| {
+                let mut acc = 0u128;
+                for t in 0..=m.min(nump.len() - 1) {
+                    acc = f.mul_add_wide(acc, nump[nump.len() - 1 - t], g[m - t]);
+                }
+                f.reduce_wide(acc)
+            }));
+            let dm = f.prep(dl[k]);
+            for (t, &c) in rq.iter().rev().enumerate() {
+                out[k * wlen + t] = f.mul_pre(dm, c);
             }
         }
         rows.push(out);
