@@ -827,7 +827,20 @@ fn sparse_product(x: &Matrix<QxRing>, y: &Matrix<QxRing>) -> Matrix<QxRing> {
                 if b.is_zero() {
                     continue;
                 }
-                let e = r.add(out.get(i, k), &r.mul(a, b));
+                // Entries are in normal form, so a product by one and a
+                // sum with zero are copies.
+                let prod = if r.is_one(a) {
+                    b.clone()
+                } else if r.is_one(b) {
+                    a.clone()
+                } else {
+                    r.mul(a, b)
+                };
+                let e = if out.get(i, k).is_zero() {
+                    prod
+                } else {
+                    r.add(out.get(i, k), &prod)
+                };
                 out.set(i, k, e);
             }
         }
