@@ -212,7 +212,7 @@ pub enum FastParts {
     /// Any other outcome, as [`try_fast`] gives it.
     Path(FastPath),
     /// The integer route's decomposition without `U⁻¹`.
-    Small(Box<SmallFast>),
+    Small(SmallFast),
 }
 
 /// [`FastParts::Small`]: the decomposition's parts and the exact det and
@@ -303,13 +303,13 @@ pub fn try_fast_parts(a: &Matrix<QxRing>, limit_bits: u64) -> Option<FastParts> 
         return Some(FastParts::Path(FastPath::FormOnly { c: det_q, b, bits }));
     }
     if let Some(parts) = super::small::small_parts(a, det_q.num(), &adj_t, &delta) {
-        return Some(FastParts::Small(Box::new(SmallFast {
+        return Some(FastParts::Small(SmallFast {
             parts,
             at,
             delta,
             det: det_q.num().to_vec(),
             adj: adj_t,
-        })));
+        }));
     }
     hermite_or_no_column(a, det_q.num().to_vec(), &adj_t, &delta).map(FastParts::Path)
 }
