@@ -13,6 +13,7 @@ use lambdamat::algebra::rational::Q;
 use lambdamat::algebra::smith::modes::{SmithOptions, smith_report};
 use lambdamat::lang::parse_program;
 use std::hint::black_box;
+use std::time::Duration;
 
 fn first_matrix(path: &str) -> Matrix<PolyRing> {
     let src = std::fs::read_to_string(path).expect("bench data");
@@ -140,10 +141,54 @@ fn small(c: &mut Criterion) {
     g.finish();
 }
 
+/// Process CPU time (`CLOCK_PROCESS_CPUTIME_ID`): on a shared machine
+/// the wall time of a millisecond-long call measures the load, not the
+/// code.
+fn process_cpu() -> Duration {
+    let mut t = libc::timespec {
+        tv_sec: 0,
+        tv_nsec: 0,
+    };
+    // SAFETY: `t` is a valid, writable timespec for the call's duration.
+    let rc = unsafe { libc::clock_gettime(libc::CLOCK_PROCESS_CPUTIME_ID, &mut t) };
+    assert_eq!(rc, 0, "clock_gettime(CLOCK_PROCESS_CPUTIME_ID)");
+    Duration::new(t.tv_sec as u64, t.tv_nsec as u32)
+}
+
+/// Process CPU time of `iters` certified Smith reports of `a`.
+fn cpu_time_of(iters: u64, a: &Matrix) -> Duration {
+    let t0 = process_cpu();
+    for _ in 0..iters {
+        black_box(smith_report("A", black_box(a), &SmithOptions::default()).expect("certified"));
+    }
+    process_cpu() - t0
+}
+
+/// Issue 15's goal at the small end, in CPU time: `smith_report` from the
+/// parsed matrix to the certified report (transforms, certificate and
+/// printed rows included; parsing and process start excluded) on the
+/// grid's dense 8×8 of degree 1, 2, 3 and 12×12 of degree 1
+/// (`benches/peers_grid.py`'s `build("dense", n, d, 1)`). Criterion's
+/// "time" here is process CPU time per call. PARI's `matsnf(M,3)` on the
+/// same matrices took 6.8, 32, 121 and 126 ms (its own timer, in-process),
+/// so 10× PARI means ≤ 0.68, 3.2, 12 and 12.6 ms.
+/// `cargo bench --bench smith -- smith_small_cpu`.
+fn small_cpu(c: &mut Criterion) {
+    let mut g = c.benchmark_group("smith_small_cpu");
+    g.sample_size(20);
+    for case in ["dense_8_1", "dense_8_2", "dense_8_3", "dense_12_1"] {
+        let a = first_matrix(&format!("benches/data/small_{case}.lmx"));
+        g.bench_function(case, |b| b.iter_custom(|iters| cpu_time_of(iters, &a)));
+    }
+    g.finish();
+}
+
 /// The trailing Hermite route at 8×8 (issue 15's B·diag(chain)·C grid,
 /// `benches/peers_grid.py build`, seed 1): two factors (x − 1,
 /// (x − 1)(x + 2)) and three (…, (x − 1)(x + 2)x), B of degree 1–3, with
 /// transforms and the certificate, as `lambdamat smith` runs them.
+/// Criterion's "time" here is process CPU time per call, as in
+/// `smith_small_cpu`. `cargo bench --bench smith -- smith_trailing_8`.
 fn trailing(c: &mut Criterion) {
     let mut g = c.benchmark_group("smith_trailing_8");
     g.sample_size(20);
@@ -151,15 +196,13 @@ fn trailing(c: &mut Criterion) {
         for d in 1..=3 {
             let case = format!("{shape}_8_{d}");
             let a = first_matrix(&format!("benches/data/trailing_{case}.lmx"));
-            g.bench_function(&case, |b| {
-                b.iter(|| {
-                    smith_report("A", black_box(&a), &SmithOptions::default()).expect("certified")
-                })
-            });
+            g.bench_function(&case, |b| b.iter_custom(|iters| cpu_time_of(iters, &a)));
         }
     }
     g.finish();
 }
 
-criterion_group!(benches, peers, seed, scale, large, small, trailing);
+criterion_group!(
+    benches, peers, seed, scale, large, small, small_cpu, trailing
+);
 criterion_main!(benches);

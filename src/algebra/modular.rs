@@ -6,7 +6,7 @@
 
 use num_bigint::BigInt;
 use num_integer::Integer;
-use num_traits::{One, Signed, ToPrimitive, Zero};
+use num_traits::{One, Signed, Zero};
 
 /// The prime field Z_p, `p < 2^62` odd, elements in `0..p` (products by
 /// Montgomery reduction: two REDC steps instead of a 128-bit division).
@@ -74,6 +74,22 @@ impl Fp {
     pub fn mul_pre(self, cm: u64, b: u64) -> u64 {
         self.redc(cm as u128 * b as u128)
     }
+    /// `t mod p` for `t < p·2^64` (a lazily reduced sum of products),
+    /// by two Montgomery reductions instead of a 128-bit division:
+    /// `redc(t) = t·2^−64` and `mul_pre(r2, ·)` multiplies by 2^64 again.
+    #[inline]
+    pub fn reduce_wide(self, t: u128) -> u64 {
+        debug_assert!(t < (self.p as u128) << 64);
+        self.mul_pre(self.r2, self.redc(t))
+    }
+    /// `acc + a·b`, kept below `p·2^64` by one conditional subtraction
+    /// (`acc < p·2^64` and `a, b < p`); finish with [`Fp::reduce_wide`].
+    #[inline]
+    pub fn mul_add_wide(self, acc: u128, a: u64, b: u64) -> u128 {
+        let top = (self.p as u128) << 64;
+        let v = acc + a as u128 * b as u128;
+        if v >= top { v - top } else { v }
+    }
     /// `a^e`.
     pub fn pow(self, mut a: u64, mut e: u64) -> u64 {
         let mut r = 1 % self.p;
@@ -103,9 +119,13 @@ impl Fp {
     }
     /// The residue of a big integer.
     pub fn reduce(self, a: &BigInt) -> u64 {
-        a.mod_floor(&BigInt::from(self.p))
-            .to_u64()
-            .expect("residue below p")
+        // Horner on the 64-bit digits from the top: acc·2^64 is
+        // `mul_pre(r2, acc)` (r2 = 2^128 mod p is 2^64 in Montgomery form),
+        // so no allocation and no 128-bit division.
+        let r = a.magnitude().iter_u64_digits().rev().fold(0u64, |acc, d| {
+            self.add(self.mul_pre(self.r2, acc), d % self.p)
+        });
+        if a.is_negative() { self.neg(r) } else { r }
     }
 }
 
@@ -243,17 +263,15 @@ pub fn mul(f: Fp, a: &[u64], b: &[u64]) -> UP {
     }
     // Accumulate in u128 and reduce rarely: p < 2^62 so 2^4 products fit.
     let mut acc = vec![0u128; a.len() + b.len() - 1];
-    let p = f.p as u128;
     for (i, &x) in a.iter().enumerate() {
         if x == 0 {
             continue;
         }
         for (j, &y) in b.iter().enumerate() {
-            let s = acc[i + j] + x as u128 * y as u128;
-            acc[i + j] = if s >= p << 64 { s % p } else { s };
+            acc[i + j] = f.mul_add_wide(acc[i + j], x, y);
         }
     }
-    trim(acc.into_iter().map(|s| (s % p) as u64).collect())
+    trim(acc.into_iter().map(|s| f.reduce_wide(s)).collect())
 }
 
 /// `a + b`.
@@ -451,6 +469,47 @@ mod tests {
                 assert_eq!(f.inv(a), f.pow(a % p, p - 2));
             }
         }
+    }
+
+    #[test]
+    fn wide_sums_reduce_like_division() {
+        let mut checked = 0;
+        for p in primes().take(2).chain([3, 1_000_000_007]) {
+            let f = Fp::new(p);
+            let vals = [0, 1, 2, p / 2, p - 2, p - 1, 0x0123_4567_89ab_cdef % p];
+            let mut acc = 0u128;
+            let mut want = 0u128;
+            for &a in &vals {
+                for &b in &vals {
+                    acc = f.mul_add_wide(acc, a, b);
+                    want = (want + a as u128 * b as u128) % p as u128;
+                    assert_eq!(f.reduce_wide(acc) as u128, want, "p = {p}");
+                    checked += 1;
+                }
+            }
+        }
+        assert_eq!(checked, 4 * 49);
+    }
+
+    #[test]
+    fn residues_of_big_integers_agree_with_division() {
+        use num_integer::Integer;
+        use num_traits::ToPrimitive;
+        let mut checked = 0;
+        for p in primes().take(3).chain([3, 5, 1_000_000_007]) {
+            let f = Fp::new(p);
+            let mut x = BigInt::from(0x1234_5678_9abc_def1u64);
+            for k in 0..40 {
+                for a in [x.clone(), -x.clone(), x.clone() + 1, BigInt::from(k)] {
+                    let want = a.mod_floor(&BigInt::from(p)).to_u64().expect("< p");
+                    assert_eq!(f.reduce(&a), want, "p = {p}, a = {a}");
+                    checked += 1;
+                }
+                // Grow by about 61 bits, with all-ones and zero digits.
+                x = x * BigInt::from(0x1fff_ffff_ffff_fffbu64) + BigInt::from(u64::MAX) * k;
+            }
+        }
+        assert_eq!(checked, 6 * 40 * 4);
     }
 
     #[test]

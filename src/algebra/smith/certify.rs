@@ -328,7 +328,11 @@ fn dot_small(xs: &[Vec<BigInt>], ys: &[Vec<i64>]) -> Vec<BigInt> {
     // |a·b| < 2^(bits + 63); a sum of `terms` of them per coefficient, and
     // a sign bit.
     let w = ((bits + 63 + 64 - (terms + 1).leading_zeros() as u64 + 1) / 64 + 1) as usize;
+    // Positive and negative terms go to separate unsigned accumulators
+    // (no sign branch in the inner loop); their difference, in w words of
+    // two's complement, is the sum.
     let mut acc = vec![0u64; len * w];
+    let mut neg_acc = vec![0u64; len * w];
     let mut mag: Vec<u64> = Vec::with_capacity(w);
     for (a, b) in xs.iter().zip(ys) {
         for (i, c) in a.iter().enumerate() {
@@ -342,35 +346,26 @@ fn dot_small(xs: &[Vec<BigInt>], ys: &[Vec<i64>]) -> Vec<BigInt> {
                 if q == 0 {
                     continue;
                 }
-                let neg = neg_c ^ (q < 0);
-                let qm = q.unsigned_abs() as u128;
-                let slot = &mut acc[(i + j) * w..(i + j + 1) * w];
-                let mut pc = 0u64;
-                let mut carry = false;
-                for (k, word) in slot.iter_mut().enumerate() {
-                    let pw = if k < mag.len() {
-                        let t = mag[k] as u128 * qm + pc as u128;
-                        pc = (t >> 64) as u64;
-                        t as u64
-                    } else {
-                        std::mem::take(&mut pc)
-                    };
-                    if k > mag.len() && pw == 0 && !carry {
-                        break;
-                    }
-                    if neg {
-                        let (s1, o1) = word.overflowing_sub(pw);
-                        let (s2, o2) = s1.overflowing_sub(carry as u64);
-                        *word = s2;
-                        carry = o1 || o2;
-                    } else {
-                        let (s1, o1) = word.overflowing_add(pw);
-                        let (s2, o2) = s1.overflowing_add(carry as u64);
-                        *word = s2;
-                        carry = o1 || o2;
-                    }
-                }
+                let target = if neg_c ^ (q < 0) {
+                    &mut neg_acc
+                } else {
+                    &mut acc
+                };
+                add_scaled(
+                    &mut target[(i + j) * w..(i + j + 1) * w],
+                    &mag,
+                    q.unsigned_abs(),
+                );
             }
+        }
+    }
+    for (x, y) in acc.chunks_mut(w).zip(neg_acc.chunks(w)) {
+        let mut borrow = false;
+        for (l, &m) in x.iter_mut().zip(y) {
+            let (d1, o1) = l.overflowing_sub(m);
+            let (d2, o2) = d1.overflowing_sub(borrow as u64);
+            *l = d2;
+            borrow = o1 || o2;
         }
     }
     acc.chunks(w)
@@ -401,6 +396,27 @@ fn dot_small(xs: &[Vec<BigInt>], ys: &[Vec<i64>]) -> Vec<BigInt> {
             )
         })
         .collect()
+}
+
+/// `slot += mag·q` on little-endian words (`slot` wide enough: the
+/// caller's width bound).
+#[inline]
+fn add_scaled(slot: &mut [u64], mag: &[u64], q: u64) {
+    let mut carry = 0u64;
+    for (l, &m) in slot.iter_mut().zip(mag) {
+        // m·q + l + carry ≤ (2^64 − 1)² + 2·(2^64 − 1) < 2^128.
+        let t = m as u128 * q as u128 + *l as u128 + carry as u128;
+        *l = t as u64;
+        carry = (t >> 64) as u64;
+    }
+    for l in slot.iter_mut().skip(mag.len()) {
+        if carry == 0 {
+            break;
+        }
+        let (v, o) = l.overflowing_add(carry);
+        *l = v;
+        carry = o as u64;
+    }
 }
 
 /// `X·Y` over Q[x] through an integer product.

@@ -235,29 +235,53 @@ impl Garner {
             let f = self.ps[i];
             let mut t = res[i];
             for (&inv, &vj) in self.inv[i].iter().zip(v.iter()) {
-                t = f.mul_pre(inv, f.sub(t, vj % f.p));
+                // vj < p_j; the word primes lie within a factor 2 of each
+                // other, so the division is almost never needed.
+                let vj = if vj >= f.p { vj % f.p } else { vj };
+                t = f.mul_pre(inv, f.sub(t, vj));
             }
             v[i] = t;
         }
-        // Horner on 64-bit limbs: acc = v[k−1]; acc = acc·p + v[i].
-        let mut limbs: Vec<u64> = Vec::with_capacity(k);
+        // Horner on 64-bit limbs: acc = v[k−1]; acc = acc·p + v[i]. The
+        // value has at most k limbs (each p < 2^64); on the stack up to 32.
+        let mut limbs_small = [0u64; 32];
+        let mut limbs_big = Vec::new();
+        let limbs: &mut [u64] = if k <= 32 {
+            &mut limbs_small[..k]
+        } else {
+            limbs_big.resize(k, 0);
+            &mut limbs_big
+        };
+        let mut used = 0usize;
         for i in (0..k).rev() {
             let p = self.ps[i].p as u128;
             let mut carry = v[i] as u128;
-            for l in limbs.iter_mut() {
+            for l in limbs[..used].iter_mut() {
                 let t = *l as u128 * p + carry;
                 *l = t as u64;
                 carry = t >> 64;
             }
             if carry != 0 {
-                limbs.push(carry as u64);
+                limbs[used] = carry as u64;
+                used += 1;
             }
         }
-        let digits: Vec<u32> = limbs
-            .iter()
-            .flat_map(|&l| [l as u32, (l >> 32) as u32])
-            .collect();
-        let acc = BigInt::from_biguint(num_bigint::Sign::Plus, num_bigint::BigUint::new(digits));
+        let mut digits_small = [0u32; 64];
+        let mut digits_big = Vec::new();
+        let digits: &mut [u32] = if used <= 32 {
+            &mut digits_small[..2 * used]
+        } else {
+            digits_big.resize(2 * used, 0);
+            &mut digits_big
+        };
+        for (d, &l) in digits.chunks_mut(2).zip(limbs[..used].iter()) {
+            d[0] = l as u32;
+            d[1] = (l >> 32) as u32;
+        }
+        let acc = BigInt::from_biguint(
+            num_bigint::Sign::Plus,
+            num_bigint::BigUint::from_slice(digits),
+        );
         if acc > self.half { acc - &self.m } else { acc }
     }
 }

@@ -9,7 +9,7 @@
 use super::SmithDecomposition;
 use super::certify::{Certificate, Check, ProductCheck, Unimodular, certify};
 use super::divisors::{certify_divisors, determinantal_divisors};
-use super::nonsingular::FastPath;
+use super::nonsingular::{FastParts, FastPath};
 use crate::algebra::gcd::{content_in, gcd, lcm};
 use crate::algebra::matrix::Matrix;
 use crate::algebra::mpoly::MPoly;
@@ -443,11 +443,25 @@ fn degree_certified_report(
     note: &str,
     opts: &SmithOptions,
 ) -> Option<SmithReport> {
+    let small = super::small::SmallDecomposition::from_decomposition(dec);
+    small_certified_report(name, a_poly, au, &small, ring, note, opts)
+}
+
+/// [`degree_certified_report`] for the integer route's parts (U with
+/// primitive integer rows already, no `U⁻¹`).
+fn small_certified_report(
+    name: &str,
+    a_poly: &Matrix<PolyRing>,
+    au: &Matrix<QxRing>,
+    small: &super::small::SmallDecomposition,
+    ring: &str,
+    note: &str,
+    opts: &SmithOptions,
+) -> Option<SmithReport> {
     opts.progress
         .phase("certifying U·A·V = D, V·V⁻¹ = I, det U constant from degrees");
-    let small = super::small::SmallDecomposition::from_decomposition(dec);
     let p = super::small::certificate_prime()?;
-    let cert = super::small::certify_small(au, &small, p);
+    let cert = super::small::certify_small(au, small, p);
     if !cert.verified() {
         return None;
     }
@@ -455,7 +469,7 @@ fn degree_certified_report(
     Some(transforms_report(
         name,
         a_poly,
-        [&dec.d, &dec.u, &dec.v],
+        [&small.d, &small.u, &small.v],
         cert,
         NONSINGULAR_ALGORITHM,
         Mode::OneSymbol,
@@ -594,7 +608,19 @@ fn one_symbol(
         let mode = Mode::OneSymbol;
         return Ok(generic_report(name, a, &au, d, alg, mode, ring, note, opts, &check)?.0);
     }
-    let (dec, alg) = match super::nonsingular::try_fast(&au, TRANSFORM_LIMIT_BITS) {
+    let fast = match super::nonsingular::try_fast_parts(&au, TRANSFORM_LIMIT_BITS) {
+        Some(FastParts::Small(s)) => {
+            if let Some(report) =
+                small_certified_report(name, a, &au, &s.parts.dec, &ring, &note, opts)
+            {
+                return Ok(report);
+            }
+            s.into_fast_path(&au)
+        }
+        Some(FastParts::Path(p)) => Some(p),
+        None => None,
+    };
+    let (dec, alg) = match fast {
         Some(FastPath::Decomposition(mut d)) => {
             super::trailing::integral_rows(&mut d);
             if let Some(report) = degree_certified_report(name, a, &au, &d, &ring, &note, opts) {

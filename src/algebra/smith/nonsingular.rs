@@ -199,6 +199,72 @@ fn transform_bits(det: &[BigInt], adj: &[Vec<Vec<BigInt>>]) -> u64 {
 
 /// The fast path with a limit (in bits) on the size of the transforms.
 pub fn try_fast(a: &Matrix<QxRing>, limit_bits: u64) -> Option<FastPath> {
+    match try_fast_parts(a, limit_bits)? {
+        FastParts::Path(p) => Some(p),
+        FastParts::Small(s) => s.into_fast_path(a),
+    }
+}
+
+/// [`try_fast`]'s result with the generic decomposition not yet
+/// completed: its `U⁻¹` is only built on request, since the degree
+/// certificate ([`super::small::certify_small`]) does not need it.
+pub enum FastParts {
+    /// Any other outcome, as [`try_fast`] gives it.
+    Path(FastPath),
+    /// The integer route's decomposition without `U⁻¹`.
+    Small(SmallFast),
+}
+
+/// [`FastParts::Small`]: the decomposition's parts and the exact det and
+/// adj of `Ã = Δ·A` they came from.
+pub struct SmallFast {
+    /// D, U, V, V⁻¹ and what `U⁻¹` is built from.
+    pub parts: super::small::SmallParts,
+    at: Vec<Vec<Vec<BigInt>>>,
+    delta: Vec<BigInt>,
+    det: Vec<BigInt>,
+    adj: Vec<Vec<Vec<BigInt>>>,
+}
+
+impl SmallFast {
+    /// The full decomposition (with `U⁻¹`), or, when building `U⁻¹`
+    /// fails, what the exact Q[x] route gives: [`try_fast`]'s result.
+    pub fn into_fast_path(self, a: &Matrix<QxRing>) -> Option<FastPath> {
+        let SmallFast {
+            parts,
+            at,
+            delta,
+            det,
+            adj,
+        } = self;
+        if let Some(d) = parts.into_decomposition(&at, &delta) {
+            return Some(FastPath::Decomposition(d));
+        }
+        hermite_or_no_column(a, det, &adj, &delta)
+    }
+}
+
+fn hermite_or_no_column(
+    a: &Matrix<QxRing>,
+    det: Vec<BigInt>,
+    adj_t: &[Vec<Vec<BigInt>>],
+    delta: &[BigInt],
+) -> Option<FastPath> {
+    match exact_hermite(a, &det, adj_t, delta)? {
+        Hermite::Decomposition(d) => Some(FastPath::Decomposition(*d)),
+        Hermite::NoColumn => {
+            let b = scaled_adjugate(&a.ring, adj_t, delta);
+            Some(FastPath::NoHermite {
+                c: QPoly::from_ints(det),
+                b,
+            })
+        }
+    }
+}
+
+/// [`try_fast`] with the generic decomposition's `U⁻¹` left to the caller
+/// (see [`FastParts`]).
+pub fn try_fast_parts(a: &Matrix<QxRing>, limit_bits: u64) -> Option<FastParts> {
     let n = a.rows();
     if n < 2 || a.cols() != n {
         return None;
@@ -227,25 +293,25 @@ pub fn try_fast(a: &Matrix<QxRing>, limit_bits: u64) -> Option<FastPath> {
         return None;
     }
     if det_q.degree() == Some(0) {
-        return Some(FastPath::Decomposition(unimodular(
+        return Some(FastParts::Path(FastPath::Decomposition(unimodular(
             a, &det_q, &adj_t, &delta,
-        )));
+        ))));
     }
     let bits = transform_bits(det_q.num(), &adj_t);
     if bits > limit_bits {
         let b = scaled_adjugate(&r, &adj_t, &delta);
-        return Some(FastPath::FormOnly { c: det_q, b, bits });
+        return Some(FastParts::Path(FastPath::FormOnly { c: det_q, b, bits }));
     }
-    if let Some(d) = super::small::hermite_from_adjugate(a, &at, &delta, det_q.num(), &adj_t) {
-        return Some(FastPath::Decomposition(d));
+    if let Some(parts) = super::small::small_parts(a, det_q.num(), &adj_t, &delta) {
+        return Some(FastParts::Small(SmallFast {
+            parts,
+            at,
+            delta,
+            det: det_q.num().to_vec(),
+            adj: adj_t,
+        }));
     }
-    match exact_hermite(a, det_q.num(), &adj_t, &delta)? {
-        Hermite::Decomposition(d) => Some(FastPath::Decomposition(*d)),
-        Hermite::NoColumn => {
-            let b = scaled_adjugate(&r, &adj_t, &delta);
-            Some(FastPath::NoHermite { c: det_q, b })
-        }
-    }
+    hermite_or_no_column(a, det_q.num().to_vec(), &adj_t, &delta).map(FastParts::Path)
 }
 
 /// What [`exact_hermite`] found.

@@ -75,15 +75,9 @@ fn reduce(f: Fp, p: &[BigInt]) -> UP {
     modular::trim(p.iter().map(|c| reduce_int(f, c)).collect())
 }
 
-/// `c mod p` without allocating (Horner on the 64-bit digits).
+/// `c mod p` without allocating.
 fn reduce_int(f: Fp, c: &BigInt) -> u64 {
-    let m = f.p as u128;
-    let r = c
-        .magnitude()
-        .iter_u64_digits()
-        .rev()
-        .fold(0u128, |r, d| ((r << 64) | d as u128) % m) as u64;
-    if c.is_negative() { f.neg(r) } else { r }
+    f.reduce(c)
 }
 
 /// Row degrees of Ã and whether the matrix of the rows' leading
@@ -124,15 +118,46 @@ fn h_image(f: Fp, det: &[BigInt], adj: &[Vec<IntPoly>], order: &[usize]) -> Opti
         let a = reduce(f, &adj[n - 1][j]);
         modular::inverse_and_resultant(f, &a, &fp).map(|(s, _)| (j, s))
     })?;
+    // h_i = −Σ_t adj_ij[t]·S_t with S_t = x^t·inv mod fp (one table for
+    // all rows; the sums accumulate lazily in u128).
+    let len = adj
+        .iter()
+        .take(n - 1)
+        .map(|row| row[j].len())
+        .max()
+        .unwrap_or(0);
+    let mut table = vec![0u64; len * big_n];
+    let mut cur = inv;
+    cur.resize(big_n, 0);
+    for t in 0..len {
+        table[t * big_n..(t + 1) * big_n].copy_from_slice(&cur);
+        // cur ← x·cur mod fp (fp monic of degree N).
+        let top = cur[big_n - 1];
+        cur.copy_within(0..big_n - 1, 1);
+        cur[0] = 0;
+        if top != 0 {
+            let tm = f.prep(top);
+            for (c, &m) in cur.iter_mut().zip(&fp) {
+                *c = f.sub(*c, f.mul_pre(tm, m));
+            }
+        }
+    }
+    let mut acc = vec![0u128; big_n];
     let h = adj
         .iter()
         .take(n - 1)
         .map(|row| {
-            let prod = modular::mul(f, &reduce(f, &row[j]), &inv);
-            let r = modular::div_rem(f, &prod, &fp).1;
-            let mut v: Vec<u64> = r.iter().map(|&c| f.neg(c)).collect();
-            v.resize(big_n, 0);
-            v
+            acc.iter_mut().for_each(|a| *a = 0);
+            for (t, c) in row[j].iter().enumerate() {
+                let c = f.reduce(c);
+                if c == 0 {
+                    continue;
+                }
+                for (a, &s) in acc.iter_mut().zip(&table[t * big_n..(t + 1) * big_n]) {
+                    *a = f.mul_add_wide(*a, c, s);
+                }
+            }
+            acc.iter().map(|&v| f.neg(f.reduce_wide(v))).collect()
         })
         .collect();
     Some(HImage { f, h })
@@ -190,13 +215,14 @@ fn reconstruct_h(
     order: &[usize],
 ) -> Option<Vec<(Vec<BigInt>, BigInt)>> {
     // Measured on random dense inputs (n = 8, 12; degree 1–3), h's
-    // numerators and common denominator each have about 0.85·(N − 1)·b
-    // bits, b the bits of det's coefficients: reconstruction is first tried
-    // a little below that (an early try only costs a failed attempt, a
-    // late one a few cheap images).
+    // numerators and common denominator each have 0.84–0.94·(N − 1)·b
+    // bits, b the bits of det's coefficients, so reconstruction needs
+    // 1.7–1.9·(N − 1)·b bits. It is first tried at 1.8·(N − 1)·b: a failed
+    // attempt costs a whole Euclid on the lifted value (at n = 8, d = 3
+    // about eight images' work), a late one only a few images.
     let big_n = det.len() - 1;
     let detbits = det.iter().map(|c| c.bits()).max().unwrap_or(0) as usize;
-    let first_try = (3 * big_n.saturating_sub(1) * detbits / 2) / 61;
+    let first_try = (9 * big_n.saturating_sub(1) * detbits).div_ceil(5 * 61);
     let mut images: Vec<HImage> = Vec::new();
     let mut unlucky = 0;
     for p in modular::primes() {
@@ -272,8 +298,12 @@ fn content_split(v: &[BigInt]) -> (BigInt, Vec<BigInt>) {
 
 /// One prime's images of the rows `N_i = (den_i·adj_i + num_i·adj_n)·Δ /
 /// pp(det)` (i < n−1), each entry padded to `wlen`, flattened per row;
-/// `None` when the prime is unusable or a division leaves a remainder
-/// (then h is wrong).
+/// `None` when the prime is unusable or a quotient does not fit. With
+/// `full`, the whole products are formed and a remainder gives `None`
+/// (then h is wrong); otherwise only the quotients, from the products'
+/// coefficients of index ≥ deg pp (which determine an exact quotient):
+/// about half the work, the remainders left to the `full` prime and, as
+/// always, to the certificate.
 #[allow(clippy::too_many_arguments)]
 fn row_image(
     f: Fp,
@@ -282,6 +312,7 @@ fn row_image(
     delta: &[BigInt],
     h: &[(Vec<BigInt>, BigInt)],
     wlen: usize,
+    full: bool,
 ) -> Option<Vec<Vec<u64>>> {
     let n = adj.len();
     let ppp = reduce(f, pp);
@@ -289,10 +320,18 @@ fn row_image(
         return None;
     }
     let np = ppp.len() - 1;
+    let lo = if full { 0 } else { np };
     let inv_lc = f.prep(f.inv(ppp[np]));
     let last: Vec<UP> = adj[n - 1].iter().map(|p| reduce(f, p)).collect();
     let dl: Vec<u64> = delta.iter().map(|d| reduce_int(f, d)).collect();
-    let p128 = f.p as u128;
+    if !full
+        && adj
+            .iter()
+            .take(n - 1)
+            .all(|row| row.iter().all(|p| p.len() <= np))
+    {
+        return quotient_rows(f, &ppp, &last, &dl, h, wlen);
+    }
     let mut acc: Vec<u128> = Vec::new();
     let mut x: Vec<u64> = Vec::new();
     let mut rows = Vec::with_capacity(n - 1);
@@ -304,52 +343,140 @@ fn row_image(
         let nump = reduce(f, num);
         let mut out = vec![0u64; n * wlen];
         for (k, (bk, lk)) in row.iter().zip(&last).enumerate() {
-            // x = den·adj_ik + num·adj_nk (mod p), products summed in u128.
+            // x = den·adj_ik + num·adj_nk (mod p), coefficients lo.., the
+            // products summed in u128.
             let len = bk.len().max((nump.len() + lk.len()).saturating_sub(1));
+            if len <= lo {
+                continue;
+            }
             acc.clear();
-            acc.resize(len, 0);
-            for (t, c) in bk.iter().enumerate() {
-                acc[t] = reduce_int(f, c) as u128 * denp as u128;
+            acc.resize(len - lo, 0);
+            for (t, c) in bk.iter().enumerate().skip(lo) {
+                acc[t - lo] = f.mul_add_wide(0, reduce_int(f, c), denp);
             }
             for (t, &y) in nump.iter().enumerate() {
                 if y == 0 {
                     continue;
                 }
-                for (s, &z) in lk.iter().enumerate() {
-                    let v = acc[t + s] + y as u128 * z as u128;
-                    acc[t + s] = if v >= p128 << 64 { v % p128 } else { v };
+                for (s, &z) in lk.iter().enumerate().skip(lo.saturating_sub(t)) {
+                    let i = t + s - lo;
+                    acc[i] = f.mul_add_wide(acc[i], y, z);
                 }
             }
             x.clear();
-            x.extend(acc.iter().map(|&v| (v % p128) as u64));
-            while x.last() == Some(&0) {
-                x.pop();
-            }
-            // Exact division by pp(c) mod p.
-            if x.len() <= np {
-                if !x.is_empty() {
-                    return None;
-                }
-                continue;
-            }
-            let qlen = x.len() - np;
-            if qlen > wlen {
-                return None;
-            }
+            x.extend(acc.iter().map(|&v| f.reduce_wide(v)));
+            // Exact division by pp(c) mod p, from the top: x[i] holds
+            // the coefficient of index i + lo.
+            let qlen = len.saturating_sub(np);
             let dm = f.prep(dl[k]);
             for t in (0..qlen).rev() {
-                let q = f.mul_pre(inv_lc, x[t + np]);
+                let q = f.mul_pre(inv_lc, x[t + np - lo]);
                 if q == 0 {
                     continue;
                 }
+                if t >= wlen {
+                    return None;
+                }
                 let qm = f.prep(q);
-                for (j, &c) in ppp.iter().enumerate() {
-                    x[t + j] = f.sub(x[t + j], f.mul_pre(qm, c));
+                for (j, &c) in ppp.iter().enumerate().skip(lo.saturating_sub(t)) {
+                    let i = t + j - lo;
+                    x[i] = f.sub(x[i], f.mul_pre(qm, c));
                 }
                 out[k * wlen + t] = f.mul_pre(dm, q);
             }
-            if x[..np].iter().any(|&c| c != 0) {
+            if full && x[..np.min(x.len())].iter().any(|&c| c != 0) {
                 return None;
+            }
+        }
+        rows.push(out);
+    }
+    Some(rows)
+}
+
+/// [`row_image`]'s quotients when every `adj_ik` (i < n−1) has degree
+/// below deg pp, so that `quo(den_i·adj_ik + num_i·adj_nk, pp) =
+/// quo(num_i·adj_nk, pp)`: by reversed power series,
+/// `rev(q) = rev(num_i)·G_k mod x^len(q)` with `G_k = rev(adj_nk)·rev(pp)⁻¹`
+/// (one series per column and prime), the sums accumulated lazily in u128.
+fn quotient_rows(
+    f: Fp,
+    ppp: &[u64],
+    last: &[UP],
+    dl: &[u64],
+    h: &[(Vec<BigInt>, BigInt)],
+    wlen: usize,
+) -> Option<Vec<Vec<u64>>> {
+    let n = last.len();
+    let np = ppp.len() - 1;
+    let nums: Vec<UP> = h.iter().map(|(num, _)| reduce(f, num)).collect();
+    for (_, den) in h {
+        if reduce_int(f, den) == 0 {
+            return None;
+        }
+    }
+    let max_num = nums.iter().map(|v| v.len()).max().unwrap_or(0);
+    // Quotient lengths are at most max_num + len(adj_nk) − 1 − np.
+    let qmax = |a: &UP| (max_num + a.len()).saturating_sub(np + 1);
+    let series_len = last.iter().map(qmax).max().unwrap_or(0);
+    // I = rev(pp)⁻¹ mod x^series_len.
+    let inv_lc = f.inv(ppp[np]);
+    let neg_inv_lc = f.prep(f.neg(inv_lc));
+    let mut inv = vec![0u64; series_len];
+    for m in 0..series_len {
+        inv[m] = if m == 0 {
+            inv_lc
+        } else {
+            let mut acc = 0u128;
+            for i in 1..=m.min(np) {
+                acc = f.mul_add_wide(acc, ppp[np - i], inv[m - i]);
+            }
+            f.mul_pre(neg_inv_lc, f.reduce_wide(acc))
+        };
+    }
+    // G_k = rev(adj_nk)·I, truncated.
+    let gs: Vec<Vec<u64>> = last
+        .iter()
+        .map(|a| {
+            let len = qmax(a);
+            (0..len)
+                .map(|m| {
+                    let mut acc = 0u128;
+                    for s in 0..=m.min(a.len() - 1) {
+                        acc = f.mul_add_wide(acc, a[a.len() - 1 - s], inv[m - s]);
+                    }
+                    f.reduce_wide(acc)
+                })
+                .collect()
+        })
+        .collect();
+    let mut rows = Vec::with_capacity(n - 1);
+    let mut rq: Vec<u64> = Vec::new();
+    for nump in &nums {
+        let mut out = vec![0u64; n * wlen];
+        for (k, (a, g)) in last.iter().zip(&gs).enumerate() {
+            if nump.is_empty() || a.is_empty() {
+                continue;
+            }
+            let Some(qlen) = (nump.len() + a.len() - 1).checked_sub(np) else {
+                continue;
+            };
+            if qlen == 0 {
+                continue;
+            }
+            if qlen > wlen {
+                return None;
+            }
+            rq.clear();
+            rq.extend((0..qlen).map(|m| {
+                let mut acc = 0u128;
+                for t in 0..=m.min(nump.len() - 1) {
+                    acc = f.mul_add_wide(acc, nump[nump.len() - 1 - t], g[m - t]);
+                }
+                f.reduce_wide(acc)
+            }));
+            let dm = f.prep(dl[k]);
+            for (t, &c) in rq.iter().rev().enumerate() {
+                out[k * wlen + t] = f.mul_pre(dm, c);
             }
         }
         rows.push(out);
@@ -380,7 +507,7 @@ fn lift_rows(
     let start = (hbits as usize).div_ceil(61).max(1);
     for p in modular::primes() {
         let f = Fp::new(p);
-        let Some(img) = row_image(f, pp, adj, delta, h, wlen) else {
+        let Some(img) = row_image(f, pp, adj, delta, h, wlen, fps.is_empty()) else {
             unlucky += 1;
             if unlucky > 3 {
                 return None;
@@ -457,6 +584,36 @@ pub fn hermite_from_adjugate(
     det: &[BigInt],
     adj: &[Vec<IntPoly>],
 ) -> Option<super::SmithDecomposition<QxRing>> {
+    small_parts(a, det, adj, delta).and_then(|p| p.into_decomposition(at, delta))
+}
+
+/// [`hermite_from_adjugate`]'s result before `U⁻¹` is built: the parts
+/// [`certify_small`] needs, and what `U⁻¹` is built from when that
+/// certificate does not apply ([`SmallParts::into_decomposition`]).
+pub struct SmallParts {
+    /// D, U, V, V⁻¹.
+    pub dec: SmallDecomposition,
+    /// h as (numerators, denominator) per row.
+    h: Vec<(Vec<BigInt>, BigInt)>,
+    /// The contents of U's rows.
+    gs: Vec<BigInt>,
+    /// The content of det Ã.
+    cont: BigInt,
+    /// Its primitive part.
+    pp: Vec<BigInt>,
+    /// The content of U's last row.
+    g: BigInt,
+    /// Whether lc(det Ã) is negative.
+    lc_negative: bool,
+}
+
+/// [`hermite_from_adjugate`] without `U⁻¹` (see [`SmallParts`]).
+pub fn small_parts(
+    a: &Matrix<QxRing>,
+    det: &[BigInt],
+    adj: &[Vec<IntPoly>],
+    delta: &[BigInt],
+) -> Option<SmallParts> {
     let n = a.rows();
     let r = a.ring.clone();
     let big_n = det.len().checked_sub(1).filter(|&d| d >= 1)?;
@@ -541,70 +698,98 @@ pub fn hermite_from_adjugate(
     let f = r.normalize(&QPoly::from_ints(det.to_vec()));
     let mut d = Matrix::identity(r.clone(), n);
     d.set(n - 1, n - 1, f);
-    // U⁻¹ = A·V·D⁻¹: column k < n is A's over λ_k, i.e. Ã_rk·g_k/(δ_r·den_k·cont);
-    // the last is (A_n − Σ_k A_k·h_k)/(f·λ_n) = Y_r·sign(lc)·g_n/(δ_r·E·cont)
-    // with E = lcm(den_k), H_k = h_k·E and Y_r = (Ã_rn·E − Σ_k Ã_rk·H_k)/pp(c)
-    // (exact over Z by Gauss's lemma).
-    let e = h.iter().fold(BigInt::one(), |l, (_, de)| {
-        crate::algebra::intgcd::lcm(&l, de)
-    });
-    let hs: Vec<Vec<BigInt>> = h
-        .iter()
-        .map(|(nu, de)| {
-            let s = &e / de;
-            nu.iter().map(|c| c * &s).collect()
-        })
-        .collect();
-    let mut u_inv = Matrix::zeros(r.clone(), n, n);
-    for (row, (ar, dr)) in at.iter().zip(delta).enumerate() {
-        for k in 0..n - 1 {
-            let den = dr * &h[k].1 * &cont;
-            u_inv.set(
-                row,
-                k,
-                QPoly::new(ar[k].iter().map(|c| c * &gs[k]).collect(), den),
-            );
-        }
-        let mut x: Vec<BigInt> = ar[n - 1].iter().map(|c| c * &e).collect();
-        for (ak, hk) in ar.iter().zip(&hs) {
-            if ak.is_empty() || hk.is_empty() {
-                continue;
+    Some(SmallParts {
+        dec: SmallDecomposition { d, u, v, v_inv },
+        h,
+        gs,
+        cont,
+        pp,
+        g,
+        lc_negative: lc.is_negative(),
+    })
+}
+
+impl SmallParts {
+    /// The full decomposition: `U⁻¹` built exactly over Z from `Ã = Δ·A`
+    /// (`at`, `delta`); `None` when an exact division fails (then h was
+    /// wrong).
+    pub fn into_decomposition(
+        self,
+        at: &[Vec<IntPoly>],
+        delta: &[BigInt],
+    ) -> Option<super::SmithDecomposition<QxRing>> {
+        let SmallParts {
+            dec: SmallDecomposition { d, u, v, v_inv },
+            h,
+            gs,
+            cont,
+            pp,
+            g,
+            lc_negative,
+        } = self;
+        let n = u.rows();
+        let r = u.ring.clone();
+        // U⁻¹ = A·V·D⁻¹: column k < n is A's over λ_k, i.e. Ã_rk·g_k/(δ_r·den_k·cont);
+        // the last is (A_n − Σ_k A_k·h_k)/(f·λ_n) = Y_r·sign(lc)·g_n/(δ_r·E·cont)
+        // with E = lcm(den_k), H_k = h_k·E and Y_r = (Ã_rn·E − Σ_k Ã_rk·H_k)/pp(c)
+        // (exact over Z by Gauss's lemma).
+        let e = h.iter().fold(BigInt::one(), |l, (_, de)| {
+            crate::algebra::intgcd::lcm(&l, de)
+        });
+        let hs: Vec<Vec<BigInt>> = h
+            .iter()
+            .map(|(nu, de)| {
+                let s = &e / de;
+                nu.iter().map(|c| c * &s).collect()
+            })
+            .collect();
+        let mut u_inv = Matrix::zeros(r.clone(), n, n);
+        for (row, (ar, dr)) in at.iter().zip(delta).enumerate() {
+            for k in 0..n - 1 {
+                let den = dr * &h[k].1 * &cont;
+                u_inv.set(
+                    row,
+                    k,
+                    QPoly::new(ar[k].iter().map(|c| c * &gs[k]).collect(), den),
+                );
             }
-            let len = ak.len() + hk.len() - 1;
-            if x.len() < len {
-                x.resize(len, BigInt::zero());
-            }
-            for (t, c) in ak.iter().enumerate() {
-                if c.is_zero() {
+            let mut x: Vec<BigInt> = ar[n - 1].iter().map(|c| c * &e).collect();
+            for (ak, hk) in ar.iter().zip(&hs) {
+                if ak.is_empty() || hk.is_empty() {
                     continue;
                 }
-                for (s2, y) in hk.iter().enumerate() {
-                    x[t + s2] -= c * y;
+                let len = ak.len() + hk.len() - 1;
+                if x.len() < len {
+                    x.resize(len, BigInt::zero());
+                }
+                for (t, c) in ak.iter().enumerate() {
+                    if c.is_zero() {
+                        continue;
+                    }
+                    for (s2, y) in hk.iter().enumerate() {
+                        x[t + s2] -= c * y;
+                    }
                 }
             }
+            while x.last().is_some_and(|c| c.is_zero()) {
+                x.pop();
+            }
+            let y = crate::algebra::modgcd::int_div_exact(&x, &pp)?;
+            let scale = if lc_negative { -g.clone() } else { g.clone() };
+            u_inv.set(
+                row,
+                n - 1,
+                QPoly::new(y.into_iter().map(|c| c * &scale).collect(), dr * &e * &cont),
+            );
         }
-        while x.last().is_some_and(|c| c.is_zero()) {
-            x.pop();
-        }
-        let y = crate::algebra::modgcd::int_div_exact(&x, &pp)?;
-        let scale = if lc.is_negative() {
-            -g.clone()
-        } else {
-            g.clone()
-        };
-        u_inv.set(
-            row,
-            n - 1,
-            QPoly::new(y.into_iter().map(|c| c * &scale).collect(), dr * &e * &cont),
-        );
+        Some(super::SmithDecomposition {
+            d,
+            u,
+            v,
+            u_inv,
+            v_inv,
+        })
     }
-    Some(super::SmithDecomposition {
-        d,
-        u,
-        v,
-        u_inv,
-        v_inv,
-    })
 }
 
 impl SmallDecomposition {
@@ -642,7 +827,20 @@ fn sparse_product(x: &Matrix<QxRing>, y: &Matrix<QxRing>) -> Matrix<QxRing> {
                 if b.is_zero() {
                     continue;
                 }
-                let e = r.add(out.get(i, k), &r.mul(a, b));
+                // Entries are in normal form, so a product by one and a
+                // sum with zero are copies.
+                let prod = if r.is_one(a) {
+                    b.clone()
+                } else if r.is_one(b) {
+                    a.clone()
+                } else {
+                    r.mul(a, b)
+                };
+                let e = if out.get(i, k).is_zero() {
+                    prod
+                } else {
+                    r.add(out.get(i, k), &prod)
+                };
                 out.set(i, k, e);
             }
         }
