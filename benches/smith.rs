@@ -156,7 +156,7 @@ fn process_cpu() -> Duration {
 }
 
 /// Process CPU time of `iters` certified Smith reports of `a`.
-fn cpu_time_of(iters: u64, a: &Matrix) -> Duration {
+fn cpu_time_of(iters: u64, a: &Matrix<PolyRing>) -> Duration {
     let t0 = process_cpu();
     for _ in 0..iters {
         black_box(smith_report("A", black_box(a), &SmithOptions::default()).expect("certified"));
