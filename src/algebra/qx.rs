@@ -351,6 +351,7 @@ impl Ring for QxRing {
     /// lowest terms, unit coefficients omitted), without building a tree
     /// per coefficient: a large U prints several times faster.
     fn lmx(&self, a: &QPoly) -> String {
+        use num_traits::ToPrimitive;
         use std::fmt::Write;
         if a.is_zero() {
             return "0".to_string();
@@ -372,6 +373,16 @@ impl Ring for QxRing {
             let mag = c.magnitude();
             let (n, d) = if a.den.is_one() {
                 (std::borrow::Cow::Borrowed(mag), None)
+            } else if let Some(den) = a.den.to_u64() {
+                // A word-size denominator: the gcd from one remainder.
+                let r = (mag % den).to_u64().unwrap_or(0);
+                let g = num_integer::Integer::gcd(&r, &den);
+                let n = if g == 1 {
+                    std::borrow::Cow::Borrowed(mag)
+                } else {
+                    std::borrow::Cow::Owned(mag / g)
+                };
+                (n, (den != g).then(|| num_bigint::BigUint::from(den / g)))
             } else {
                 let g = super::intgcd::gcd_nat(mag, a.den.magnitude());
                 let d = a.den.magnitude() / &g;
@@ -563,8 +574,9 @@ mod tests {
                     _ => (BigInt::from(next() % 2001 - 1000)) * &big,
                 })
                 .collect();
-            let den = match next() % 3 {
+            let den = match next() % 4 {
                 0 => BigInt::one(),
+                1 => BigInt::from(next() % 60 + 1) * &big * &big * &big,
                 _ => BigInt::from(next() % 60 + 1) * &big,
             };
             let a = QPoly::new(num, den);
