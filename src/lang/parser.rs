@@ -500,6 +500,12 @@ pub fn parse_exact(text: &str) -> Option<BigRational> {
 }
 
 fn parse_number(text: &str, span: Span) -> Result<BigRational, LangError> {
+    // Most literals are small integers: no digit string, no gcd.
+    if text.len() <= 18
+        && let Ok(v) = text.parse::<u64>()
+    {
+        return Ok(BigRational::from_integer(BigInt::from(v)));
+    }
     let (int_part, frac_part) = text.split_once('.').unwrap_or((text, ""));
     let digits = format!("{int_part}{frac_part}");
     let numer = BigInt::parse_bytes(digits.as_bytes(), 10)
@@ -800,6 +806,13 @@ mod tests {
         assert_eq!(parse_number("0.25", s).ok(), Some(q(1, 4)));
         assert_eq!(parse_number("12", s).ok(), Some(q(12, 1)));
         assert_eq!(parse_number("1.50", s).ok(), Some(q(3, 2)));
+        assert_eq!(parse_number("007", s).ok(), Some(q(7, 1)));
+        assert_eq!(parse_number("0", s).ok(), Some(q(0, 1)));
+        let big = "123456789012345678901234567890";
+        assert_eq!(
+            parse_number(big, s).ok().map(|v| v.to_string()),
+            Some(big.to_string())
+        );
     }
 
     #[test]
