@@ -420,6 +420,51 @@ pub fn rational_reconstruct(c: &BigInt, m: &BigInt) -> Option<(BigInt, BigInt)> 
     Some((n, d))
 }
 
+/// Rational reconstruction of a vector with one common denominator,
+/// starting from the candidate denominator `l` (1 when none is known):
+/// `(numerators, denominator)` with every |numerator| and the denominator
+/// at most √(m/2), or `None`.
+pub fn rational_reconstruct_vec(
+    c: &[BigInt],
+    m: &BigInt,
+    l: &BigInt,
+) -> Option<(Vec<BigInt>, BigInt)> {
+    let bound = (m >> 1u32).sqrt();
+    let mut l = l.clone();
+    let mut nums: Vec<BigInt> = Vec::with_capacity(c.len());
+    for x in c {
+        let t = symmetric(&(x * &l), m);
+        if t.abs() <= bound {
+            nums.push(t);
+            continue;
+        }
+        let (nn, dd) = rational_reconstruct(&(x * &l), m)?;
+        // x ≡ nn/(dd·l): scale what came before by dd.
+        for v in nums.iter_mut() {
+            *v *= &dd;
+        }
+        l *= dd;
+        if l > bound {
+            return None;
+        }
+        nums.push(nn);
+    }
+    Some((nums, l))
+}
+
+/// Whether the rational vector `nums/den` reduces to `r` modulo `f` (a
+/// denominator divisible by p never agrees).
+pub fn agrees(f: Fp, nums: &[BigInt], den: &BigInt, r: &[u64]) -> bool {
+    let d = f.reduce(den);
+    if d == 0 {
+        return false;
+    }
+    let dm = f.prep(d);
+    nums.iter()
+        .zip(r)
+        .all(|(x, &y)| f.reduce(x) == f.mul_pre(dm, y))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -163,46 +163,6 @@ fn h_image(f: Fp, det: &[BigInt], adj: &[Vec<IntPoly>], order: &[usize]) -> Opti
     Some(HImage { f, h })
 }
 
-/// Rational reconstruction of a vector with one common denominator,
-/// starting from the candidate denominator `l`: `(numerators,
-/// denominator)` with every |numerator| and the denominator at most
-/// √(m/2), or `None`.
-fn reconstruct_vec(c: &[BigInt], m: &BigInt, l: &BigInt) -> Option<(Vec<BigInt>, BigInt)> {
-    let bound = (m >> 1u32).sqrt();
-    let mut l = l.clone();
-    let mut nums: Vec<BigInt> = Vec::with_capacity(c.len());
-    for x in c {
-        let t = modular::symmetric(&(x * &l), m);
-        if t.abs() <= bound {
-            nums.push(t);
-            continue;
-        }
-        let (nn, dd) = modular::rational_reconstruct(&(x * &l), m)?;
-        // x ≡ nn/(dd·l): scale what came before by dd.
-        for v in nums.iter_mut() {
-            *v *= &dd;
-        }
-        l *= dd;
-        if l > bound {
-            return None;
-        }
-        nums.push(nn);
-    }
-    Some((nums, l))
-}
-
-/// Whether the rational vector `nums/den` reduces to `r` modulo `f`.
-fn agrees(f: Fp, nums: &[BigInt], den: &BigInt, r: &[u64]) -> bool {
-    let d = reduce_int(f, den);
-    if d == 0 {
-        return false;
-    }
-    let dm = f.prep(d);
-    nums.iter()
-        .zip(r)
-        .all(|(x, &y)| reduce_int(f, x) == f.mul_pre(dm, y))
-}
-
 /// The rational vectors `h_i` (numerators, positive denominator, not yet
 /// in lowest terms) from images modulo word primes: rational
 /// reconstruction over the first k primes, accepted when the next prime's
@@ -256,19 +216,22 @@ fn reconstruct_h(
                 .collect()
         };
         // A cheap probe on h_0 first.
-        let Some((nums, den)) = reconstruct_vec(&lift(0), &basis.m, &BigInt::one()) else {
+        let Some((nums, den)) =
+            modular::rational_reconstruct_vec(&lift(0), &basis.m, &BigInt::one())
+        else {
             continue;
         };
-        if !agrees(check.f, &nums, &den, &check.h[0]) {
+        if !modular::agrees(check.f, &nums, &den, &check.h[0]) {
             continue;
         }
         let mut out = vec![(nums, den)];
         for i in 1..check.h.len() {
             let l = out[i - 1].1.clone();
-            let Some((nums, den)) = reconstruct_vec(&lift(i), &basis.m, &l) else {
+            let Some((nums, den)) = modular::rational_reconstruct_vec(&lift(i), &basis.m, &l)
+            else {
                 break;
             };
-            if !agrees(check.f, &nums, &den, &check.h[i]) {
+            if !modular::agrees(check.f, &nums, &den, &check.h[i]) {
                 break;
             }
             out.push((nums, den));

@@ -13,7 +13,7 @@
 use crate::algebra::modular::{self, Fp, UP};
 use crate::algebra::qx::QPoly;
 use num_bigint::BigInt;
-use num_traits::{One, Signed, Zero};
+use num_traits::{One, Zero};
 
 /// Primes tried before the route declines.
 const MAX_PRIMES: usize = 64;
@@ -214,36 +214,6 @@ struct RowState {
     done: bool,
 }
 
-/// Rational reconstruction of a vector with one common denominator
-/// (every numerator and the denominator at most √(m/2)).
-fn reconstruct(c: &[BigInt], m: &BigInt) -> Option<(Vec<BigInt>, BigInt)> {
-    let bound = (m >> 1u32).sqrt();
-    let mut l = BigInt::one();
-    let mut nums: Vec<BigInt> = Vec::with_capacity(c.len());
-    for x in c {
-        let t = modular::symmetric(&(x * &l), m);
-        if t.abs() <= bound {
-            nums.push(t);
-            continue;
-        }
-        let (nn, dd) = modular::rational_reconstruct(&(x * &l), m)?;
-        for v in nums.iter_mut() {
-            *v *= &dd;
-        }
-        l *= dd;
-        if l > bound {
-            return None;
-        }
-        nums.push(nn);
-    }
-    Some((nums, l))
-}
-
-fn agrees(f: Fp, nums: &[BigInt], den: &BigInt, r: &[u64]) -> bool {
-    let d = f.reduce(den);
-    d != 0 && nums.iter().zip(r).all(|(x, &y)| f.reduce(x) == f.mul(d, y))
-}
-
 /// The reduced Hermite basis of `L(A) + c_loc·Q[x]ⁿ` and its `first`,
 /// from images modulo word primes (see the module documentation); `None`
 /// when a prime's pivot degrees differ from the first's, or no
@@ -300,7 +270,7 @@ pub fn local_hermite_modular(a: &[Vec<QPoly>], c_loc: &QPoly) -> Option<(Vec<Vec
                 .map(|(t, k)| h[i][t].get(k).copied().unwrap_or(0))
                 .collect();
             if let Some((nums, den)) = &st.candidate
-                && agrees(f, nums, den, &img)
+                && modular::agrees(f, nums, den, &img)
             {
                 st.done = true;
                 continue;
@@ -316,7 +286,7 @@ pub fn local_hermite_modular(a: &[Vec<QPoly>], c_loc: &QPoly) -> Option<(Vec<Vec
         m *= BigInt::from(p);
         if count >= 1 {
             for st in states.iter_mut().filter(|s| !s.done) {
-                st.candidate = reconstruct(&st.residues, &m);
+                st.candidate = modular::rational_reconstruct_vec(&st.residues, &m, &BigInt::one());
             }
         }
     }
