@@ -28,36 +28,22 @@ import time
 from concurrent.futures import ThreadPoolExecutor
 
 
+def spaced(a, b, n, interior):
+    """n values from a to b, the ends exact, the inner ones interior(s)
+    for s = k/(n − 1)."""
+    return [a if k == 0 else b if k == n - 1 else interior(k / (n - 1)) for k in range(n)]
+
+
 def linear(a, b, n):
     """START:END:COUNT as parse_range gives it (12 digits of the scale)."""
-    out = []
     scale = max(abs(a), abs(b))
     digits = min(max(11 - math.floor(math.log10(scale)), 0), 400)
-    for k in range(n):
-        s = k / (n - 1)
-        if k == 0:
-            out.append(a)
-        elif k == n - 1:
-            out.append(b)
-        else:
-            v = a * (1 - s) + b * s
-            out.append(float(f"{v:.{digits}f}") + 0.0)
-    return out
+    return spaced(a, b, n, lambda s: float(f"{a * (1 - s) + b * s:.{digits}f}") + 0.0)
 
 
 def logspace(a, b, n):
     """log:START:END:COUNT as parse_range gives it (12 significant digits)."""
-    out = []
-    for k in range(n):
-        s = k / (n - 1)
-        if k == 0:
-            out.append(a)
-        elif k == n - 1:
-            out.append(b)
-        else:
-            v = math.exp(math.log(a) * (1 - s) + math.log(b) * s)
-            out.append(float(f"{v:.11e}"))
-    return out
+    return spaced(a, b, n, lambda s: float(f"{math.exp(math.log(a) * (1 - s) + math.log(b) * s):.11e}"))
 
 
 def parse(spec):

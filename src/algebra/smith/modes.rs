@@ -462,6 +462,32 @@ fn small_certified_report(
         .phase("certifying U·A·V = D, V·V⁻¹ = I, det U constant from degrees");
     let p = super::small::certificate_prime()?;
     let cert = super::small::certify_small(au, small, p);
+    verified_small_report(
+        name,
+        a_poly,
+        small,
+        cert,
+        NONSINGULAR_ALGORITHM,
+        ring,
+        note,
+        opts,
+    )
+}
+
+/// The report of a one-symbol decomposition whose transforms were
+/// certified without `U⁻¹` (the dense and the trailing routes); `None`
+/// when the certificate failed (the caller then falls back).
+#[allow(clippy::too_many_arguments)]
+fn verified_small_report(
+    name: &str,
+    a_poly: &Matrix<PolyRing>,
+    small: &super::small::SmallDecomposition,
+    cert: Certificate,
+    algorithm: &str,
+    ring: &str,
+    note: &str,
+    opts: &SmithOptions,
+) -> Option<SmithReport> {
     if !cert.verified() {
         return None;
     }
@@ -471,7 +497,7 @@ fn small_certified_report(
         a_poly,
         [&small.d, &small.u, &small.v],
         cert,
-        NONSINGULAR_ALGORITHM,
+        algorithm,
         Mode::OneSymbol,
         ring.to_string(),
         note.to_string(),
@@ -501,21 +527,16 @@ fn trailing_report(
     opts.progress
         .phase("certifying U·A·V = D, V·V⁻¹ = I, det U constant from degrees");
     let cert = super::trailing_cert::certify_transforms(au, &dec);
-    if !cert.verified() {
-        return None;
-    }
-    opts.progress.phase("formatting the report");
-    Some(transforms_report(
+    verified_small_report(
         name,
         a_poly,
-        [&dec.d, &dec.u, &dec.v],
+        &dec,
         cert,
         TRAILING_ALGORITHM,
-        Mode::OneSymbol,
-        ring.to_string(),
-        note.to_string(),
+        ring,
+        note,
         opts,
-    ))
+    )
 }
 
 #[allow(clippy::too_many_arguments)]
