@@ -208,6 +208,13 @@ fn singular_2_term(v: &[f64], x: f64) -> f64 {
     x / RFunc::Sqrt.apply(real_pow(v[0], 2.0) - real_pow(x, 2.0))
 }
 
+/// Asymptotic estimate of the scalar `c`: `(4*((8/9)^(1 - (2*ln(2)))))*exp(ln(8/9)/(1801/30000))`.
+fn estimate_c(_v: &[f64], _x: f64) -> f64 {
+    let e0 = 4.0 * real_pow(0.8888888888888888, 1.0 - 2.0 * RFunc::Ln.apply(2.0));
+    let e1 = RFunc::Exp.apply(RFunc::Ln.apply(0.8888888888888888) / 0.060033333333333334);
+    e0 * e1
+}
+
 /// The split-domain problem, ready for `lambdamat::plan::solve_split_input`.
 pub fn input() -> Result<SplitInput, PlanError> {
     let contact = SplitContact {
@@ -279,6 +286,7 @@ pub fn input() -> Result<SplitInput, PlanError> {
             coefficient: 0,
             value: RealFn::new(const_0),
         }],
+        estimates: vec![Some(RealFn::new(estimate_c))],
     };
     let sys = system()?;
     Ok(SplitInput { sys, contact })

@@ -261,6 +261,9 @@ fn text(s: &HertzResult, given_c: bool) -> String {
                 e.end_value,
                 pm(e.scalar.as_str())
             );
+            if let Some(line) = super::split::estimate_line(e) {
+                let _ = writeln!(o, "  {line}");
+            }
             if let Some(l) = &s.limit {
                 let _ = writeln!(o, "  {}", limit_info(l));
             }
@@ -301,11 +304,16 @@ fn text(s: &HertzResult, given_c: bool) -> String {
             "NOT reached"
         }
     );
+    // At an end answer the zone beside the end lies inside the gap.
+    let gap = "not checked (inside the unresolved gap)";
+    let (stick, slip) = match s.end_answer.as_ref().map(|e| e.end) {
+        Some(RangeEnd::Lower) => (gap, ok(s.slip_ok)),
+        Some(RangeEnd::Upper) => (ok(s.stick_ok), gap),
+        None => (ok(s.stick_ok), ok(s.slip_ok)),
+    };
     let _ = writeln!(
         o,
-        "  checks: stick q < μp on [0,c): {}; slip u < 0 on (c,1]: {}",
-        ok(s.stick_ok),
-        ok(s.slip_ok)
+        "  checks: stick q < μp on [0,c): {stick}; slip u < 0 on (c,1]: {slip}"
     );
     // Pointwise values carry their own estimates (the two levels' values,
     // each at its own c); none in the limits without shear.

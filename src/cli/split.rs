@@ -161,6 +161,9 @@ pub fn write_text(r: &SplitReport, w: &mut dyn Write) -> Result<(), CliError> {
             "scalar {} is bounded, not resolved: the root of its condition lies within {:.1e} of the end {} (it is given as the middle of that gap); the outputs are those at {} = {:.6e}, each with its variation over the gap in its estimate",
             e.scalar, e.distance, e.end_value, e.scalar, e.at
         )?;
+        if let Some(line) = estimate_line(e) {
+            writeln!(w, "{line}")?;
+        }
     }
     if let Some(c) = r.end_check.as_ref().filter(|c| c.graded) {
         writeln!(w, "{}", end_grading_line(c))?;
@@ -178,4 +181,21 @@ pub fn write_text(r: &SplitReport, w: &mut dyn Write) -> Result<(), CliError> {
         writeln!(w, "singular term of {u} at {at}: measured exponent -{beta}")?;
     }
     Ok(())
+}
+
+/// What placed an end answer's root at its end, when the scalar has a
+/// declared estimate there: the estimate alone (the condition's trend is
+/// silent, and why), or both.
+pub fn estimate_line(e: &crate::plan::split_end::EndAnswer) -> Option<String> {
+    let v = e.by_estimate?;
+    Some(match &e.trend_silent {
+        Some(why) => format!(
+            "the root is placed at this end by the declared estimate {} ~ {v:.3e} alone: the condition keeps one sign over the resolved range, but its trend does not show the root ({why})",
+            e.scalar
+        ),
+        None => format!(
+            "the declared estimate {} ~ {v:.3e} agrees: the condition's trend shows the root beyond this end too",
+            e.scalar
+        ),
+    })
 }

@@ -155,10 +155,15 @@ impl Fns {
                 format!("slot_{}", self.slots.get(*i).map_or("", String::as_str)),
                 "Slot value".to_string(),
             ),
-            _ if !role.starts_with("real_") && !uses_var(e) && !e.uses_x() => (
-                format!("const_{}", text.replace('-', "minus_")),
-                "A constant".to_string(),
-            ),
+            _ if !(role.starts_with("real_") || role.starts_with("estimate_"))
+                && !uses_var(e)
+                && !e.uses_x() =>
+            {
+                (
+                    format!("const_{}", text.replace('-', "minus_")),
+                    "A constant".to_string(),
+                )
+            }
             _ => (role.to_string(), what.to_string()),
         };
         let f = self.names.fresh(&role);
@@ -327,6 +332,22 @@ fn contact_lit(c: &Contact, fns: &mut Fns) -> String {
             )
         })
         .collect();
+    let estimates: Vec<String> = c
+        .estimates
+        .iter()
+        .zip(&c.scalars)
+        .map(|(e, s)| match e {
+            Some(e) => {
+                let f = fns.real(
+                    &format!("estimate_{}", s.name),
+                    &format!("Asymptotic estimate of the scalar `{}`", s.name),
+                    e,
+                );
+                format!("Some({f})")
+            }
+            None => "None".into(),
+        })
+        .collect();
     let fields = [
         ("scalars", list(&scalars)),
         ("reals", list(&reals)),
@@ -336,6 +357,7 @@ fn contact_lit(c: &Contact, fns: &mut Fns) -> String {
         ("singulars", list(&singulars)),
         ("coefficients", list(&coefficients)),
         ("conditions", list(&conditions)),
+        ("estimates", list(&estimates)),
     ];
     lit("SplitContact", &fields)
 }

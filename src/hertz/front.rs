@@ -919,11 +919,18 @@ fn solve_inner(nu: f64, given: Given, opts: &SplitOptions) -> Result<HertzResult
     let samples = s.sample_last(&profile_points(c, 200))?;
     // A point closer to c than c's own uncertainty is in neither zone: at
     // x = c + 6e-16 the slip is a rounding-level ±1e-19.
-    let blur = if error_estimate.is_finite() {
-        error_estimate
-    } else {
-        0.0
-    };
+    // At an end answer the fields are those at the resolved point `c`,
+    // the gap's far side: the zone between `c` and the end (the stick zone
+    // at `c → 0`, the slip zone at `c → 1`) is inside the unresolved gap
+    // and is not checked.
+    let gap = s
+        .end_answer
+        .as_ref()
+        .map_or(0.0, |e| (e.at - e.end_value).abs());
+    let blur = [error_estimate, gap]
+        .into_iter()
+        .filter(|e| e.is_finite())
+        .fold(0.0, f64::max);
     s.stick_ok = samples
         .iter()
         .filter(|v| v.x < c - blur)

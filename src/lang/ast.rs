@@ -202,12 +202,15 @@ pub enum Stmt {
         /// Where it holds.
         domain: Interval,
     },
-    /// `scalar c in (0, 1)`
+    /// `scalar c in (0, 1)` or `scalar c in (0, 1) ~ estimate`
     Scalar {
         /// The scalar's name.
         name: Ident,
         /// The range searched for it.
         range: Interval,
+        /// A derived asymptotic estimate of its value (a real expression
+        /// of the parameters).
+        estimate: Option<Expr>,
     },
     /// `singular p at 1 ~ (1 - x)^(-alpha)` or `singular q at c- ~ B*g(x)`
     Singular {

@@ -148,13 +148,23 @@ pub fn lower_contact(file: &File, scope: &Scope) -> Result<Contact, LangError> {
                     });
                 }
             }
-            Stmt::Scalar { name, range } => c.scalars.push(Scalar {
-                name: name.name.clone(),
-                range: (
-                    end(&range.lo, scope, f64::NEG_INFINITY)?,
-                    end(&range.hi, scope, f64::INFINITY)?,
-                ),
-            }),
+            Stmt::Scalar {
+                name,
+                range,
+                estimate,
+            } => {
+                c.scalars.push(Scalar {
+                    name: name.name.clone(),
+                    range: (
+                        end(&range.lo, scope, f64::NEG_INFINITY)?,
+                        end(&range.hi, scope, f64::INFINITY)?,
+                    ),
+                });
+                c.estimates.push(match estimate {
+                    Some(e) => Some(rexpr(e, scope, &slots)?),
+                    None => None,
+                });
+            }
             Stmt::Unknown(names, Some(d)) => {
                 let d = interval(d, scope, &slots)?;
                 for id in names {

@@ -172,7 +172,12 @@ fn statement(pair: Pair<'_, Rule>) -> Result<Statement, LangError> {
             let name = ident(&next(&mut it, span)?);
             let _kw_in = next(&mut it, span)?;
             let range = interval(next(&mut it, span)?, span)?;
-            Stmt::Scalar { name, range }
+            let estimate = it.next().map(expr).transpose()?;
+            Stmt::Scalar {
+                name,
+                range,
+                estimate,
+            }
         }
         Rule::singular_decl => {
             let mut it = pair.into_inner().skip(1);

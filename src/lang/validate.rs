@@ -329,7 +329,14 @@ impl Validator {
                     value,
                     domain,
                 } => self.relation(unknown, value, domain),
-                Stmt::Scalar { range, .. } => self.scalar_range(range),
+                Stmt::Scalar {
+                    range, estimate, ..
+                } => {
+                    self.scalar_range(range);
+                    if let Some(e) = estimate {
+                        self.scalar_estimate(e);
+                    }
+                }
                 Stmt::Singular {
                     unknown, at, body, ..
                 } => self.singular(unknown, at, body),

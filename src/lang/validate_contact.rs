@@ -251,6 +251,43 @@ impl Validator {
         }
     }
 
+    /// A scalar's asymptotic estimate: a real expression of the
+    /// parameters (not of `x` or of any scalar: it estimates one).
+    pub(super) fn scalar_estimate(&mut self, e: &Expr) {
+        if !self.real_expr(e, false) {
+            return;
+        }
+        fn scalar_name<'a>(v: &Validator, e: &'a Expr) -> Option<&'a Ident> {
+            match &e.kind {
+                ExprKind::Name(id) => matches!(
+                    v.scope.get(&id.name),
+                    Some(Entry {
+                        sort: Sort::Scalar(_),
+                        ..
+                    })
+                )
+                .then_some(id),
+                ExprKind::Neg(a) | ExprKind::Call(_, a) => scalar_name(v, a),
+                ExprKind::Binary(_, a, b) => scalar_name(v, a).or_else(|| scalar_name(v, b)),
+                _ => None,
+            }
+        }
+        if let Some(id) = scalar_name(self, e) {
+            self.err(
+                LangError::new(
+                    ErrorKind::WrongSort,
+                    format!(
+                        "a scalar's estimate cannot use the scalar `{}`: it is a value of the parameters",
+                        id.name
+                    ),
+                    id.span,
+                    "a scalar",
+                )
+                .with_help("write it with numbers, parameters and elementary functions, e.g. `scalar c in (0, 1) ~ 4*exp(-1/mu)`"),
+            );
+        }
+    }
+
     /// `relation u = k * v on I`.
     pub(super) fn relation(&mut self, unknown: &Ident, value: &Expr, domain: &Interval) {
         self.unknown_ref(unknown);

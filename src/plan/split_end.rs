@@ -87,6 +87,13 @@ pub struct EndAnswer {
     /// `(scalar, condition)`, ascending in the scalar: the trend that
     /// places the root beyond the end.
     pub trend: Vec<(f64, f64)>,
+    /// The declared estimate of the scalar, when it lies beyond the
+    /// resolved distance of this end (`scalar c in (0, 1) ~ …`).
+    pub by_estimate: Option<f64>,
+    /// Why the condition's trend does not show the root beyond this end,
+    /// when the declared estimate alone placed it there (`None` when the
+    /// trend shows it).
+    pub trend_silent: Option<String>,
     /// Each output's and singular coefficient's variation over the gap.
     pub variations: Vec<EndVariation>,
 }
@@ -142,11 +149,36 @@ pub fn variation_bound(o: [f64; 3], noise: f64) -> Option<(f64, Option<f64>)> {
     Some((bound, exponent))
 }
 
-/// Whether the scan's refusal `r` shows a root beyond the end (see the
-/// module's paragraph), the scalar's declared range being `range`; `Err`
-/// says why not. Rejected sign changes are allowed only on the other half
-/// of a finite range.
-fn root_beyond_end(r: &RootAtEnd, range: (f64, f64)) -> Result<(), String> {
+/// The end of `range` within whose resolved distance, by a factor
+/// [`ESTIMATE_MARGIN`], the scalar's declared estimate lies (on the range's
+/// side of the end), and the estimate's value.
+fn declared_estimate(problem: &SplitProblem, range: (f64, f64)) -> Option<(RangeEnd, f64)> {
+    let f = problem.contact.estimates.first()?.as_ref()?;
+    let value = f.eval(&problem.contact.values(&[f64::NAN]), 0.0);
+    let (lo, hi) = range;
+    if !(value.is_finite() && lo.is_finite() && hi.is_finite()) {
+        return None;
+    }
+    let width = hi - lo;
+    if value >= lo && value - lo <= ESTIMATE_MARGIN * (-S_LIMIT_LO).exp() * width {
+        Some((RangeEnd::Lower, value))
+    } else if value <= hi && hi - value <= ESTIMATE_MARGIN * (-S_LIMIT).exp() * width {
+        Some((RangeEnd::Upper, value))
+    } else {
+        None
+    }
+}
+
+/// How far inside the resolved distance of an end a declared estimate must
+/// lie to place the root there: a thousandth, so that an asymptotic
+/// estimate's relative error (its `1 + O(μ)` factor) cannot move the root
+/// into the range the scan resolved.
+pub const ESTIMATE_MARGIN: f64 = 1e-3;
+
+/// Whether the scan's refusal `r` leaves the root's place to this end: no
+/// sign change found on the resolved range, or only rejected ones on the
+/// other half of a finite range, and a finite end; `Err` says why not.
+fn root_place_known(r: &RootAtEnd, range: (f64, f64)) -> Result<(), String> {
     match &r.reason {
         // Where the discretisation failed beyond the last point reached,
         // the gap is wider (the distance of that point), not unknown.
@@ -176,6 +208,15 @@ fn root_beyond_end(r: &RootAtEnd, range: (f64, f64)) -> Result<(), String> {
     if !r.end_value.is_finite() {
         return Err(format!("the end {} is not finite", r.end_value));
     }
+    Ok(())
+}
+
+/// Whether the scan's refusal `r` shows a root beyond the end (see the
+/// module's paragraph), the scalar's declared range being `range`; `Err`
+/// says why not. Rejected sign changes are allowed only on the other half
+/// of a finite range.
+fn root_beyond_end(r: &RootAtEnd, range: (f64, f64)) -> Result<(), String> {
+    root_place_known(r, range)?;
     if r.levels_off(r.end, 1e-6) {
         return Err("the condition levels off toward the end (no root beyond it)".into());
     }
@@ -299,12 +340,62 @@ pub fn answer_at_end(
     // The end the scan named first; if it does not qualify, the other one
     // (the scan names the end where the condition is smaller, which near
     // `c → 1` may be the side of the spurious roots).
-    let r = match root_beyond_end(&r, range) {
-        Ok(()) => r,
+    let by_trend = match root_beyond_end(&r, range) {
+        Ok(()) => Ok(r.clone()),
         Err(why) => match other_end(&r, range) {
-            Some(o) if root_beyond_end(&o, range).is_ok() => Box::new(o),
-            _ => return refuse(&r, why),
+            Some(o) if root_beyond_end(&o, range).is_ok() => Ok(Box::new(o)),
+            _ => Err(why),
         },
+    };
+    // The declared estimate, where it places the root beyond an end.
+    let estimate = declared_estimate(&problem, range);
+    let (r, by_estimate, trend_silent) = match (by_trend, estimate) {
+        (Ok(t), None) => (t, None, None),
+        (Ok(t), Some((end, value))) if end == t.end => (t, Some(value), None),
+        (Ok(t), Some((end, value))) => {
+            return refuse(
+                &t,
+                format!(
+                    "the condition's trend places the root beyond the end {}, but the declared estimate {} = {value:.3e} places it at the other end {}",
+                    t.end_value,
+                    t.scalar,
+                    if end == RangeEnd::Lower {
+                        range.0
+                    } else {
+                        range.1
+                    }
+                ),
+            );
+        }
+        (Err(why), None) => return refuse(&r, why),
+        (Err(why), Some((end, value))) => {
+            let at = if r.end == end {
+                Some(*r.clone())
+            } else {
+                other_end(&r, range)
+            };
+            match at.map(|a| root_place_known(&a, range).map(|()| a)) {
+                Some(Ok(a)) => (Box::new(a), Some(value), Some(why)),
+                Some(Err(w)) => {
+                    return refuse(
+                        &r,
+                        format!(
+                            "{why}; the declared estimate {} = {value:.3e} lies beyond the resolved distance of the end, but {w}",
+                            r.scalar
+                        ),
+                    );
+                }
+                None => {
+                    return refuse(
+                        &r,
+                        format!(
+                            "{why}; the declared estimate {} = {value:.3e} lies beyond the resolved distance of the other end, which the scan did not reach",
+                            r.scalar
+                        ),
+                    );
+                }
+            }
+        }
     };
     let x1 = r.reached;
     let delta = (x1 - r.end_value).abs();
@@ -467,6 +558,8 @@ pub fn answer_at_end(
                 distance: delta,
                 at: x1,
                 trend,
+                by_estimate,
+                trend_silent: trend_silent.clone(),
                 variations: vars,
             });
             return Ok(SplitSolution {

@@ -147,6 +147,10 @@ pub struct SplitContact {
     pub coefficients: Vec<String>,
     /// Conditions fixing the scalars.
     pub conditions: Vec<SplitCondition>,
+    /// Per scalar, its declared asymptotic estimate, a function of the
+    /// slots (the scalar's own slot unused); `split_end.rs` uses it only
+    /// where the solver cannot place the root.
+    pub estimates: Vec<Option<RealFn>>,
 }
 
 impl SplitContact {
@@ -198,6 +202,11 @@ impl SplitContact {
                     coefficient: k.coefficient,
                     value: RealFn::from_expr(&k.value),
                 })
+                .collect(),
+            estimates: c
+                .estimates
+                .iter()
+                .map(|e| e.as_ref().map(RealFn::from_expr))
                 .collect(),
         }
     }

@@ -249,6 +249,10 @@ pub struct Contact {
     pub coefficients: Vec<String>,
     /// Conditions fixing the scalars.
     pub conditions: Vec<Condition>,
+    /// Per scalar, its declared asymptotic estimate (`scalar c in (0, 1) ~
+    /// e`), a function of the real parameters; the solver uses it only
+    /// where it cannot place the root itself.
+    pub estimates: Vec<Option<RExpr>>,
 }
 
 impl Contact {
