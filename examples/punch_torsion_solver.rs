@@ -243,6 +243,7 @@ pub fn input() -> Result<SplitInput, PlanError> {
             coefficient: 0,
             value: RealFn::new(const_0),
         }],
+        estimates: vec![None],
     };
     let sys = system()?;
     Ok(SplitInput { sys, contact })

@@ -22,7 +22,13 @@
 //!   monotonicity, or whose sign changes on this end's half of the range
 //!   were rejected, keeps the refusal (rejected ones on the other half,
 //!   such as the spurious roots of a contact condition that accumulate at
-//!   `c → 1`, say nothing about this end).
+//!   `c → 1`, say nothing about this end). Where the trend is lost in
+//!   rounding (the Hertz condition falls by about `μ` per e-fold of `c`,
+//!   below its noise for `μ ≲ 1e-7`), the scalar's declared asymptotic
+//!   estimate (`scalar c in (0, 1) ~ …`) places the root instead, if it
+//!   lies within [`ESTIMATE_MARGIN`] of the end's resolved distance; the
+//!   scan's other premises still hold, and a trend toward the other end
+//!   contradicts it (refused).
 //! - **The outputs are insensitive.** Each output is computed at the
 //!   distances `δ, 2δ, 4δ` from the end, on the same level. The assumption
 //!   is that it varies there like a power of the distance,
@@ -218,7 +224,10 @@ fn root_place_known(r: &RootAtEnd, range: (f64, f64)) -> Result<(), String> {
 fn root_beyond_end(r: &RootAtEnd, range: (f64, f64)) -> Result<(), String> {
     root_place_known(r, range)?;
     if r.levels_off(r.end, 1e-6) {
-        return Err("the condition levels off toward the end (no root beyond it)".into());
+        return Err(
+            "the condition levels off toward the end (its two outermost values agree within 1e-6 of their size: no trend toward a root beyond it)"
+                .into(),
+        );
     }
     // |condition| toward the end, outermost first.
     let v: Vec<f64> = match r.end {
