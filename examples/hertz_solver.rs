@@ -27,7 +27,7 @@
 //! param nu = 1/4
 //! param mu = 1801/10000
 //! param gamma = 1/3
-//! scalar c in (0, 1)
+//! scalar c in (0, 1) ~ (4*((8/9)^(1 - (2*ln(2)))))*exp(ln(8/9)/(1801/30000))
 //! param alpha = acot(1801/30000)/pi
 //! operator k1 = int(x..1) t/sqrt(t^2 - x^2) dt
 //! operator k2 = int(0..1) -1/3 dt + int(0..x) 1/3*(x/sqrt(x^2 - t^2)) dt

@@ -92,7 +92,9 @@ pub fn pretty(program: &Program) -> String {
     }
     let c = &program.contact;
     let slots = c.slots();
-    for s in &c.scalars {
+    // A scalar whose estimate uses a real parameter is declared after the
+    // real parameters (which may use scalars, but not that estimate).
+    let scalar_line = |i: usize, s: &crate::system::contact::Scalar| {
         let end = |v: f64| {
             if v.is_infinite() {
                 "inf".to_string()
@@ -100,16 +102,35 @@ pub fn pretty(program: &Program) -> String {
                 format!("{v}")
             }
         };
-        let _ = writeln!(
-            out,
-            "scalar {} in ({}, {})",
+        let estimate = match c.estimates.get(i).and_then(Option::as_ref) {
+            Some(e) => format!(" ~ {}", e.to_text(&slots)),
+            None => String::new(),
+        };
+        format!(
+            "scalar {} in ({}, {}){estimate}",
             s.name,
             end(s.range.0),
             end(s.range.1)
-        );
+        )
+    };
+    let late = |i: usize| {
+        c.estimates
+            .get(i)
+            .and_then(Option::as_ref)
+            .is_some_and(crate::system::contact::RExpr::uses_slots)
+    };
+    for (i, s) in c.scalars.iter().enumerate() {
+        if !late(i) {
+            let _ = writeln!(out, "{}", scalar_line(i, s));
+        }
     }
     for r in &c.reals {
         let _ = writeln!(out, "param {} = {}", r.name, r.value.to_text(&slots));
+    }
+    for (i, s) in c.scalars.iter().enumerate() {
+        if late(i) {
+            let _ = writeln!(out, "{}", scalar_line(i, s));
+        }
     }
     for (i, name) in names.iter().enumerate() {
         match program.operator(i) {

@@ -221,7 +221,7 @@ fn root_place_known(r: &RootAtEnd, range: (f64, f64)) -> Result<(), String> {
 /// module's paragraph), the scalar's declared range being `range`; `Err`
 /// says why not. Rejected sign changes are allowed only on the other half
 /// of a finite range.
-fn root_beyond_end(r: &RootAtEnd, range: (f64, f64)) -> Result<(), String> {
+fn root_beyond_end(problem: &SplitProblem, r: &RootAtEnd, range: (f64, f64)) -> Result<(), String> {
     root_place_known(r, range)?;
     if r.levels_off(r.end, 1e-6) {
         return Err(
@@ -234,14 +234,58 @@ fn root_beyond_end(r: &RootAtEnd, range: (f64, f64)) -> Result<(), String> {
         RangeEnd::Lower => r.trend.iter().map(|t| t.1.abs()).collect(),
         RangeEnd::Upper => r.trend.iter().rev().map(|t| t.1.abs()).collect(),
     };
-    let falls = v.len() >= 4 && v[0].max(v[1]) < v[2] && v[2] < v[3];
-    if !falls {
-        return Err(
-            "the condition's size does not fall toward the end over the scan's four outermost points"
-                .into(),
-        );
+    if v.len() < 4 {
+        return Err("the scan has fewer than four points toward the end".into());
+    }
+    // Each value's allowance: twice its measured rounding noise.
+    let a: Vec<f64> = condition_noise(problem, r)
+        .iter()
+        .map(|n| 2.0 * n)
+        .collect();
+    // Both falls resolved: from the fourth to the third outermost point,
+    // and from the third to each of the two outermost (whose order is not
+    // asked for).
+    if !(v[2] + a[2] < v[3] - a[3] && v[0] + a[0] < v[2] - a[2] && v[1] + a[1] < v[2] - a[2]) {
+        return Err(format!(
+            "the condition's size does not fall toward the end beyond its rounding noise over the scan's four outermost points (|condition| {:.6e}, {:.6e}, {:.6e}, {:.6e}, outermost first, each within {:.1e}, {:.1e}, {:.1e}, {:.1e})",
+            v[0], v[1], v[2], v[3], a[0], a[1], a[2], a[3]
+        ));
     }
     Ok(())
+}
+
+/// The rounding noise of the condition at the scan's four outermost points
+/// toward `r.end`, outermost first: the largest change of the condition on
+/// the first level when the scalar moves by 8 and 16 of its ulps, a move
+/// whose true effect is far below rounding. Where such a move is not small
+/// against the distance to the end (within about `1e-7` of an end of a unit
+/// range at `c → 1`, where one ulp is `1e-16`), it is not measured (zero).
+fn condition_noise(problem: &SplitProblem, r: &RootAtEnd) -> Vec<f64> {
+    let pts: Vec<f64> = match r.end {
+        RangeEnd::Lower => r.trend.iter().take(4).map(|t| t.0).collect(),
+        RangeEnd::Upper => r.trend.iter().rev().take(4).map(|t| t.0).collect(),
+    };
+    let lvl = SplitLevel::level(0);
+    let at = |x: f64| {
+        problem
+            .discretise(&[x], &lvl)
+            .ok()
+            .and_then(|d| d.residuals.first().copied())
+    };
+    pts.iter()
+        .map(|&x| {
+            let step = 8.0 * f64::EPSILON * x.abs();
+            if !(step > 0.0 && step <= 1e-9 * (x - r.end_value).abs()) {
+                return 0.0;
+            }
+            let Some(v) = at(x) else { return 0.0 };
+            [x + step, x + 2.0 * step]
+                .iter()
+                .filter_map(|&y| at(y))
+                .map(|w| (w - v).abs())
+                .fold(0.0, f64::max)
+        })
+        .collect()
 }
 
 /// `r` seen from the other end of the finite range `range`: the scan's
@@ -349,10 +393,10 @@ pub fn answer_at_end(
     // The end the scan named first; if it does not qualify, the other one
     // (the scan names the end where the condition is smaller, which near
     // `c → 1` may be the side of the spurious roots).
-    let by_trend = match root_beyond_end(&r, range) {
+    let by_trend = match root_beyond_end(&problem, &r, range) {
         Ok(()) => Ok(r.clone()),
         Err(why) => match other_end(&r, range) {
-            Some(o) if root_beyond_end(&o, range).is_ok() => Ok(Box::new(o)),
+            Some(o) if root_beyond_end(&problem, &o, range).is_ok() => Ok(Box::new(o)),
             _ => Err(why),
         },
     };

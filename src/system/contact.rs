@@ -136,6 +136,16 @@ impl RExpr {
             RExpr::Bin(_, a, b) => a.uses_x() || b.uses_x(),
         }
     }
+
+    /// Whether a slot (a scalar or a real parameter) occurs.
+    pub fn uses_slots(&self) -> bool {
+        match self {
+            RExpr::Var(_) => true,
+            RExpr::Const(_) | RExpr::Pi | RExpr::X => false,
+            RExpr::Neg(a) | RExpr::Call(_, a) => a.uses_slots(),
+            RExpr::Bin(_, a, b) => a.uses_slots() || b.uses_slots(),
+        }
+    }
 }
 
 /// An interval with expression ends.
