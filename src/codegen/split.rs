@@ -155,9 +155,10 @@ impl Fns {
                 format!("slot_{}", self.slots.get(*i).map_or("", String::as_str)),
                 "Slot value".to_string(),
             ),
-            _ if !(role.starts_with("real_") || role.starts_with("estimate_"))
-                && !uses_var(e)
-                && !e.uses_x() =>
+            _ if !(role.starts_with("real_")
+                || role.starts_with("estimate_")
+                || uses_var(e)
+                || e.uses_x()) =>
             {
                 (
                     format!("const_{}", text.replace('-', "minus_")),
