@@ -197,11 +197,11 @@ fn limit_info(l: &Limit) -> String {
     match *l {
         Limit::SmallFriction {
             exponent,
-            c_asymptotic: (lo, hi),
             compliance_asymptotic,
             ..
         } => format!(
-            "small-friction limit (information, not refined): c = C₀·exp(−a/μ)·(1 + O(μ)), a = {exponent:.4} (derived) gives c ≈ {lo:.2e}–{hi:.2e} (the range is the measured O(μ) term); P* = 1 + γμ(1−2/π) + γ²Jμ² + O(μ³) = {compliance_asymptotic:.8} + O(μ³) (derived)"
+            "small-friction limit (information, not refined): c = C₀·exp(−a/μ)·(1 + O(μ)), a = {exponent:.4} (derived) gives c ≈ {} (the range is the measured O(μ) term); P* = 1 + γμ(1−2/π) + γ²Jμ² + O(μ³) = {compliance_asymptotic:.15} + O(μ³) (derived)",
+            l.c_asymptotic_text()
         ),
         Limit::ThinSlip {
             compliance_infinity,

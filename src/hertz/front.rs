@@ -361,6 +361,9 @@ pub enum Limit {
         /// `C₀·exp(−a/μ + kγμ)` for `k` at the ends of
         /// [`SMALL_FRICTION_CORRECTION`] (the measured `O(μ)` term).
         c_asymptotic: (f64, f64),
+        /// Their `log₁₀`, finite where the values underflow (`−2.4988e8`
+        /// at ν = 0, μ = 1e-9).
+        log10_c_asymptotic: (f64, f64),
         /// `1 + γμ(1−2/π) + γ²Jμ²` (remainder O(μ³), measured about
         /// `−0.08γ³μ³`).
         compliance_asymptotic: f64,
@@ -413,10 +416,13 @@ impl Limit {
     fn small_friction(gamma: f64, mu: f64) -> Limit {
         let (a, c0) = small_friction_asymptotics(gamma);
         let (klo, khi) = SMALL_FRICTION_CORRECTION;
-        let c_at = |k: f64| c0 * (-a / mu + k * gamma * mu).exp();
+        let ln_c_at = |k: f64| c0.ln() - a / mu + k * gamma * mu;
+        let c_at = |k: f64| ln_c_at(k).exp();
+        let log10_c_at = |k: f64| ln_c_at(k) / std::f64::consts::LN_10;
         Limit::SmallFriction {
             exponent: a,
             c_asymptotic: (c_at(klo), c_at(khi)),
+            log10_c_asymptotic: (log10_c_at(klo), log10_c_at(khi)),
             compliance_asymptotic: 1.0
                 + gamma * mu * (1.0 - FRAC_2_PI)
                 + gamma * gamma * SMALL_FRICTION_COMPLIANCE_J * mu * mu,
@@ -445,6 +451,25 @@ impl Limit {
 
     /// `1 − c∞` of [`Limit::ThinSlip`] as text: `4.081e-7`, or `1e-1073.6`
     /// where it is below the smallest double (empty for the other limits).
+    /// The small-friction limit's range of c as text: `4.56e-25–4.58e-25`,
+    /// or powers of ten where the values underflow (`1e-249883840.2–…`).
+    pub fn c_asymptotic_text(&self) -> String {
+        match *self {
+            Limit::SmallFriction {
+                c_asymptotic: (lo, hi),
+                log10_c_asymptotic: (llo, lhi),
+                ..
+            } => {
+                if lo >= f64::MIN_POSITIVE {
+                    format!("{lo:.2e}–{hi:.2e}")
+                } else {
+                    format!("1e{llo:.1}–1e{lhi:.1}")
+                }
+            }
+            _ => String::new(),
+        }
+    }
+
     pub fn one_minus_c_infinity_text(&self) -> String {
         match *self {
             Limit::ThinSlip {
@@ -548,9 +573,9 @@ impl Limit {
         let head = match *self {
             Limit::SmallFriction {
                 exponent,
-                c_asymptotic: (c_lo, c_hi),
                 compliance_asymptotic,
                 mu_resolved,
+                ..
             } => {
                 let mu = match given {
                     Given::Mu(m) => m,
@@ -560,10 +585,11 @@ impl Limit {
                     "the stick radius is too small for the solver (it scans to {RESOLVED_STICK:.0e}; below about 1e-9 its condition and the stick shear beside c carry rounding noise of about 4e-16/c and up to 5e-14/c, and the shear-jump check refuses): \
                      (ν, μ) = ({nu}, {mu}) is in the small-friction limit, where \
                      c = C₀·exp(−a/μ)·(1 + O(μ)) with a = −ln(1−γ²)/γ = {exponent:.4} and C₀ = 4(1−γ²)^(1−2 ln 2) (derived), \
-                     so c ≈ {c_lo:.2e}–{c_hi:.2e} (the range is the measured O(μ) term; c reaches {RESOLVED_STICK:.0e} near μ ≈ {mu_resolved:.3}); \
-                     P* = 1 + γμ(1−2/π) + γ²Jμ² + O(μ³) = {compliance_asymptotic:.8} + O(μ³) (derived, J = −0.0243953; the O(μ³) remainder is measured at about −0.08γ³μ³). \
+                     so c ≈ {} (the range is the measured O(μ) term; c reaches {RESOLVED_STICK:.0e} near μ ≈ {mu_resolved:.3}); \
+                     P* = 1 + γμ(1−2/π) + γ²Jμ² + O(μ³) = {compliance_asymptotic:.15} + O(μ³) (derived, J = −0.0243953; the O(μ³) remainder is measured at about −0.08γ³μ³). \
                      These asymptotic values are not refined to the tolerance, so no answer is given \
-                     (docs/hertz_asymptotics.md)"
+                     (docs/hertz_asymptotics.md)",
+                    self.c_asymptotic_text()
                 )
             }
             Limit::ThinSlip {
