@@ -670,6 +670,9 @@ fn plan(nu: f64, given: Given) -> Result<(Source, Sets), PlanError> {
             Ok((GIVEN_C, vec![("nu", nu), ("c", c)]))
         }
         Given::Mu(mu) => {
+            if mu == f64::INFINITY {
+                return Err(invalid(infinite_friction(nu)));
+            }
             if !(mu >= 0.0 && mu.is_finite()) {
                 return Err(invalid(format!("friction μ = {mu} must be finite and ≥ 0")));
             }
@@ -680,6 +683,44 @@ fn plan(nu: f64, given: Given) -> Result<(Source, Sets), PlanError> {
             }
         }
     }
+}
+
+/// The bad-input text for `μ = ∞` at a valid `ν`. The problem is posed
+/// for finite μ: its slip-zone law `q = μp` has no μ = ∞ form (there `p`
+/// vanishes and `q` is left free), so μ = ∞ is only the limit μ → ∞,
+/// derived in docs/hertz_asymptotics.md. The text gives that limit and a
+/// finite μ that reaches it: `ln((1 − c)/(1 − c∞)) = (1/(2μ) + O(μ⁻²))/ε₀`
+/// puts `c` within `1e-15` of `c∞` for μ ≥ 1e15 at every ν (`c∞ − c ≈
+/// (1 − c∞)/(2ε₀μ)`, and `(1 − c∞)/(2ε₀) = 4e^(−π/(2ε₀))/ε₀` grows with
+/// ε₀ up to `0.081` as ν → −1), and `P*` approaches `P*∞` at a similar
+/// rate (measured: `0.15/ε₀` times `P*ₛ(1 − c∞)/μ`, below `3e-17` there).
+fn infinite_friction(nu: f64) -> String {
+    let head = "friction μ = inf: the problem is posed for a finite μ (its slip law q = μp has no μ = ∞ form), \
+                so μ = ∞ is only the limit μ → ∞";
+    let gamma = gamma_of(nu);
+    if nu >= 0.5 {
+        return format!(
+            "{head}; at ν = 1/2 there is no shear and c = 1, P* = 1 for every μ: use --mu 1"
+        );
+    }
+    let limit = Limit::thin_slip(gamma);
+    let Limit::ThinSlip {
+        compliance_infinity,
+        compliance_full_stick,
+        ..
+    } = limit
+    else {
+        return head.to_string();
+    };
+    format!(
+        "{head}, derived in docs/hertz_asymptotics.md: at ν = {nu} the stick radius tends to c∞ with \
+         1 − c∞ = δ₀(1 − δ₀/2 + O(δ₀²)) = {}, δ₀ = 8·exp(−π/(2ε₀)), ε₀ = artanh(γ)/π = {:.5}, and \
+         P* → P*ₛ(1 − δ₀/2) = {compliance_infinity:.12} (full stick P*ₛ = artanh(γ)/γ = {compliance_full_stick:.12}); \
+         since ln((1 − c)/(1 − c∞)) = (1/(2μ) + O(μ⁻²))/ε₀, a finite μ of 1e15 or more is within 1e-15 of that limit: \
+         use e.g. --mu 1e15",
+        limit.one_minus_c_infinity_text(),
+        gamma.atanh() / PI
+    )
 }
 
 /// A parameter of `prog` (an exact one, or a real one evaluated at the
