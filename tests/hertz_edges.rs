@@ -319,3 +319,31 @@ fn infinite_friction_is_bad_input_that_states_the_limit() {
         .code(2)
         .stderr(predicate::str::contains("--mu 1e15"));
 }
+
+#[test]
+fn a_given_stick_radius_just_below_its_large_friction_limit_is_refused_naming_it() {
+    // ν = 0, c = 0.998997: 1.6e-9 below the derived c∞ = 1 − δ₀(1 − δ₀/2),
+    // where μ ≈ (1 − c∞)/(2ε₀(c∞ − c)) ≈ 2e6 grows like 1/(c∞ − c). The
+    // scan on the coarsest level finds no μ up to 1e12; the refusal states
+    // the limit, the distance to it and the μ the derived rate gives (it
+    // used to say only "beyond c∞(ν) or within the solver's resolution").
+    let (d0, eps0, _) = large_mu(0.0);
+    let c_inf = 1.0 - d0 * (1.0 - d0 / 2.0);
+    let c = 0.998997;
+    let r = solve_with_limit(0.0, Given::C(c), &SplitOptions::default())
+        .err()
+        .expect("refused");
+    assert!(!r.error.is_input_error());
+    assert!(
+        matches!(r.limit, Some(Limit::BeyondLargeFriction { .. })),
+        "{:?}",
+        r.limit
+    );
+    let text = r.error.to_string();
+    let mu = (1.0 - c_inf) / (2.0 * eps0 * (c_inf - c));
+    assert!(
+        text.contains(&format!("c∞ − c = {:.2e}", c_inf - c)),
+        "{text}"
+    );
+    assert!(text.contains(&format!("puts μ near {mu:.2e}")), "{text}");
+}

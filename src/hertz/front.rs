@@ -616,11 +616,35 @@ impl Limit {
                     Given::C(c) => c,
                     Given::Mu(_) => f64::NAN,
                 };
+                // How far below c∞ the given c is, and the μ the derived
+                // rate c∞ − c ≈ (1 − c∞)/(2ε₀μ) gives it: μ grows like
+                // 1/(c∞ − c), so an error of c∞ moves μ by μ/(c∞ − c) per
+                // unit. The O(δ₀³) term of 1 − c∞ (coefficient measured
+                // ≈ 0.19) bounds how well the formula places c∞.
+                let (one_minus, eps0) = large_friction_asymptotics(gamma);
+                let d0 = 8.0 * (-PI / (2.0 * eps0)).exp();
+                let formula_err = 0.2 * d0.powi(3);
+                let gap = c_infinity - c;
+                let near = if gap > 5.0 * formula_err {
+                    let mu = one_minus / (2.0 * eps0 * gap);
+                    format!(
+                        "; here c∞ − c = {gap:.2e}, where the rate c∞ − c ≈ (1 − c∞)/(2ε₀μ) puts μ near \
+                         {mu:.2e}: μ grows like 1/(c∞ − c), so each 1e-14 of error in the computed stick \
+                         radius moves μ by {:.1e}, and the scan runs on the coarsest level, whose own \
+                         limit of c may lie below the given c",
+                        mu * 1e-14 / gap
+                    )
+                } else {
+                    format!(
+                        "; c lies beyond c∞(ν) or within five times the formula's O(δ₀³) uncertainty \
+                         ({formula_err:.0e}) of it, where μ, if there is one, is not placed"
+                    )
+                };
                 format!(
-                    "no μ the solver reaches (up to about 1e12) gives c = {c} at ν = {nu}: as μ → ∞ the \
-                     stick radius tends to c∞(ν) < 1 (a slip annulus remains; 1 − c∞ = δ₀(1 − δ₀/2 + O(δ₀²)), \
-                     δ₀ = 8·exp(−π/(2ε₀)), ε₀ = artanh(γ)/π (derived), so c∞ = {c_infinity:.12}), so c is \
-                     beyond c∞(ν) or within the solver's resolution of it (docs/hertz_asymptotics.md)"
+                    "no μ the solver reaches (up to about 1e12, scanned on its first level) gives c = {c} \
+                     at ν = {nu}: as μ → ∞ the stick radius tends to c∞(ν) < 1 (a slip annulus remains; \
+                     1 − c∞ = δ₀(1 − δ₀/2 + O(δ₀²)), δ₀ = 8·exp(−π/(2ε₀)), ε₀ = artanh(γ)/π (derived), so \
+                     c∞ = {c_infinity:.12} to about {formula_err:.0e}){near} (docs/hertz_asymptotics.md)"
                 )
             }
         };
