@@ -15,6 +15,11 @@
 //!   follows `δ₀(1 − δ₀/2)·exp(1/(2ε₀μ))` and `P*/P*ₛ` follows
 //!   `1 − δ₀/2`; at small μ, `P* = 1 + γμ(1 − 2/π) + γ²Jμ² + O(μ³)`.
 //! - ν = −1 itself (and below) is bad input naming the stability limit.
+//! - **μ → ∞** (μ up to the largest double): `1 − c` against
+//!   `(1 − c∞)·exp(1/(2ε₀μ))` and `P*` against `P*ₛ(1 − (1 − c∞)/2)`
+//!   where the neglected terms (`O(δ₀²)`, `O(μ⁻²)`) are far below the
+//!   estimates; at tol 1e-12 where the panels beside c sit at the mesh
+//!   floor (ν = 0.4); μ = ∞ itself is bad input that states the limit.
 use assert_cmd::Command;
 use lambdamat::hertz::front::{Given, HertzResult, Limit, solve, solve_with_limit};
 use lambdamat::plan::SplitOptions;
@@ -46,7 +51,13 @@ fn near_incompressible_near_full_stick_is_answered_at_the_full_stick_limit() {
     // The distance from c = 1 the solver resolves (its scan stops at
     // s = ln(c/(1 − c)) = 27.7).
     let resolved = (-27.7f64).exp();
-    for (nu, mu) in [(0.45, 10.0), (0.49, 1.0), (0.499, 100.0), (0.4999, 1.0)] {
+    for (nu, mu) in [
+        (0.45, 10.0),
+        (0.49, 1.0),
+        (0.499, 100.0),
+        (0.4999, 1.0),
+        (0.4999, 1e6),
+    ] {
         let s = at_tol(nu, mu);
         let (d0, _, full_stick) = large_mu(nu);
         let one_minus_c_inf = d0 * (1.0 - d0 / 2.0);
@@ -208,4 +219,131 @@ fn toward_nu_minus_one_the_large_and_small_mu_limits_hold() {
         .err()
         .expect("bad input");
     assert!(e.is_input_error() && e.to_string().contains("stable isotropic solid"));
+}
+
+/// `(1 − c∞)·exp(1/(2ε₀μ))`, the derived `1 − c` at large μ (its
+/// neglected terms: `O(δ₀²)` relative in `1 − c∞`, `O(δ₀)` relative and
+/// `O(μ⁻²)` in the exponent), and the derived `P*∞ = P*ₛ(1 − (1 − c∞)/2)`.
+fn full_stick_limit(nu: f64, mu: f64) -> (f64, f64, f64) {
+    let (d0, eps0, full_stick) = large_mu(nu);
+    let one_minus_c_inf = d0 * (1.0 - d0 / 2.0);
+    (
+        one_minus_c_inf * (1.0 / (2.0 * eps0 * mu)).exp(),
+        full_stick * (1.0 - one_minus_c_inf / 2.0),
+        full_stick,
+    )
+}
+
+/// A converged resolved answer at `(ν, μ)`, μ large, against the derived
+/// full-stick limit: `1 − c` within c's estimate plus the neglected terms
+/// (`δ₀³`, and `O(μ⁻²)` taken as `(2/(γε₀μ²))·(1 − c)`, eight times the
+/// measured `Φ₂ ≈ 0.25/γ`), `P*` within its estimate plus its rate
+/// (measured `0.15/ε₀` times `P*ₛ(1 − c∞)/μ`; twice that here) and
+/// `P*ₛδ₀²`, and never above the full-stick `P*ₛ` beyond its estimate.
+fn check_full_stick_limit(s: &HertzResult, nu: f64, mu: f64) {
+    let (d0, eps0, _) = large_mu(nu);
+    let g = gamma(nu);
+    let (one_minus_c, p_inf, full_stick) = full_stick_limit(nu, mu);
+    let ce = s.error_estimates["c"];
+    let pe = s.error_estimates["P"];
+    eprintln!(
+        "ν = {nu}, μ = {mu:e}: 1 − c = {:.6e} ± {ce:.1e} (derived {one_minus_c:.6e}), \
+         P* = {:.15} ± {pe:.1e} (derived {p_inf:.15})",
+        1.0 - s.c,
+        s.compliance
+    );
+    assert!(s.converged && s.end_answer.is_none(), "ν = {nu}, μ = {mu}");
+    let c_allowed = ce + d0.powi(3) + 2.0 / (g * eps0 * mu * mu) * one_minus_c;
+    assert!(
+        ((1.0 - s.c) - one_minus_c).abs() <= c_allowed,
+        "ν = {nu}, μ = {mu}: 1 − c = {:e}, derived {one_minus_c:e}, allowed {c_allowed:.1e}",
+        1.0 - s.c
+    );
+    let p_allowed = pe + full_stick * (0.3 / eps0 * d0 / mu + d0 * d0);
+    assert!(
+        (s.compliance - p_inf).abs() <= p_allowed,
+        "ν = {nu}, μ = {mu}: P* = {}, derived {p_inf}, allowed {p_allowed:.1e}",
+        s.compliance
+    );
+    assert!(s.compliance <= full_stick + pe);
+    assert!(s.stick_ok && s.slip_ok);
+}
+
+#[test]
+fn extreme_friction_reaches_the_derived_full_stick_limit() {
+    // Where 1 − c∞ is resolved (ν ≤ 0.38: 1 − c∞ ≥ 9.3e-11) and δ₀² is far
+    // below the tolerance, up to the largest finite μ.
+    for (nu, mu) in [(0.3, 1e15), (0.3, f64::MAX), (0.37, 1e9), (0.38, 1e6)] {
+        let s = at_tol(nu, mu);
+        check_full_stick_limit(&s, nu, mu);
+    }
+}
+
+#[test]
+fn near_full_stick_at_the_mesh_floor_is_answered_at_tol_1e_12() {
+    // ν = 0.4, μ = 1e4: 1 − c = 1.46e-12 is 6 floor panels (2.3e-13) wide.
+    // At tol 1e-12 the panel below c stays at the floor while its nodes go
+    // from 3 to 4, and the shear jump at c stays at −10 % of μp(c): the
+    // values at c are not refined (no estimate, not checked), c and P*
+    // are, against the derived limit. (Before: refused as a spurious free
+    // boundary, and the refusal named the small-friction limit.)
+    let (nu, mu) = (0.4, 1e4);
+    let tight = SplitOptions {
+        tol: 1e-12,
+        ..SplitOptions::default()
+    };
+    let s = solve_with_limit(nu, Given::Mu(mu), &tight)
+        .unwrap_or_else(|r| panic!("refused: {} ({:?})", r.error, r.limit));
+    let u = s.unrefined_at_c.expect("the fields at c are not refined");
+    assert!(u.panel_below.min(u.panel_above) < 1e-12);
+    assert!(s.field_error_estimates["shear_jump_at_c"].is_infinite());
+    assert!(s.error_estimate <= 1e-12);
+    check_full_stick_limit(&s, nu, mu);
+}
+
+#[test]
+fn infinite_friction_is_bad_input_that_states_the_limit() {
+    let (one_minus_c, p_inf, _) = full_stick_limit(0.3, f64::INFINITY);
+    let e = solve(0.3, Given::Mu(f64::INFINITY), &SplitOptions::default())
+        .err()
+        .expect("bad input");
+    let text = e.to_string();
+    assert!(e.is_input_error(), "{text}");
+    assert!(text.contains("μ → ∞"), "{text}");
+    assert!(text.contains(&format!("{one_minus_c:.3e}")), "{text}");
+    assert!(text.contains(&format!("{p_inf:.12}")), "{text}");
+    Command::cargo_bin("lambdamat")
+        .expect("binary")
+        .args(["hertz", "--nu", "0.3", "--mu", "inf"])
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains("--mu 1e15"));
+}
+
+#[test]
+fn a_given_stick_radius_just_below_its_large_friction_limit_is_refused_naming_it() {
+    // ν = 0, c = 0.998997: 1.6e-9 below the derived c∞ = 1 − δ₀(1 − δ₀/2),
+    // where μ ≈ (1 − c∞)/(2ε₀(c∞ − c)) ≈ 2e6 grows like 1/(c∞ − c). The
+    // scan on the coarsest level finds no μ up to 1e12; the refusal states
+    // the limit, the distance to it and the μ the derived rate gives (it
+    // used to say only "beyond c∞(ν) or within the solver's resolution").
+    let (d0, eps0, _) = large_mu(0.0);
+    let c_inf = 1.0 - d0 * (1.0 - d0 / 2.0);
+    let c = 0.998997;
+    let r = solve_with_limit(0.0, Given::C(c), &SplitOptions::default())
+        .err()
+        .expect("refused");
+    assert!(!r.error.is_input_error());
+    assert!(
+        matches!(r.limit, Some(Limit::BeyondLargeFriction { .. })),
+        "{:?}",
+        r.limit
+    );
+    let text = r.error.to_string();
+    let mu = (1.0 - c_inf) / (2.0 * eps0 * (c_inf - c));
+    assert!(
+        text.contains(&format!("c∞ − c = {:.2e}", c_inf - c)),
+        "{text}"
+    );
+    assert!(text.contains(&format!("puts μ near {mu:.2e}")), "{text}");
 }

@@ -21,6 +21,7 @@ use serde::Serialize;
 
 use crate::lang::parse_program_with;
 use crate::lang::parser::parse_exact;
+use crate::numeric::mesh::GRADING_FLOOR;
 use crate::numeric::{Assembler, NumericError, Operator};
 use crate::plan::error::{EndReason, RangeEnd};
 use crate::plan::split_fields::{Approach, Fields, LevelFields, ResidualField, Valued};
@@ -191,9 +192,10 @@ impl Found {
     }
 }
 
-/// Why the fields at `c` are not refined: the panels touching `c` from
-/// below and from above have the same widths on the last two levels (each
-/// level at its own `c`). Every level puts the same number of nodes on a
+/// Why the fields at `c` are not refined: the panel touching `c` from
+/// below or from above has the same width on the last two levels (each
+/// level at its own `c`), with the same node count or at the mesh floor
+/// (see `same_shape`). Every level puts the same number of nodes on a
 /// panel touching a graded point, so the discretisation at `c` itself did
 /// not change, and the two levels' values there agree whatever their
 /// error: their difference is no estimate. This happens when the grading
@@ -243,7 +245,8 @@ where
     };
     let below = shape(&lf.last, Approach::Below)?;
     let above = shape(&lf.last, Approach::Above)?;
-    let unchanged = |w: (f64, usize), side| shape(prev, side).is_some_and(|v| same_shape(w, v));
+    let c = own_c(&lf.last);
+    let unchanged = |w: (f64, usize), side| shape(prev, side).is_some_and(|v| same_shape(w, v, c));
     (unchanged(below, Approach::Below) || unchanged(above, Approach::Above)).then(|| UnrefinedAtC {
         panel_below: below.0,
         panel_above: above.0,
@@ -280,11 +283,22 @@ fn beyond_c_infinity(
     }))
 }
 
-/// Two panels `(width, nodes)` of two levels are the same discretisation:
-/// the same node count and widths equal to 1e-9 (each level's panels sit
-/// at its own c, which moves the ends by rounding).
-fn same_shape(a: (f64, usize), b: (f64, usize)) -> bool {
-    a.1 == b.1 && (a.0 - b.0).abs() <= 1e-9 * a.0.abs().max(b.0.abs())
+/// Two panels `(width, nodes)` of two levels beside the graded point `c`
+/// are the same discretisation at `c`: widths equal to 1e-9 (each level's
+/// panels sit at its own c, which moves the ends by rounding), and either
+/// the same node count or a width at the mesh floor
+/// ([`GRADING_FLOOR`]`·c`, within the factor `1/σ ≤ 8` of one grading
+/// layer). At the floor the panel cannot shrink on any level, and more
+/// nodes on it do not resolve a structure at c below its width: near full
+/// stick the shear at c has a layer of width about `e^(−πγμ)(1 − c)`
+/// (docs/hertz_asymptotics.md, step L3). Measured at ν = 0.4, μ = 1e4,
+/// tol 1e-12 (1 − c = 1.5e-12): the panel below c is 2.27e-13 wide on
+/// both levels with 3 and then 4 nodes, and the shear jump stays at
+/// −10 % of μp(c) with a level difference of 0.7 %.
+fn same_shape(a: (f64, usize), b: (f64, usize), c: f64) -> bool {
+    let width = a.0.abs().max(b.0.abs());
+    let at_floor = width <= 8.0 * GRADING_FLOOR * c.abs();
+    (a.1 == b.1 || at_floor) && (a.0 - b.0).abs() <= 1e-9 * width
 }
 
 fn invalid(s: String) -> PlanError {
@@ -521,12 +535,18 @@ impl Limit {
                 if no_sign_change && at_end.is_some_and(|r| r.end == RangeEnd::Upper) {
                     return Some(Limit::thin_slip(gamma));
                 }
+                // The O(μ) range of the small-μ stick radius is measured
+                // for small μ only: at large μ its factor exp(kγμ) would
+                // put any c below 1e-8, so the leading term must be there
+                // too (before, ν = 0.4, μ = 1e4 at tol 1e-12, a refusal at
+                // 1 − c = 1.5e-12, was named small friction).
                 let small = Limit::small_friction(gamma, mu);
+                let (a, c0) = small_friction_asymptotics(gamma);
                 match small {
                     Limit::SmallFriction {
                         c_asymptotic: (_, c_hi),
                         ..
-                    } if c_hi <= 1e-8 => Some(small),
+                    } if c_hi.max(c0 * (-a / mu).exp()) <= 1e-8 => Some(small),
                     _ => None,
                 }
             }
@@ -622,11 +642,35 @@ impl Limit {
                     Given::C(c) => c,
                     Given::Mu(_) => f64::NAN,
                 };
+                // How far below c∞ the given c is, and the μ the derived
+                // rate c∞ − c ≈ (1 − c∞)/(2ε₀μ) gives it: μ grows like
+                // 1/(c∞ − c), so an error of c∞ moves μ by μ/(c∞ − c) per
+                // unit. The O(δ₀³) term of 1 − c∞ (coefficient measured
+                // ≈ 0.19) bounds how well the formula places c∞.
+                let (one_minus, eps0) = large_friction_asymptotics(gamma);
+                let d0 = 8.0 * (-PI / (2.0 * eps0)).exp();
+                let formula_err = 0.2 * d0.powi(3);
+                let gap = c_infinity - c;
+                let near = if gap > 5.0 * formula_err {
+                    let mu = one_minus / (2.0 * eps0 * gap);
+                    format!(
+                        "; here c∞ − c = {gap:.2e}, where the rate c∞ − c ≈ (1 − c∞)/(2ε₀μ) puts μ near \
+                         {mu:.2e}: μ grows like 1/(c∞ − c), so each 1e-14 of error in the computed stick \
+                         radius moves μ by {:.1e}, and the scan runs on the coarsest level, whose own \
+                         limit of c may lie below the given c",
+                        mu * 1e-14 / gap
+                    )
+                } else {
+                    format!(
+                        "; c lies beyond c∞(ν) or within five times the formula's O(δ₀³) uncertainty \
+                         ({formula_err:.0e}) of it, where μ, if there is one, is not placed"
+                    )
+                };
                 format!(
-                    "no μ the solver reaches (up to about 1e12) gives c = {c} at ν = {nu}: as μ → ∞ the \
-                     stick radius tends to c∞(ν) < 1 (a slip annulus remains; 1 − c∞ = δ₀(1 − δ₀/2 + O(δ₀²)), \
-                     δ₀ = 8·exp(−π/(2ε₀)), ε₀ = artanh(γ)/π (derived), so c∞ = {c_infinity:.12}), so c is \
-                     beyond c∞(ν) or within the solver's resolution of it (docs/hertz_asymptotics.md)"
+                    "no μ the solver reaches (up to about 1e12, scanned on its first level) gives c = {c} \
+                     at ν = {nu}: as μ → ∞ the stick radius tends to c∞(ν) < 1 (a slip annulus remains; \
+                     1 − c∞ = δ₀(1 − δ₀/2 + O(δ₀²)), δ₀ = 8·exp(−π/(2ε₀)), ε₀ = artanh(γ)/π (derived), so \
+                     c∞ = {c_infinity:.12} to about {formula_err:.0e}){near} (docs/hertz_asymptotics.md)"
                 )
             }
         };
@@ -676,6 +720,9 @@ fn plan(nu: f64, given: Given) -> Result<(Source, Sets), PlanError> {
             Ok((GIVEN_C, vec![("nu", nu), ("c", c)]))
         }
         Given::Mu(mu) => {
+            if mu == f64::INFINITY {
+                return Err(invalid(infinite_friction(nu)));
+            }
             if !(mu >= 0.0 && mu.is_finite()) {
                 return Err(invalid(format!("friction μ = {mu} must be finite and ≥ 0")));
             }
@@ -686,6 +733,44 @@ fn plan(nu: f64, given: Given) -> Result<(Source, Sets), PlanError> {
             }
         }
     }
+}
+
+/// The bad-input text for `μ = ∞` at a valid `ν`. The problem is posed
+/// for finite μ: its slip-zone law `q = μp` has no μ = ∞ form (there `p`
+/// vanishes and `q` is left free), so μ = ∞ is only the limit μ → ∞,
+/// derived in docs/hertz_asymptotics.md. The text gives that limit and a
+/// finite μ that reaches it: `ln((1 − c)/(1 − c∞)) = (1/(2μ) + O(μ⁻²))/ε₀`
+/// puts `c` within `1e-15` of `c∞` for μ ≥ 1e15 at every ν (`c∞ − c ≈
+/// (1 − c∞)/(2ε₀μ)`, and `(1 − c∞)/(2ε₀) = 4e^(−π/(2ε₀))/ε₀` grows with
+/// ε₀ up to `0.081` as ν → −1), and `P*` approaches `P*∞` at a similar
+/// rate (measured: `0.15/ε₀` times `P*ₛ(1 − c∞)/μ`, below `3e-17` there).
+fn infinite_friction(nu: f64) -> String {
+    let head = "friction μ = inf: the problem is posed for a finite μ (its slip law q = μp has no μ = ∞ form), \
+                so μ = ∞ is only the limit μ → ∞";
+    let gamma = gamma_of(nu);
+    if nu >= 0.5 {
+        return format!(
+            "{head}; at ν = 1/2 there is no shear and c = 1, P* = 1 for every μ: use --mu 1"
+        );
+    }
+    let limit = Limit::thin_slip(gamma);
+    let Limit::ThinSlip {
+        compliance_infinity,
+        compliance_full_stick,
+        ..
+    } = limit
+    else {
+        return head.to_string();
+    };
+    format!(
+        "{head}, derived in docs/hertz_asymptotics.md: at ν = {nu} the stick radius tends to c∞ with \
+         1 − c∞ = δ₀(1 − δ₀/2 + O(δ₀²)) = {}, δ₀ = 8·exp(−π/(2ε₀)), ε₀ = artanh(γ)/π = {:.5}, and \
+         P* → P*ₛ(1 − δ₀/2) = {compliance_infinity:.12} (full stick P*ₛ = artanh(γ)/γ = {compliance_full_stick:.12}); \
+         since ln((1 − c)/(1 − c∞)) = (1/(2μ) + O(μ⁻²))/ε₀, a finite μ of 1e15 or more is within 1e-15 of that limit: \
+         use e.g. --mu 1e15",
+        limit.one_minus_c_infinity_text(),
+        gamma.atanh() / PI
+    )
 }
 
 /// A parameter of `prog` (an exact one, or a real one evaluated at the
@@ -884,8 +969,14 @@ fn solve_inner(nu: f64, given: Given, opts: &SplitOptions) -> Result<HertzResult
                 Some(jump.value.abs() - jump.error)
             };
             if jump.value.is_nan() || excess.is_some_and(|x| x > 0.1 * mu_p.abs()) {
+                // Near 1, c as 1 − (1 − c): `1.0000e0` said nothing.
+                let at = if c > 0.5 {
+                    format!("1 − {:.4e}", 1.0 - c)
+                } else {
+                    format!("{c:.4e}")
+                };
                 return Err(Failure::Spurious(no_convergence(format!(
-                    "spurious free boundary at c = {c:.4e}, μ = {mu:.4e}: q(c⁻) - μp(c) = {:.3e} ± {:.1e} (μp(c) = {:.3e}); \
+                    "spurious free boundary at c = {at}, μ = {mu:.4e}: q(c⁻) - μp(c) = {:.3e} ± {:.1e} (μp(c) = {:.3e}); \
                      c this close to 0 or 1 is outside the solver's reliable range",
                     jump.value,
                     jump.error,
@@ -1048,7 +1139,7 @@ impl HertzResult {
                     .map(|(a, b, n)| (b - a, n))
             };
             match (&lf.previous, shape(&lf.last)) {
-                (Some(prev), Some(last)) => shape(prev).is_some_and(|v| same_shape(last, v)),
+                (Some(prev), Some(last)) => shape(prev).is_some_and(|v| same_shape(last, v, x)),
                 _ => false,
             }
         };

@@ -27,6 +27,13 @@ pub struct Grading {
     pub layers: usize,
 }
 
+/// The smallest panel [`Mesh::graded_to_scale`] puts beside a graded point
+/// `z`, relative to `|z|`: `1e3` ulps. A position near 1 is known only to
+/// `ulp(1) ≈ 1.1e-16`, so finer panels would have nodes that merge with
+/// the point. Where the grading toward `z` reaches this floor, further
+/// levels cannot shrink the panels beside `z`.
+pub const GRADING_FLOOR: f64 = 1e3 * f64::EPSILON;
+
 /// Sorted breakpoints `lo = b_0 < … < b_P = hi` and, per panel, its layer
 /// index (0 = touching a graded point; larger = farther away).
 #[derive(Debug, Clone, PartialEq)]
@@ -178,7 +185,7 @@ impl Mesh {
         // With scaled layers, the smallest panel stays above `FLOOR·|z|`
         // (`z` the graded point): finer panels beside a point near 1 would
         // be a few ulps wide and their nodes would merge with the point.
-        const FLOOR: f64 = 1e3 * f64::EPSILON;
+        const FLOOR: f64 = GRADING_FLOOR;
         let cap = |layers: usize, span: f64, z: f64| -> usize {
             if !to_scale || z == 0.0 || span <= 0.0 {
                 return layers;
