@@ -63,6 +63,20 @@ impl QPoly {
         Self::new(vec![c.numer().clone()], c.denom().clone())
     }
 
+    /// The constant `c` given in lowest terms with a positive denominator
+    /// (as every reduced `Q` is): no gcd is taken. The caller vouches for
+    /// the form (checked in debug builds).
+    pub(crate) fn constant_reduced(c: &Q) -> Self {
+        debug_assert!(c.denom().is_positive() && gcd(c.numer(), c.denom()).is_one());
+        if c.numer().is_zero() {
+            return Self::new(Vec::new(), BigInt::one());
+        }
+        QPoly {
+            num: vec![c.numer().clone()],
+            den: c.denom().clone(),
+        }
+    }
+
     /// Numerators, low degree first.
     pub fn num(&self) -> &[BigInt] {
         &self.num
@@ -395,9 +409,10 @@ impl Ring for QxRing {
             };
             let unit = n.is_one() && d.is_none();
             if k == 0 || !unit {
-                let _ = write!(out, "{n}");
+                super::decimal::write_nat(&mut out, &n);
                 if let Some(d) = d {
-                    let _ = write!(out, "/{d}");
+                    out.push('/');
+                    super::decimal::write_nat(&mut out, &d);
                 }
                 if k > 0 {
                     out.push('*');

@@ -643,8 +643,9 @@ pub fn small_parts(
     let mut v = Matrix::zeros(r.clone(), n, n);
     let mut v_inv = Matrix::zeros(r.clone(), n, n);
     for (i, l) in lambda.iter().enumerate() {
-        v.set(i, i, QPoly::constant(&l.recip()));
-        v_inv.set(i, i, QPoly::constant(l));
+        // λ_i is reduced (Q::new), and so is its reciprocal.
+        v.set(i, i, QPoly::constant_reduced(&l.recip()));
+        v_inv.set(i, i, QPoly::constant_reduced(l));
     }
     for (i, (nu, de)) in h.iter().enumerate() {
         v.set(
