@@ -397,16 +397,20 @@ pub fn symmetric(c: &BigInt, m: &BigInt) -> BigInt {
 /// Rational reconstruction (Wang): `n/d ≡ c (mod m)` with `|n|, d ≤
 /// √(m/2)`, if it exists.
 pub fn rational_reconstruct(c: &BigInt, m: &BigInt) -> Option<(BigInt, BigInt)> {
-    let bound = (m >> 1u32).sqrt();
+    reconstruct_below(c, m, &(m >> 1u32).sqrt())
+}
+
+/// [`rational_reconstruct`] with the bound `√(m/2)` given.
+fn reconstruct_below(c: &BigInt, m: &BigInt, bound: &BigInt) -> Option<(BigInt, BigInt)> {
     let (mut r0, mut r1) = (m.clone(), c.mod_floor(m));
     let (mut t0, mut t1) = (BigInt::zero(), BigInt::one());
-    while r1 > bound {
+    while r1 > *bound {
         let (q, r) = r0.div_rem(&r1);
         r0 = std::mem::replace(&mut r1, r);
         let t = &t0 - &q * &t1;
         t0 = std::mem::replace(&mut t1, t);
     }
-    if t1.is_zero() || t1.abs() > bound {
+    if t1.is_zero() || t1.abs() > *bound {
         return None;
     }
     let (n, d) = if t1.is_negative() {
@@ -414,7 +418,7 @@ pub fn rational_reconstruct(c: &BigInt, m: &BigInt) -> Option<(BigInt, BigInt)> 
     } else {
         (r1, t1)
     };
-    if !n.gcd(&d).is_one() {
+    if !super::intgcd::gcd(&n, &d).is_one() {
         return None;
     }
     Some((n, d))
@@ -429,22 +433,39 @@ pub fn rational_reconstruct_vec(
     m: &BigInt,
     l: &BigInt,
 ) -> Option<(Vec<BigInt>, BigInt)> {
-    let bound = (m >> 1u32).sqrt();
+    rational_reconstruct_vec_below(c, m, &reconstruction_bound(m), l)
+}
+
+/// The bound `⌊√(m/2)⌋` of rational reconstruction modulo `m` (for
+/// callers that reconstruct many vectors modulo one `m`).
+pub fn reconstruction_bound(m: &BigInt) -> BigInt {
+    (m >> 1u32).sqrt()
+}
+
+/// [`rational_reconstruct_vec`] with `bound` =
+/// [`reconstruction_bound`]`(m)` given.
+pub fn rational_reconstruct_vec_below(
+    c: &[BigInt],
+    m: &BigInt,
+    bound: &BigInt,
+    l: &BigInt,
+) -> Option<(Vec<BigInt>, BigInt)> {
     let mut l = l.clone();
     let mut nums: Vec<BigInt> = Vec::with_capacity(c.len());
     for x in c {
-        let t = symmetric(&(x * &l), m);
-        if t.abs() <= bound {
+        let xl = x * &l;
+        let t = symmetric(&xl, m);
+        if t.magnitude() <= bound.magnitude() {
             nums.push(t);
             continue;
         }
-        let (nn, dd) = rational_reconstruct(&(x * &l), m)?;
+        let (nn, dd) = reconstruct_below(&xl, m, bound)?;
         // x ≡ nn/(dd·l): scale what came before by dd.
         for v in nums.iter_mut() {
             *v *= &dd;
         }
         l *= dd;
-        if l > bound {
+        if l > *bound {
             return None;
         }
         nums.push(nn);

@@ -370,7 +370,15 @@ impl Ring for QxRing {
         if a.is_zero() {
             return "0".to_string();
         }
-        let mut out = String::new();
+        // Room for the digits (bits·log10 2 < bits·0.302) and the
+        // separators, so the string grows once.
+        let den_digits = (a.den.bits() as usize * 302).div_ceil(1000) + 1;
+        let room: usize = a
+            .num
+            .iter()
+            .map(|c| (c.bits() as usize * 302).div_ceil(1000) + den_digits + 8 + self.var.len())
+            .sum();
+        let mut out = String::with_capacity(room);
         let mut first = true;
         for k in (0..a.num.len()).rev() {
             let c = &a.num[k];
