@@ -157,6 +157,13 @@ fn combine(a: &[u64], b: &[u64], p: i128, q: i128, out: &mut Vec<u64>) -> bool {
     if p.abs() > LIMIT || q.abs() > LIMIT {
         return false;
     }
+    // Lehmer's cofactors have opposite signs: a difference of two
+    // word-by-number products, one unsigned multiplication each per limb.
+    match (p >= 0, q >= 0) {
+        (true, false) => return sub_mul(a, p as u64, b, (-q) as u64, out),
+        (false, true) => return sub_mul(b, q as u64, a, (-p) as u64, out),
+        _ => {}
+    }
     out.clear();
     let mut carry = 0i128;
     for i in 0..a.len().max(b.len()) {
@@ -169,6 +176,37 @@ fn combine(a: &[u64], b: &[u64], p: i128, q: i128, out: &mut Vec<u64>) -> bool {
     }
     if carry != 0 {
         return false;
+    }
+    while out.last() == Some(&0) {
+        out.pop();
+    }
+    true
+}
+
+/// `out = cx·x − cy·y` (cofactors below 2^63) when it is non-negative, in
+/// one pass over the limbs; `false` otherwise.
+fn sub_mul(x: &[u64], cx: u64, y: &[u64], cy: u64, out: &mut Vec<u64>) -> bool {
+    out.clear();
+    let (mut cp, mut cn, mut borrow) = (0u64, 0u64, false);
+    for i in 0..x.len().max(y.len()) {
+        let xi = x.get(i).copied().unwrap_or(0);
+        let yi = y.get(i).copied().unwrap_or(0);
+        // < 2^63·2^64 + 2^64: no overflow.
+        let tp = u128::from(cx) * u128::from(xi) + u128::from(cp);
+        let tn = u128::from(cy) * u128::from(yi) + u128::from(cn);
+        cp = (tp >> 64) as u64;
+        cn = (tn >> 64) as u64;
+        let (d1, o1) = (tp as u64).overflowing_sub(tn as u64);
+        let (d2, o2) = d1.overflowing_sub(u64::from(borrow));
+        out.push(d2);
+        borrow = o1 || o2;
+    }
+    let top = i128::from(cp) - i128::from(cn) - i128::from(borrow);
+    if top < 0 {
+        return false;
+    }
+    if top > 0 {
+        out.push(top as u64);
     }
     while out.last() == Some(&0) {
         out.pop();
@@ -264,6 +302,11 @@ mod tests {
             let y = &ai * cc + &bi * cd;
             let mut out = Vec::new();
             assert!(combine(&al, &bl, ca, cb, &mut out) && nat(&out) == *x.magnitude());
+            assert!(combine(&al, &bl, cc, cd, &mut out) && nat(&out) == *y.magnitude());
+            // The negated combinations are negative (unless zero): refused.
+            if !y.is_zero() {
+                assert!(!combine(&al, &bl, -cc, -cd, &mut out));
+            }
             let (mut r0, mut r1) = (ai, bi);
             while !(r0 == x && r1 == y) {
                 assert!(!r1.is_zero(), "not a Euclid pair: {a} {b}");

@@ -116,7 +116,7 @@ fn h_image(f: Fp, det: &[BigInt], adj: &[Vec<IntPoly>], order: &[usize]) -> Opti
     let fp = modular::monic(f, &detp);
     let (j, inv) = order.iter().find_map(|&j| {
         let a = reduce(f, &adj[n - 1][j]);
-        modular::inverse_and_resultant(f, &a, &fp).map(|(s, _)| (j, s))
+        modular::inverse_mod(f, &a, &fp).map(|s| (j, s))
     })?;
     // h_i = −Σ_t adj_ij[t]·S_t with S_t = x^t·inv mod fp (one table for
     // all rows; the sums accumulate lazily in u128).
