@@ -21,8 +21,8 @@ const RECIP: u64 = (u128::MAX / BASE as u128 - (1u128 << 64)) as u64;
 #[inline]
 fn div_base(hi: u64, lo: u64) -> (u64, u64) {
     // Modulo 2^128, as the algorithm specifies (no carry out for hi < BASE).
-    let p = (u128::from(RECIP) * u128::from(hi))
-        .wrapping_add((u128::from(hi) << 64) | u128::from(lo));
+    let p =
+        (u128::from(RECIP) * u128::from(hi)).wrapping_add((u128::from(hi) << 64) | u128::from(lo));
     let (mut q1, q0) = (((p >> 64) as u64).wrapping_add(1), p as u64);
     let mut r = lo.wrapping_sub(q1.wrapping_mul(BASE));
     if r > q0 {

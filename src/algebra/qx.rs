@@ -404,15 +404,25 @@ impl Ring for QxRing {
                 } else {
                     std::borrow::Cow::Owned(mag / g)
                 };
-                (n, (den != g).then(|| num_bigint::BigUint::from(den / g)))
+                (
+                    n,
+                    (den != g).then(|| std::borrow::Cow::Owned(num_bigint::BigUint::from(den / g))),
+                )
             } else {
                 let g = super::intgcd::gcd_nat(mag, a.den.magnitude());
-                let d = a.den.magnitude() / &g;
-                let n = mag / &g;
-                if d.is_one() {
-                    (std::borrow::Cow::Owned(n), None)
+                if g.is_one() {
+                    (
+                        std::borrow::Cow::Borrowed(mag),
+                        Some(std::borrow::Cow::Borrowed(a.den.magnitude())),
+                    )
                 } else {
-                    (std::borrow::Cow::Owned(n), Some(d))
+                    let d = a.den.magnitude() / &g;
+                    let n = mag / &g;
+                    if d.is_one() {
+                        (std::borrow::Cow::Owned(n), None)
+                    } else {
+                        (std::borrow::Cow::Owned(n), Some(std::borrow::Cow::Owned(d)))
+                    }
                 }
             };
             let unit = n.is_one() && d.is_none();

@@ -457,7 +457,10 @@ fn dot_flat(xs: &FlatLine, ys: &[Vec<i64>]) -> Vec<BigInt> {
     }
     let mut lanes = vec![0i128; (len + 1) * w];
     for (&(start, la), b) in xs.polys.iter().zip(ys) {
-        let (mags, masks) = (&xs.mags[start..start + la * w], &xs.masks[start..start + la * w]);
+        let (mags, masks) = (
+            &xs.mags[start..start + la * w],
+            &xs.masks[start..start + la * w],
+        );
         for (t, &q) in b.iter().enumerate() {
             if q == 0 {
                 continue;

@@ -884,7 +884,8 @@ pub fn certify_small(a: &Matrix<QxRing>, s: &SmallDecomposition, p: u64) -> Cert
     // (V, V⁻¹ square) gives V⁻¹·V = I, so U·A·V = D follows from
     // U·A = D·V⁻¹, which avoids multiplying U·A by V's large last column.
     let vinv = degrees && sparse_product_is(&s.v, &s.v_inv, &Matrix::identity(r.clone(), n));
-    let prod = vinv && mul_cleared(&s.u, a).is_some_and(|ua| sparse_product_is(&s.d, &s.v_inv, &ua));
+    let prod =
+        vinv && mul_cleared(&s.u, a).is_some_and(|ua| sparse_product_is(&s.d, &s.v_inv, &ua));
     push(
         "U·A·V = D",
         prod,
@@ -1058,7 +1059,11 @@ mod tests {
         let r = QxRing::new("x");
         let a = random(6, 2, 7);
         let (s, _) = small_hermite(&a).expect("generic input");
-        assert!(sparse_product_is(&s.v, &s.v_inv, &Matrix::identity(r.clone(), 6)));
+        assert!(sparse_product_is(
+            &s.v,
+            &s.v_inv,
+            &Matrix::identity(r.clone(), 6)
+        ));
         let ua = mul_cleared(&s.u, &a).expect("shapes");
         assert!(sparse_product_is(&s.d, &s.v_inv, &ua));
         assert!(!sparse_product_is(&s.v_inv, &s.v, &ua));
@@ -1084,7 +1089,10 @@ mod tests {
             let z = x.mul(&y).expect("shapes");
             assert!(sparse_product_is(&x, &y, &z));
             let mut w = z.clone();
-            let e = r.add(w.get(2, 1), &QPoly::new(vec![BigInt::one()], BigInt::from(7)));
+            let e = r.add(
+                w.get(2, 1),
+                &QPoly::new(vec![BigInt::one()], BigInt::from(7)),
+            );
             w.set(2, 1, e);
             assert!(!sparse_product_is(&x, &y, &w));
             assert!(!sparse_product_is(&x, &y, &Matrix::zeros(r.clone(), 3, 3)));
