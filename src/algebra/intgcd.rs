@@ -109,7 +109,7 @@ fn lehmer_step(x: u64, y: u64) -> (i128, i128, i128, i128) {
         i128::from(u1),
         i128::from(v1),
     );
-    if steps % 2 == 0 {
+    if steps.is_multiple_of(2) {
         (u0, -v0, -u1, v1)
     } else {
         (-u0, v0, u1, -v1)
