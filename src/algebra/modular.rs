@@ -507,9 +507,12 @@ pub fn rational_reconstruct_vec_below(
 ) -> Option<(Vec<BigInt>, BigInt)> {
     let mut l = l.clone();
     let mut nums: Vec<BigInt> = Vec::with_capacity(c.len());
+    let half = m >> 1u32;
     for x in c {
         let xl = x * &l;
-        let t = symmetric(&xl, m);
+        // symmetric(xl, m) without a shifted copy per coefficient.
+        let r = xl.mod_floor(m);
+        let t = if r > half { r - m } else { r };
         if t.magnitude() <= bound.magnitude() {
             nums.push(t);
             continue;

@@ -100,8 +100,47 @@ pub fn det_adj_mod(f: Fp, m: &[u64], n: usize) -> Option<(u64, Vec<u64>)> {
     Some((det, a))
 }
 
+/// The Lagrange basis of the distinct points `xs` mod p, row-major:
+/// entry `i·n + c` is the coefficient of `x^c` in `L_i = Π_{j≠i} (x −
+/// x_j)/(x_i − x_j)` (n = `xs.len()`), from `P = Π (x − x_j)` by one
+/// synthetic division per point and one inversion per point.
+fn lagrange_basis(f: Fp, xs: &[u64]) -> Vec<u64> {
+    let n = xs.len();
+    // P, monic of degree n.
+    let mut p = vec![0u64; n + 1];
+    p[0] = 1;
+    for (len, &xj) in xs.iter().enumerate() {
+        let xm = f.prep(xj);
+        for k in (0..=len + 1).rev() {
+            let hi = if k > 0 { p[k - 1] } else { 0 };
+            p[k] = f.sub(hi, f.mul_pre(xm, p[k]));
+        }
+    }
+    let mut out = vec![0u64; n * n];
+    let mut q = vec![0u64; n];
+    for (i, &xi) in xs.iter().enumerate() {
+        // q = P/(x − x_i), then L_i = q/q(x_i).
+        let xm = f.prep(xi);
+        q[n - 1] = p[n];
+        for k in (1..n).rev() {
+            q[k - 1] = f.add(p[k], f.mul_pre(xm, q[k]));
+        }
+        let w = q
+            .iter()
+            .rev()
+            .fold(0u64, |acc, &c| f.add(f.mul_pre(xm, acc), c));
+        let wm = f.prep(f.inv(w));
+        for (o, &c) in out[i * n..(i + 1) * n].iter_mut().zip(&q) {
+            *o = f.mul_pre(wm, c);
+        }
+    }
+    out
+}
+
 /// Newton interpolation mod p through `(xs[k], ys[k])`, in monomial form
 /// (length `xs.len()`, not trimmed). `inv[k][i]` = `(xs[i] − xs[i−k])⁻¹`.
+/// The former route, now the reference for [`lagrange_basis`].
+#[cfg(test)]
 fn interpolate_mod(f: Fp, xs: &[u64], ys: &[u64], inv: &[Vec<u64>]) -> Vec<u64> {
     let n = xs.len();
     let mut c = ys.to_vec();
@@ -167,27 +206,27 @@ fn image(f: Fp, m: &[Vec<IntPoly>], deg: usize) -> Option<(Vec<u64>, Vec<Vec<u64
         x += 1;
     }
     let npts = xs.len();
-    let inv: Vec<Vec<u64>> = (0..npts)
-        .map(|k| {
-            (0..npts)
-                .map(|i| {
-                    if k == 0 || i < k {
-                        0
-                    } else {
-                        f.prep(f.inv(f.sub(xs[i], xs[i - k])))
-                    }
-                })
-                .collect()
-        })
-        .collect();
-    let det = interpolate_mod(f, &xs, &dets, &inv);
+    // One Lagrange basis for all n² + 1 interpolations: each is then a
+    // matrix–vector product with lazy sums.
+    let basis = lagrange_basis(f, &xs);
+    let interpolate = |ys: &[u64]| -> Vec<u64> {
+        (0..npts)
+            .map(|c| {
+                let acc = ys.iter().enumerate().fold(0u128, |acc, (i, &y)| {
+                    f.mul_add_wide(acc, y, basis[i * npts + c])
+                });
+                f.reduce_wide(acc)
+            })
+            .collect()
+    };
+    let det = interpolate(&dets);
     let mut ys = vec![0u64; npts];
     let adj = (0..n * n)
         .map(|e| {
             for (y, a) in ys.iter_mut().zip(&adjs) {
                 *y = a[e];
             }
-            interpolate_mod(f, &xs, &ys, &inv)
+            interpolate(&ys)
         })
         .collect();
     Some((det, adj))
@@ -464,6 +503,61 @@ mod tests {
             }
         }
         assert_eq!(checked, 250);
+    }
+
+    /// Interpolating with the Lagrange basis equals Newton's form, on
+    /// consecutive points (as `image` takes them, some skipped) and random
+    /// ones.
+    #[test]
+    fn lagrange_basis_interpolates_like_newton() {
+        let f = Fp::new(primes().next().expect("a prime"));
+        let mut seed = 21u64;
+        let mut next = || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            seed >> 3
+        };
+        let mut checked = 0;
+        for round in 0..120 {
+            let npts = 1 + round % 14;
+            let mut xs: Vec<u64> = Vec::new();
+            let mut x = 0u64;
+            while xs.len() < npts {
+                let skip = round % 2 == 1 && next() % 4 == 0;
+                if !skip {
+                    xs.push(if round % 3 == 2 { next() % f.p } else { x });
+                }
+                x += 1;
+            }
+            xs.sort_unstable();
+            xs.dedup();
+            let npts = xs.len();
+            let ys: Vec<u64> = (0..npts).map(|_| next() % f.p).collect();
+            let inv: Vec<Vec<u64>> = (0..npts)
+                .map(|k| {
+                    (0..npts)
+                        .map(|i| {
+                            if k == 0 || i < k {
+                                0
+                            } else {
+                                f.prep(f.inv(f.sub(xs[i], xs[i - k])))
+                            }
+                        })
+                        .collect()
+                })
+                .collect();
+            let want = interpolate_mod(f, &xs, &ys, &inv);
+            let basis = lagrange_basis(f, &xs);
+            let got: Vec<u64> = (0..npts)
+                .map(|c| {
+                    (0..npts).fold(0u64, |acc, i| f.add(acc, f.mul(ys[i], basis[i * npts + c])))
+                })
+                .collect();
+            assert_eq!(got, want, "round {round}");
+            checked += 1;
+        }
+        assert_eq!(checked, 120);
     }
 
     #[test]
