@@ -486,7 +486,7 @@ mod tests {
                 let bits = 1 + next() % (62 * k as u64 - 1);
                 let mut x = BigInt::from(next()) << 64u32 | BigInt::from(next());
                 x = (x << (62 * k)) | BigInt::from(next());
-                x = x % (BigInt::from(1) << bits as usize);
+                x %= BigInt::from(1) << bits as usize;
                 if round % 2 == 1 {
                     x = -x;
                 }
