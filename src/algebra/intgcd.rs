@@ -21,58 +21,34 @@ pub fn gcd_nat(a: &BigUint, b: &BigUint) -> BigUint {
     } else {
         (b.to_u64_digits(), a.to_u64_digits())
     };
+    let (mut na, mut nb) = (Vec::new(), Vec::new());
     while bits(&b) > 64 {
         if less(&a, &b) {
             std::mem::swap(&mut a, &mut b);
         }
         let shift = bits(&a) - 62;
-        let x = window(&a, shift);
-        let y = window(&b, shift);
-        // Cofactors: a' = A·a + B·b, b' = C·a + D·b.
-        let (mut ca, mut cb, mut cc, mut cd) = (1i128, 0i128, 0i128, 1i128);
-        let (mut x, mut y) = (x as i128, y as i128);
-        while y + cc != 0 && y + cd != 0 {
-            let q = quot(x + ca, y + cc);
-            let q2 = quot(x + cb, y + cd);
-            if q != q2 {
-                break;
-            }
-            let t = ca - q * cc;
-            ca = cc;
-            cc = t;
-            let t = cb - q * cd;
-            cb = cd;
-            cd = t;
-            let t = x - q * y;
-            x = y;
-            y = t;
+        let (ca, cb, cc, cd) = lehmer_step(window(&a, shift), window(&b, shift));
+        if cb == 0 {
+            // Not even the first quotient is certain: one full division.
+            let r = (nat(&a) % nat(&b)).to_u64_digits();
+            a = std::mem::replace(&mut b, r);
+            continue;
         }
-        let combined = if cb == 0 {
-            None
+        // The cofactors keep both results non-negative (lehmer_step's
+        // condition), so the one-pass combination cannot fail; the
+        // num-bigint form remains for safety.
+        if combine(&a, &b, ca, cb, &mut na) && combine(&a, &b, cc, cd, &mut nb) {
+            std::mem::swap(&mut a, &mut na);
+            std::mem::swap(&mut b, &mut nb);
         } else {
-            combine(&a, &b, ca, cb).zip(combine(&a, &b, cc, cd))
-        };
-        match combined {
-            Some((na, nb)) => {
-                a = na;
-                b = nb;
-            }
-            None if cb == 0 => {
-                let r = (nat(&a) % nat(&b)).to_u64_digits();
-                a = std::mem::replace(&mut b, r);
-            }
-            None => {
-                // Cofactors too large for the one-pass form (not expected
-                // from 62-bit leading parts): the same step in BigInt.
-                let (ai, bi) = (
-                    BigInt::from_biguint(Sign::Plus, nat(&a)),
-                    BigInt::from_biguint(Sign::Plus, nat(&b)),
-                );
-                let na = &ai * ca + &bi * cb;
-                let nb = &ai * cc + &bi * cd;
-                a = na.magnitude().to_u64_digits();
-                b = nb.magnitude().to_u64_digits();
-            }
+            let (ai, bi) = (
+                BigInt::from_biguint(Sign::Plus, nat(&a)),
+                BigInt::from_biguint(Sign::Plus, nat(&b)),
+            );
+            let x = &ai * ca + &bi * cb;
+            let y = &ai * cc + &bi * cd;
+            a = x.magnitude().to_u64_digits();
+            b = y.magnitude().to_u64_digits();
         }
     }
     let Some(&y) = b.first() else {
@@ -84,6 +60,60 @@ pub fn gcd_nat(a: &BigUint, b: &BigUint) -> BigUint {
         .rev()
         .fold(0u128, |r, &l| ((r << 64) | u128::from(l)) % u128::from(y)) as u64;
     BigUint::from(y.gcd(&r))
+}
+
+/// Euclid on the leading parts `x ≥ y` (`x < 2^62`) of numbers `a ≥ b`
+/// (`x = ⌊a/2^s⌋`, `y = ⌊b/2^s⌋`) as far as its quotients are provably
+/// those of `a` and `b`: the cofactors `(A, B, C, D)` with
+/// `a' = A·a + B·b`, `b' = C·a + D·b` the remainders after the accepted
+/// steps (`B = 0`: none accepted).
+///
+/// With `r_j = u_j·x + v_j·y` and the true `R_j = u_j·a + v_j·b =
+/// 2^s·r_j + u_j·e_a + v_j·e_b` (`0 ≤ e_a, e_b < 2^s`), a step's quotient
+/// is right when `0 ≤ R_{j+1} < R_j`. The cofactors alternate in sign, so
+/// that holds when `r_{j+1} ≥ max(|u_{j+1}|, |v_{j+1}|)` and `r_j −
+/// r_{j+1} ≥ max(|u_j| + |u_{j+1}|, |v_j| + |v_{j+1}|)` (a sufficient
+/// form of Jebelean's condition); one word division per step, none for
+/// quotient 1. All magnitudes stay below 2^62.
+fn lehmer_step(x: u64, y: u64) -> (i128, i128, i128, i128) {
+    // (r0, u0, v0) the current pair's first, (r1, u1, v1) its second;
+    // signs by parity (u0 ≥ 0 ≥ v0 on even steps, the reverse on odd).
+    let (mut r0, mut r1) = (x, y);
+    let (mut u0, mut v0, mut u1, mut v1) = (1u64, 0u64, 0u64, 1u64);
+    let mut steps = 0u32;
+    while r1 != 0 {
+        // Small quotients (about three in four) by subtraction.
+        let (mut q, mut r2) = (1, r0 - r1);
+        while r2 >= r1 && q < 4 {
+            r2 -= r1;
+            q += 1;
+        }
+        if r2 >= r1 {
+            q = r0 / r1;
+            r2 = r0 - q * r1;
+        }
+        let u2 = u0 + q * u1;
+        let v2 = v0 + q * v1;
+        if r2 < u2.max(v2) || r1 - r2 < (u1 + u2).max(v1 + v2) {
+            break;
+        }
+        (r0, r1) = (r1, r2);
+        (u0, v0, u1, v1) = (u1, v1, u2, v2);
+        steps += 1;
+    }
+    // After an even number of steps the first pair is (u0, −v0) and the
+    // second (−u1, v1); after an odd number, the reverse.
+    let (u0, v0, u1, v1) = (
+        i128::from(u0),
+        i128::from(v0),
+        i128::from(u1),
+        i128::from(v1),
+    );
+    if steps.is_multiple_of(2) {
+        (u0, -v0, -u1, v1)
+    } else {
+        (-u0, v0, u1, -v1)
+    }
 }
 
 /// The number with these little-endian limbs.
@@ -120,14 +150,21 @@ fn window(l: &[u64], shift: u64) -> u64 {
     }
 }
 
-/// `p·a + q·b` for cofactors of at most 62 bits, when it is non-negative,
-/// in one pass over the limbs; `None` otherwise.
-fn combine(a: &[u64], b: &[u64], p: i128, q: i128) -> Option<Vec<u64>> {
+/// `out = p·a + q·b` for cofactors of at most 62 bits, when it is
+/// non-negative, in one pass over the limbs; `false` otherwise.
+fn combine(a: &[u64], b: &[u64], p: i128, q: i128, out: &mut Vec<u64>) -> bool {
     const LIMIT: i128 = 1 << 62;
     if p.abs() > LIMIT || q.abs() > LIMIT {
-        return None;
+        return false;
     }
-    let mut out = Vec::with_capacity(a.len());
+    // Lehmer's cofactors have opposite signs: a difference of two
+    // word-by-number products, one unsigned multiplication each per limb.
+    match (p >= 0, q >= 0) {
+        (true, false) => return sub_mul(a, p as u64, b, (-q) as u64, out),
+        (false, true) => return sub_mul(b, q as u64, a, (-p) as u64, out),
+        _ => {}
+    }
+    out.clear();
     let mut carry = 0i128;
     for i in 0..a.len().max(b.len()) {
         let x = i128::from(a.get(i).copied().unwrap_or(0));
@@ -138,25 +175,43 @@ fn combine(a: &[u64], b: &[u64], p: i128, q: i128) -> Option<Vec<u64>> {
         carry = t >> 64;
     }
     if carry != 0 {
-        return None;
+        return false;
     }
     while out.last() == Some(&0) {
         out.pop();
     }
-    Some(out)
+    true
 }
 
-/// `a / b` (truncated, like `i128` division), in one word division when
-/// both fit 64 bits (they do in the Lehmer steps above: 62-bit leading
-/// parts plus cofactors), which is several times faster than `i128`'s.
-#[inline]
-fn quot(a: i128, b: i128) -> i128 {
-    match (i64::try_from(a), i64::try_from(b)) {
-        (Ok(a), Ok(b)) => a
-            .checked_div(b)
-            .map_or_else(|| a as i128 / b as i128, i128::from),
-        _ => a / b,
+/// `out = cx·x − cy·y` (cofactors below 2^63) when it is non-negative, in
+/// one pass over the limbs; `false` otherwise.
+fn sub_mul(x: &[u64], cx: u64, y: &[u64], cy: u64, out: &mut Vec<u64>) -> bool {
+    out.clear();
+    let (mut cp, mut cn, mut borrow) = (0u64, 0u64, false);
+    for i in 0..x.len().max(y.len()) {
+        let xi = x.get(i).copied().unwrap_or(0);
+        let yi = y.get(i).copied().unwrap_or(0);
+        // < 2^63·2^64 + 2^64: no overflow.
+        let tp = u128::from(cx) * u128::from(xi) + u128::from(cp);
+        let tn = u128::from(cy) * u128::from(yi) + u128::from(cn);
+        cp = (tp >> 64) as u64;
+        cn = (tn >> 64) as u64;
+        let (d1, o1) = (tp as u64).overflowing_sub(tn as u64);
+        let (d2, o2) = d1.overflowing_sub(u64::from(borrow));
+        out.push(d2);
+        borrow = o1 || o2;
     }
+    let top = i128::from(cp) - i128::from(cn) - i128::from(borrow);
+    if top < 0 {
+        return false;
+    }
+    if top > 0 {
+        out.push(top as u64);
+    }
+    while out.last() == Some(&0) {
+        out.pop();
+    }
+    true
 }
 
 /// gcd of two integers (non-negative).
@@ -197,25 +252,69 @@ mod tests {
         }
     }
 
+    /// Every accepted Lehmer step is a step of Euclid on the full
+    /// numbers: `(a', b')` is a consecutive pair of their remainder
+    /// sequence, on random inputs, equal and nearly equal ones, and
+    /// consecutive Fibonacci numbers (all quotients 1).
     #[test]
-    fn word_quotients_are_i128_quotients() {
-        let vals: [i128; 10] = [
-            0,
-            1,
-            -1,
-            7,
-            -7,
-            i64::MAX as i128,
-            i64::MIN as i128,
-            i64::MAX as i128 + 1,
-            i64::MIN as i128 - 1,
-            1 << 62,
-        ];
-        for &a in &vals {
-            for &b in vals.iter().filter(|&&b| b != 0) {
-                assert_eq!(quot(a, b), a / b, "{a} / {b}");
+    fn lehmer_steps_are_euclid_steps() {
+        let mut seed = 11u64;
+        let mut next = || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            seed
+        };
+        let mut cases: Vec<(BigUint, BigUint)> = Vec::new();
+        for round in 0..400 {
+            let la = 2 + round % 5;
+            let a = big(&(0..la).map(|_| next()).collect::<Vec<_>>());
+            let b = match round % 4 {
+                0 => a.clone(),
+                1 => &a - BigUint::from(next() % 1000 + 1),
+                2 => &a >> (next() % 70),
+                _ => big(&(0..la).map(|_| next()).collect::<Vec<_>>()),
+            };
+            cases.push(if a >= b { (a, b) } else { (b, a) });
+        }
+        let (mut f0, mut f1) = (BigUint::from(1u32), BigUint::from(1u32));
+        for _ in 0..400 {
+            let f2 = &f0 + &f1;
+            f0 = std::mem::replace(&mut f1, f2);
+            if f1.bits() > 65 {
+                cases.push((f1.clone(), f0.clone()));
             }
         }
+        let mut accepted = 0;
+        for (a, b) in cases {
+            if b.bits() <= 64 {
+                continue;
+            }
+            let (al, bl) = (a.to_u64_digits(), b.to_u64_digits());
+            let shift = bits(&al) - 62;
+            let (ca, cb, cc, cd) = lehmer_step(window(&al, shift), window(&bl, shift));
+            if cb == 0 {
+                continue;
+            }
+            accepted += 1;
+            let (ai, bi) = (BigInt::from(a.clone()), BigInt::from(b.clone()));
+            let x = &ai * ca + &bi * cb;
+            let y = &ai * cc + &bi * cd;
+            let mut out = Vec::new();
+            assert!(combine(&al, &bl, ca, cb, &mut out) && nat(&out) == *x.magnitude());
+            assert!(combine(&al, &bl, cc, cd, &mut out) && nat(&out) == *y.magnitude());
+            // The negated combinations are negative (unless zero): refused.
+            if !y.is_zero() {
+                assert!(!combine(&al, &bl, -cc, -cd, &mut out));
+            }
+            let (mut r0, mut r1) = (ai, bi);
+            while !(r0 == x && r1 == y) {
+                assert!(!r1.is_zero(), "not a Euclid pair: {a} {b}");
+                let r = &r0 % &r1;
+                r0 = std::mem::replace(&mut r1, r);
+            }
+        }
+        assert!(accepted > 300, "only {accepted} cases took a Lehmer step");
     }
 
     #[test]

@@ -7,6 +7,7 @@
 //! * [`mpoly`]: sparse multivariate polynomials over Q in commuting symbols;
 //! * [`gcd`]: multivariate gcd (modular first, primitive PRS as fallback);
 //! * [`kronecker`]: integer polynomial products by Kronecker substitution;
+//! * [`decimal`]: decimal text of big naturals (for printing);
 //! * [`modular`]: word-size prime fields, Z_p[x], Chinese remainders;
 //! * [`modgcd`]: Brown's modular multivariate gcd and the modular Q[x] gcd;
 //! * [`ratfunc`]: the field Q(s1..sn) of reduced rational functions;
@@ -27,6 +28,7 @@
 //!   every command consumes (size bound, eliminant, ordered elimination,
 //!   commuted pairs).
 
+pub mod decimal;
 pub mod derivation;
 pub mod eliminate;
 pub mod gcd;

@@ -375,6 +375,61 @@ pub fn inverse_and_resultant(f: Fp, a: &[u64], m: &[u64]) -> Option<(UP, u64)> {
     }
 }
 
+/// `s` with `s·a ≡ 1 (mod m)`, `deg s < deg m` (`deg m ≥ 1`), or `None`
+/// when `gcd(a, m) ≠ 1`: [`inverse_and_resultant`]'s `s` without the
+/// resultant, by Euclid with pseudo-remainders (each elimination `x ←
+/// lc(y)·x − lc(x)·x^k·y` instead of a division by `lc(y)`), so that one
+/// inversion is taken at the end instead of one per step.
+pub fn inverse_mod(f: Fp, a: &[u64], m: &[u64]) -> Option<UP> {
+    let dm = deg(m)?;
+    if dm == 0 {
+        return None;
+    }
+    let a = trim(a.to_vec());
+    let a = if a.len() > dm { div_rem(f, &a, m).1 } else { a };
+    // t0·a ≡ x and t1·a ≡ y (mod m) throughout.
+    let (mut x, mut y) = (m.to_vec(), a);
+    let (mut t0, mut t1): (UP, UP) = (Vec::new(), vec![1]);
+    loop {
+        let dy = deg(&y)?;
+        if dy == 0 {
+            let c = f.prep(f.inv(y[0]));
+            let s: UP = t1.iter().map(|&v| f.mul_pre(c, v)).collect();
+            let s = trim(s);
+            return Some(if s.len() > dm { div_rem(f, &s, m).1 } else { s });
+        }
+        let c = f.prep(y[dy]);
+        while x.len() > dy {
+            let k = x.len() - 1 - dy;
+            let l = f.prep(x[x.len() - 1]);
+            // x ← c·x − l·x^k·y, t0 ← c·t0 − l·x^k·t1.
+            for v in x.iter_mut() {
+                *v = f.mul_pre(c, *v);
+            }
+            for (i, &v) in y.iter().enumerate() {
+                x[i + k] = f.sub(x[i + k], f.mul_pre(l, v));
+            }
+            for v in t0.iter_mut() {
+                *v = f.mul_pre(c, *v);
+            }
+            if t0.len() < t1.len() + k {
+                t0.resize(t1.len() + k, 0);
+            }
+            for (i, &v) in t1.iter().enumerate() {
+                t0[i + k] = f.sub(t0[i + k], f.mul_pre(l, v));
+            }
+            x = trim(x);
+            t0 = trim(t0);
+        }
+        if x.is_empty() {
+            // y (of degree ≥ 1) divides m and a.
+            return None;
+        }
+        std::mem::swap(&mut x, &mut y);
+        std::mem::swap(&mut t0, &mut t1);
+    }
+}
+
 /// Chinese remainder: the residue `c mod m` (with `c` in `0..m` or the
 /// symmetric range) is combined with `r mod p` into a residue mod `m·p`,
 /// returned in `0..m·p`. `minv` is `m⁻¹ mod p`.
@@ -397,16 +452,20 @@ pub fn symmetric(c: &BigInt, m: &BigInt) -> BigInt {
 /// Rational reconstruction (Wang): `n/d ≡ c (mod m)` with `|n|, d ≤
 /// √(m/2)`, if it exists.
 pub fn rational_reconstruct(c: &BigInt, m: &BigInt) -> Option<(BigInt, BigInt)> {
-    let bound = (m >> 1u32).sqrt();
+    reconstruct_below(c, m, &(m >> 1u32).sqrt())
+}
+
+/// [`rational_reconstruct`] with the bound `√(m/2)` given.
+fn reconstruct_below(c: &BigInt, m: &BigInt, bound: &BigInt) -> Option<(BigInt, BigInt)> {
     let (mut r0, mut r1) = (m.clone(), c.mod_floor(m));
     let (mut t0, mut t1) = (BigInt::zero(), BigInt::one());
-    while r1 > bound {
+    while r1 > *bound {
         let (q, r) = r0.div_rem(&r1);
         r0 = std::mem::replace(&mut r1, r);
         let t = &t0 - &q * &t1;
         t0 = std::mem::replace(&mut t1, t);
     }
-    if t1.is_zero() || t1.abs() > bound {
+    if t1.is_zero() || t1.abs() > *bound {
         return None;
     }
     let (n, d) = if t1.is_negative() {
@@ -414,7 +473,7 @@ pub fn rational_reconstruct(c: &BigInt, m: &BigInt) -> Option<(BigInt, BigInt)> 
     } else {
         (r1, t1)
     };
-    if !n.gcd(&d).is_one() {
+    if !super::intgcd::gcd(&n, &d).is_one() {
         return None;
     }
     Some((n, d))
@@ -429,22 +488,42 @@ pub fn rational_reconstruct_vec(
     m: &BigInt,
     l: &BigInt,
 ) -> Option<(Vec<BigInt>, BigInt)> {
-    let bound = (m >> 1u32).sqrt();
+    rational_reconstruct_vec_below(c, m, &reconstruction_bound(m), l)
+}
+
+/// The bound `⌊√(m/2)⌋` of rational reconstruction modulo `m` (for
+/// callers that reconstruct many vectors modulo one `m`).
+pub fn reconstruction_bound(m: &BigInt) -> BigInt {
+    (m >> 1u32).sqrt()
+}
+
+/// [`rational_reconstruct_vec`] with `bound` =
+/// [`reconstruction_bound`]`(m)` given.
+pub fn rational_reconstruct_vec_below(
+    c: &[BigInt],
+    m: &BigInt,
+    bound: &BigInt,
+    l: &BigInt,
+) -> Option<(Vec<BigInt>, BigInt)> {
     let mut l = l.clone();
     let mut nums: Vec<BigInt> = Vec::with_capacity(c.len());
+    let half = m >> 1u32;
     for x in c {
-        let t = symmetric(&(x * &l), m);
-        if t.abs() <= bound {
+        let xl = x * &l;
+        // symmetric(xl, m) without a shifted copy per coefficient.
+        let r = xl.mod_floor(m);
+        let t = if r > half { r - m } else { r };
+        if t.magnitude() <= bound.magnitude() {
             nums.push(t);
             continue;
         }
-        let (nn, dd) = rational_reconstruct(&(x * &l), m)?;
+        let (nn, dd) = reconstruct_below(&xl, m, bound)?;
         // x ≡ nn/(dd·l): scale what came before by dd.
         for v in nums.iter_mut() {
             *v *= &dd;
         }
         l *= dd;
-        if l > bound {
+        if l > *bound {
             return None;
         }
         nums.push(nn);
@@ -555,6 +634,40 @@ mod tests {
             }
         }
         assert_eq!(checked, 6 * 40 * 4);
+    }
+
+    #[test]
+    fn pseudo_remainder_inverse_is_the_inverse() {
+        let f = Fp::new(prime(0).expect("a prime"));
+        let mut seed = 17u64;
+        let mut next = || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            seed >> 2
+        };
+        let (mut inverted, mut refused) = (0, 0);
+        for round in 0..300 {
+            let dm = 1 + round % 9;
+            let mut m: UP = (0..=dm).map(|_| next() % f.p).collect();
+            if m[dm] == 0 {
+                m[dm] = 1;
+            }
+            let mut a: UP = (0..(round % 12)).map(|_| next() % f.p).collect();
+            if round % 5 == 0 && dm >= 2 {
+                // A common factor (x − 3).
+                m = mul(f, &monic(f, &m[..dm]), &[f.neg(3), 1]);
+                a = mul(f, &a, &[f.neg(3), 1]);
+            }
+            let want = inverse_and_resultant(f, &a, &m).map(|(s, _)| s);
+            let got = inverse_mod(f, &a, &m);
+            assert_eq!(got, want, "round {round}");
+            match got {
+                Some(_) => inverted += 1,
+                None => refused += 1,
+            }
+        }
+        assert!(inverted > 200 && refused > 20, "{inverted} {refused}");
     }
 
     #[test]

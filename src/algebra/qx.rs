@@ -63,6 +63,20 @@ impl QPoly {
         Self::new(vec![c.numer().clone()], c.denom().clone())
     }
 
+    /// The constant `c` given in lowest terms with a positive denominator
+    /// (as every reduced `Q` is): no gcd is taken. The caller vouches for
+    /// the form (checked in debug builds).
+    pub(crate) fn constant_reduced(c: &Q) -> Self {
+        debug_assert!(c.denom().is_positive() && gcd(c.numer(), c.denom()).is_one());
+        if c.numer().is_zero() {
+            return Self::new(Vec::new(), BigInt::one());
+        }
+        QPoly {
+            num: vec![c.numer().clone()],
+            den: c.denom().clone(),
+        }
+    }
+
     /// Numerators, low degree first.
     pub fn num(&self) -> &[BigInt] {
         &self.num
@@ -356,7 +370,15 @@ impl Ring for QxRing {
         if a.is_zero() {
             return "0".to_string();
         }
-        let mut out = String::new();
+        // Room for the digits (bits·log10 2 < bits·0.302) and the
+        // separators, so the string grows once.
+        let den_digits = (a.den.bits() as usize * 302).div_ceil(1000) + 1;
+        let room: usize = a
+            .num
+            .iter()
+            .map(|c| (c.bits() as usize * 302).div_ceil(1000) + den_digits + 8 + self.var.len())
+            .sum();
+        let mut out = String::with_capacity(room);
         let mut first = true;
         for k in (0..a.num.len()).rev() {
             let c = &a.num[k];
@@ -382,22 +404,33 @@ impl Ring for QxRing {
                 } else {
                     std::borrow::Cow::Owned(mag / g)
                 };
-                (n, (den != g).then(|| num_bigint::BigUint::from(den / g)))
+                (
+                    n,
+                    (den != g).then(|| std::borrow::Cow::Owned(num_bigint::BigUint::from(den / g))),
+                )
             } else {
                 let g = super::intgcd::gcd_nat(mag, a.den.magnitude());
-                let d = a.den.magnitude() / &g;
-                let n = mag / &g;
-                if d.is_one() {
-                    (std::borrow::Cow::Owned(n), None)
+                if g.is_one() {
+                    (
+                        std::borrow::Cow::Borrowed(mag),
+                        Some(std::borrow::Cow::Borrowed(a.den.magnitude())),
+                    )
                 } else {
-                    (std::borrow::Cow::Owned(n), Some(d))
+                    let d = a.den.magnitude() / &g;
+                    let n = mag / &g;
+                    if d.is_one() {
+                        (std::borrow::Cow::Owned(n), None)
+                    } else {
+                        (std::borrow::Cow::Owned(n), Some(std::borrow::Cow::Owned(d)))
+                    }
                 }
             };
             let unit = n.is_one() && d.is_none();
             if k == 0 || !unit {
-                let _ = write!(out, "{n}");
+                super::decimal::write_nat(&mut out, &n);
                 if let Some(d) = d {
-                    let _ = write!(out, "/{d}");
+                    out.push('/');
+                    super::decimal::write_nat(&mut out, &d);
                 }
                 if k > 0 {
                     out.push('*');

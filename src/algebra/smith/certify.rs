@@ -398,6 +398,128 @@ fn dot_small(xs: &[Vec<BigInt>], ys: &[Vec<i64>]) -> Vec<BigInt> {
         .collect()
 }
 
+/// A line of integer polynomials laid out for [`dot_flat`]: every
+/// coefficient as `w` little-endian magnitude words, with a sign mask
+/// (0 or −1) per word, the polynomials' coefficients contiguous.
+struct FlatLine {
+    /// Words per coefficient.
+    w: usize,
+    /// Per polynomial: (first word, number of coefficients).
+    polys: Vec<(usize, usize)>,
+    mags: Vec<u64>,
+    masks: Vec<i128>,
+}
+
+impl FlatLine {
+    fn new(line: &[Vec<BigInt>]) -> Self {
+        let bits = line.iter().flatten().map(|c| c.bits()).max().unwrap_or(0);
+        let w = bits.div_ceil(64).max(1) as usize;
+        let total: usize = line.iter().map(|p| p.len()).sum();
+        let (mut mags, mut masks) = (Vec::with_capacity(total * w), Vec::with_capacity(total * w));
+        let mut polys = Vec::with_capacity(line.len());
+        for p in line {
+            polys.push((mags.len(), p.len()));
+            for c in p {
+                let start = mags.len();
+                mags.extend(c.magnitude().iter_u64_digits());
+                mags.resize(start + w, 0);
+                masks.resize(start + w, if c.is_negative() { -1 } else { 0 });
+            }
+        }
+        FlatLine {
+            w,
+            polys,
+            mags,
+            masks,
+        }
+    }
+}
+
+/// [`dot_small`] for a [`FlatLine`] against factors whose coefficients
+/// are below 2^32 in magnitude, each coefficient a sum of fewer than 2^30
+/// products (the caller checks both): a limb of `|a|·|b|` is below 2^96,
+/// so every product goes, signed, into one `i128` lane per word (below
+/// 2^126 in magnitude: no overflow, no carry chain in the inner loop,
+/// which is one contiguous multiply-add per factor coefficient); the lanes
+/// are carried into words once per coefficient at the end.
+fn dot_flat(xs: &FlatLine, ys: &[Vec<i64>]) -> Vec<BigInt> {
+    let w = xs.w;
+    let len = xs
+        .polys
+        .iter()
+        .zip(ys)
+        .filter(|((_, la), b)| *la > 0 && !b.is_empty())
+        .map(|((_, la), b)| la + b.len() - 1)
+        .max()
+        .unwrap_or(0);
+    if len == 0 {
+        return Vec::new();
+    }
+    let mut lanes = vec![0i128; (len + 1) * w];
+    for (&(start, la), b) in xs.polys.iter().zip(ys) {
+        let (mags, masks) = (
+            &xs.mags[start..start + la * w],
+            &xs.masks[start..start + la * w],
+        );
+        for (t, &q) in b.iter().enumerate() {
+            if q == 0 {
+                continue;
+            }
+            let qa = u128::from(q.unsigned_abs());
+            let qm: i128 = if q < 0 { -1 } else { 0 };
+            for ((l, &m), &mk) in lanes[t * w..].iter_mut().zip(mags).zip(masks) {
+                // ±m·|q|: conditional negation by the combined mask.
+                let p = (u128::from(m) * qa) as i128;
+                let mm = mk ^ qm;
+                *l += (p ^ mm) - mm;
+            }
+        }
+    }
+    let mut words: Vec<u64> = Vec::with_capacity(w + 1);
+    (0..len)
+        .map(|k| {
+            words.clear();
+            let mut carry = 0i128;
+            for &l in &lanes[k * w..(k + 1) * w] {
+                let t = l + carry;
+                words.push(t as u64);
+                carry = t >> 64;
+            }
+            // The value is Σ words·2^(64·i) + carry·2^(64·w), |carry| < 2^63.
+            let negative = carry < 0;
+            words.push(carry as u64);
+            if negative {
+                let mut c = true;
+                for x in words.iter_mut() {
+                    let (v, o) = (!*x).overflowing_add(u64::from(c));
+                    *x = v;
+                    c = o;
+                }
+            }
+            let digits: Vec<u32> = words
+                .iter()
+                .flat_map(|&l| [l as u32, (l >> 32) as u32])
+                .collect();
+            let m = num_bigint::BigUint::new(digits);
+            BigInt::from_biguint(
+                if negative {
+                    num_bigint::Sign::Minus
+                } else {
+                    num_bigint::Sign::Plus
+                },
+                m,
+            )
+        })
+        .collect()
+}
+
+/// Whether [`dot_flat`] applies to these factors (coefficients below
+/// 2^32, fewer than 2^30 products per coefficient).
+fn flat_applies(ys: &[Vec<i64>]) -> bool {
+    let terms: usize = ys.iter().map(|b| b.len()).sum();
+    terms < 1 << 30 && ys.iter().flatten().all(|q| q.unsigned_abs() < 1 << 32)
+}
+
 /// `slot += mag·q` on little-endian words (`slot` wide enough: the
 /// caller's width bound).
 #[inline]
@@ -433,9 +555,22 @@ pub fn mul_cleared(x: &Matrix<QxRing>, y: &Matrix<QxRing>) -> Option<Matrix<QxRi
         .collect();
     let small_rows: Vec<Option<Vec<Vec<i64>>>> = rows.iter().map(|(l, _)| small_line(l)).collect();
     let small_cols: Vec<Option<Vec<Vec<i64>>>> = cols.iter().map(|(l, _)| small_line(l)).collect();
+    // Rows laid out once for the columns with small coefficients.
+    let flat_cols: Vec<bool> = small_cols
+        .iter()
+        .map(|c| c.as_ref().is_some_and(|ys| flat_applies(ys)))
+        .collect();
+    let flat_rows: Vec<Option<FlatLine>> = rows
+        .iter()
+        .map(|(l, _)| flat_cols.iter().any(|&f| f).then(|| FlatLine::new(l)))
+        .collect();
     let mut data = Vec::with_capacity(m * n);
-    for ((xr, dx), xs) in rows.iter().zip(&small_rows) {
-        for ((yc, dy), ys) in cols.iter().zip(&small_cols) {
+    for (((xr, dx), xs), xf) in rows.iter().zip(&small_rows).zip(&flat_rows) {
+        for (((yc, dy), ys), &flat) in cols.iter().zip(&small_cols).zip(&flat_cols) {
+            if let (Some(ys), Some(xf), true) = (ys, xf, flat) {
+                data.push(QPoly::new(dot_flat(xf, ys), dx * dy));
+                continue;
+            }
             if let Some(ys) = ys {
                 data.push(QPoly::new(dot_small(xr, ys), dx * dy));
                 continue;
@@ -842,8 +977,9 @@ mod tests {
                 .wrapping_add(1442695040888963407);
             seed
         };
-        let mut checked = 0;
-        for round in 0..40 {
+        let (mut checked, mut flat_checked) = (0, 0);
+        // Rounds from 40 on have factors below 2^32 (the flat form).
+        for round in 0..80 {
             let k = 1 + round % 5;
             let big = |x: u64, y: u64, z: u64| -> BigInt {
                 let v = (BigInt::from(x) << 128) + (BigInt::from(y) << 64) + BigInt::from(z);
@@ -860,10 +996,13 @@ mod tests {
             let ys: Vec<Vec<i64>> = (0..k)
                 .map(|t| {
                     (0..(t + 2 * round) % 3 + 1)
-                        .map(|s| match (round + s) % 4 {
-                            0 => i64::MIN,
-                            1 => i64::MAX,
-                            _ => next() as i64 >> (next() % 60),
+                        .map(|s| match ((round + s) % 4, round >= 40) {
+                            (0, false) => i64::MIN,
+                            (1, false) => i64::MAX,
+                            (0, true) => (1 << 32) - 1,
+                            (1, true) => 1 - (1 << 32),
+                            (_, false) => next() as i64 >> (next() % 60),
+                            (_, true) => next() as i64 >> (32 + next() % 30),
                         })
                         .collect()
                 })
@@ -880,6 +1019,17 @@ mod tests {
                 }
             }
             let got = dot_small(&xs, &ys);
+            if flat_applies(&ys) {
+                let flat = dot_flat(&FlatLine::new(&xs), &ys);
+                let trim = |mut v: Vec<BigInt>| {
+                    while v.last().is_some_and(|c| c.is_zero()) {
+                        v.pop();
+                    }
+                    v
+                };
+                assert_eq!(trim(flat), trim(got.clone()), "round {round} (flat)");
+                flat_checked += 1;
+            }
             let trim = |mut v: Vec<BigInt>| {
                 while v.last().is_some_and(|c| c.is_zero()) {
                     v.pop();
@@ -889,7 +1039,8 @@ mod tests {
             assert_eq!(trim(got), trim(want), "round {round}");
             checked += 1;
         }
-        assert_eq!(checked, 40);
+        assert_eq!(checked, 80);
+        assert!(flat_checked >= 40, "{flat_checked}");
     }
 
     #[test]

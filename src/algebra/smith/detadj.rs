@@ -49,53 +49,98 @@ pub fn coefficient_bound_bits(m: &[Vec<IntPoly>]) -> Option<u64> {
     Some(total)
 }
 
-/// Gauss–Jordan on `[M | I]` mod p: `(det M, adj M)` (row-major), or
-/// `None` when M is singular mod p.
+/// Gauss–Jordan inversion in place mod p: `(det M, adj M)` (row-major),
+/// or `None` when M is singular mod p. Each pivot step stores the
+/// inverse's column where A's was (n³ products instead of the 1.5·n³ of
+/// eliminating on `[M | I]`); row interchanges make it `(P·M)⁻¹ = M⁻¹·P⁻¹`,
+/// undone by the same interchanges of columns in reverse order.
 pub fn det_adj_mod(f: Fp, m: &[u64], n: usize) -> Option<(u64, Vec<u64>)> {
-    let w = 2 * n;
-    let mut a = vec![0u64; n * w];
-    for i in 0..n {
-        a[i * w..i * w + n].copy_from_slice(&m[i * n..(i + 1) * n]);
-        a[i * w + n + i] = 1;
-    }
+    let mut a = m[..n * n].to_vec();
+    let mut swaps: Vec<(usize, usize)> = Vec::new();
     let mut det = 1u64;
     for k in 0..n {
-        let p = (k..n).find(|&i| a[i * w + k] != 0)?;
+        let p = (k..n).find(|&i| a[i * n + k] != 0)?;
         if p != k {
-            for j in 0..w {
-                a.swap(p * w + j, k * w + j);
+            for j in 0..n {
+                a.swap(p * n + j, k * n + j);
             }
             det = f.neg(det);
+            swaps.push((k, p));
         }
-        let piv = a[k * w + k];
+        let piv = a[k * n + k];
         det = f.mul(det, piv);
         let inv = f.prep(f.inv(piv));
-        for j in k..w {
-            a[k * w + j] = f.mul_pre(inv, a[k * w + j]);
+        a[k * n + k] = 1;
+        for j in 0..n {
+            a[k * n + j] = f.mul_pre(inv, a[k * n + j]);
         }
-        let (before, rest) = a.split_at_mut(k * w);
-        let (prow, after) = rest.split_at_mut(w);
-        for row in before.chunks_mut(w).chain(after.chunks_mut(w)) {
+        let (before, rest) = a.split_at_mut(k * n);
+        let (prow, after) = rest.split_at_mut(n);
+        for row in before.chunks_mut(n).chain(after.chunks_mut(n)) {
             let c = row[k];
             if c == 0 {
                 continue;
             }
+            row[k] = 0;
             let cm = f.prep(c);
-            for j in k..w {
-                row[j] = f.sub(row[j], f.mul_pre(cm, prow[j]));
+            for (x, &y) in row.iter_mut().zip(prow.iter()) {
+                *x = f.sub(*x, f.mul_pre(cm, y));
             }
         }
     }
+    for &(k, p) in swaps.iter().rev() {
+        for i in 0..n {
+            a.swap(i * n + k, i * n + p);
+        }
+    }
     let dm = f.prep(det);
-    let adj = (0..n)
-        .flat_map(|i| (0..n).map(move |j| (i, j)))
-        .map(|(i, j)| f.mul_pre(dm, a[i * w + n + j]))
-        .collect();
-    Some((det, adj))
+    for v in a.iter_mut() {
+        *v = f.mul_pre(dm, *v);
+    }
+    Some((det, a))
+}
+
+/// The Lagrange basis of the distinct points `xs` mod p, row-major:
+/// entry `i·n + c` is the coefficient of `x^c` in `L_i = Π_{j≠i} (x −
+/// x_j)/(x_i − x_j)` (n = `xs.len()`), from `P = Π (x − x_j)` by one
+/// synthetic division per point and one inversion per point.
+fn lagrange_basis(f: Fp, xs: &[u64]) -> Vec<u64> {
+    let n = xs.len();
+    // P, monic of degree n.
+    let mut p = vec![0u64; n + 1];
+    p[0] = 1;
+    for (len, &xj) in xs.iter().enumerate() {
+        let xm = f.prep(xj);
+        for k in (0..=len + 1).rev() {
+            let hi = if k > 0 { p[k - 1] } else { 0 };
+            p[k] = f.sub(hi, f.mul_pre(xm, p[k]));
+        }
+    }
+    let mut out = vec![0u64; n * n];
+    let mut q = vec![0u64; n];
+    for (i, &xi) in xs.iter().enumerate() {
+        // q = P/(x − x_i), then L_i = q/q(x_i).
+        let xm = f.prep(xi);
+        q[n - 1] = p[n];
+        for k in (1..n).rev() {
+            q[k - 1] = f.add(p[k], f.mul_pre(xm, q[k]));
+        }
+        let w = q
+            .iter()
+            .rev()
+            .fold(0u64, |acc, &c| f.add(f.mul_pre(xm, acc), c));
+        let wm = f.prep(f.inv(w));
+        for (o, &c) in out[i * n..(i + 1) * n].iter_mut().zip(&q) {
+            *o = f.mul_pre(wm, c);
+        }
+    }
+    out
 }
 
 /// Newton interpolation mod p through `(xs[k], ys[k])`, in monomial form
 /// (length `xs.len()`, not trimmed). `inv[k][i]` = `(xs[i] − xs[i−k])⁻¹`.
+/// The former route, now the reference for [`lagrange_basis`].
+#[cfg(test)]
 fn interpolate_mod(f: Fp, xs: &[u64], ys: &[u64], inv: &[Vec<u64>]) -> Vec<u64> {
     let n = xs.len();
     let mut c = ys.to_vec();
@@ -161,27 +206,27 @@ fn image(f: Fp, m: &[Vec<IntPoly>], deg: usize) -> Option<(Vec<u64>, Vec<Vec<u64
         x += 1;
     }
     let npts = xs.len();
-    let inv: Vec<Vec<u64>> = (0..npts)
-        .map(|k| {
-            (0..npts)
-                .map(|i| {
-                    if k == 0 || i < k {
-                        0
-                    } else {
-                        f.prep(f.inv(f.sub(xs[i], xs[i - k])))
-                    }
-                })
-                .collect()
-        })
-        .collect();
-    let det = interpolate_mod(f, &xs, &dets, &inv);
+    // One Lagrange basis for all n² + 1 interpolations: each is then a
+    // matrix–vector product with lazy sums.
+    let basis = lagrange_basis(f, &xs);
+    let interpolate = |ys: &[u64]| -> Vec<u64> {
+        (0..npts)
+            .map(|c| {
+                let acc = ys.iter().enumerate().fold(0u128, |acc, (i, &y)| {
+                    f.mul_add_wide(acc, y, basis[i * npts + c])
+                });
+                f.reduce_wide(acc)
+            })
+            .collect()
+    };
+    let det = interpolate(&dets);
     let mut ys = vec![0u64; npts];
     let adj = (0..n * n)
         .map(|e| {
             for (y, a) in ys.iter_mut().zip(&adjs) {
                 *y = a[e];
             }
-            interpolate_mod(f, &xs, &ys, &inv)
+            interpolate(&ys)
         })
         .collect();
     Some((det, adj))
@@ -241,6 +286,21 @@ impl Garner {
                 t = f.mul_pre(inv, f.sub(t, vj));
             }
             v[i] = t;
+        }
+        // Up to two primes (m < 2^128) the value fits an i128: no BigInt
+        // digits to pack.
+        if k <= 2 {
+            let m: u128 = self.ps.iter().map(|f| u128::from(f.p)).product();
+            let acc = if k == 2 {
+                u128::from(v[1]) * u128::from(self.ps[0].p) + u128::from(v[0])
+            } else {
+                v.first().map_or(0, |&x| u128::from(x))
+            };
+            return if acc > m >> 1 {
+                BigInt::from(acc as i128 - m as i128)
+            } else {
+                BigInt::from(acc)
+            };
         }
         // Horner on 64-bit limbs: acc = v[k−1]; acc = acc·p + v[i]. The
         // value has at most k limbs (each p < 2^64); on the stack up to 32.
@@ -360,6 +420,176 @@ mod tests {
 
     fn bi(v: &[i64]) -> IntPoly {
         v.iter().map(|&x| BigInt::from(x)).collect()
+    }
+
+    /// The former form, Gauss–Jordan on `[M | I]` mod p (the reference): `(det M, adj M)` (row-major), or
+    /// `None` when M is singular mod p.
+    fn det_adj_mod_augmented(f: Fp, m: &[u64], n: usize) -> Option<(u64, Vec<u64>)> {
+        let w = 2 * n;
+        let mut a = vec![0u64; n * w];
+        for i in 0..n {
+            a[i * w..i * w + n].copy_from_slice(&m[i * n..(i + 1) * n]);
+            a[i * w + n + i] = 1;
+        }
+        let mut det = 1u64;
+        for k in 0..n {
+            let p = (k..n).find(|&i| a[i * w + k] != 0)?;
+            if p != k {
+                for j in 0..w {
+                    a.swap(p * w + j, k * w + j);
+                }
+                det = f.neg(det);
+            }
+            let piv = a[k * w + k];
+            det = f.mul(det, piv);
+            let inv = f.prep(f.inv(piv));
+            for j in k..w {
+                a[k * w + j] = f.mul_pre(inv, a[k * w + j]);
+            }
+            let (before, rest) = a.split_at_mut(k * w);
+            let (prow, after) = rest.split_at_mut(w);
+            for row in before.chunks_mut(w).chain(after.chunks_mut(w)) {
+                let c = row[k];
+                if c == 0 {
+                    continue;
+                }
+                let cm = f.prep(c);
+                for j in k..w {
+                    row[j] = f.sub(row[j], f.mul_pre(cm, prow[j]));
+                }
+            }
+        }
+        let dm = f.prep(det);
+        let adj = (0..n)
+            .flat_map(|i| (0..n).map(move |j| (i, j)))
+            .map(|(i, j)| f.mul_pre(dm, a[i * w + n + j]))
+            .collect();
+        Some((det, adj))
+    }
+
+    /// Garner's lift is the symmetric representative of the Chinese
+    /// remainder, for one to five primes (the i128 form up to two).
+    #[test]
+    fn garner_lift_is_the_symmetric_crt_value() {
+        let ps: Vec<Fp> = primes().take(5).map(Fp::new).collect();
+        let mut seed = 9u64;
+        let mut next = || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            seed
+        };
+        let mut checked = 0;
+        for k in 1..=5 {
+            let basis = Garner::new(&ps[..k]);
+            for round in 0..50 {
+                let bits = 1 + next() % (62 * k as u64 - 1);
+                let mut x = BigInt::from(next()) << 64u32 | BigInt::from(next());
+                x = (x << (62 * k)) | BigInt::from(next());
+                x %= BigInt::from(1) << bits as usize;
+                if round % 2 == 1 {
+                    x = -x;
+                }
+                let x = crate::algebra::modular::symmetric(&x, &basis.m);
+                let res: Vec<u64> = ps[..k].iter().map(|f| f.reduce(&x)).collect();
+                assert_eq!(basis.lift(&res), x, "k = {k}");
+                checked += 1;
+            }
+            // The ends of the range.
+            let half = &basis.m >> 1u32;
+            for x in [half.clone(), -half.clone()] {
+                let res: Vec<u64> = ps[..k].iter().map(|f| f.reduce(&x)).collect();
+                assert_eq!(basis.lift(&res), x, "k = {k}");
+            }
+        }
+        assert_eq!(checked, 250);
+    }
+
+    /// Interpolating with the Lagrange basis equals Newton's form, on
+    /// consecutive points (as `image` takes them, some skipped) and random
+    /// ones.
+    #[test]
+    fn lagrange_basis_interpolates_like_newton() {
+        let f = Fp::new(primes().next().expect("a prime"));
+        let mut seed = 21u64;
+        let mut next = || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            seed >> 3
+        };
+        let mut checked = 0;
+        for round in 0..120 {
+            let npts = 1 + round % 14;
+            let mut xs: Vec<u64> = Vec::new();
+            let mut x = 0u64;
+            while xs.len() < npts {
+                let skip = round % 2 == 1 && next() % 4 == 0;
+                if !skip {
+                    xs.push(if round % 3 == 2 { next() % f.p } else { x });
+                }
+                x += 1;
+            }
+            xs.sort_unstable();
+            xs.dedup();
+            let npts = xs.len();
+            let ys: Vec<u64> = (0..npts).map(|_| next() % f.p).collect();
+            let inv: Vec<Vec<u64>> = (0..npts)
+                .map(|k| {
+                    (0..npts)
+                        .map(|i| {
+                            if k == 0 || i < k {
+                                0
+                            } else {
+                                f.prep(f.inv(f.sub(xs[i], xs[i - k])))
+                            }
+                        })
+                        .collect()
+                })
+                .collect();
+            let want = interpolate_mod(f, &xs, &ys, &inv);
+            let basis = lagrange_basis(f, &xs);
+            let got: Vec<u64> = (0..npts)
+                .map(|c| {
+                    (0..npts).fold(0u64, |acc, i| f.add(acc, f.mul(ys[i], basis[i * npts + c])))
+                })
+                .collect();
+            assert_eq!(got, want, "round {round}");
+            checked += 1;
+        }
+        assert_eq!(checked, 120);
+    }
+
+    #[test]
+    fn in_place_inversion_equals_elimination_on_m_and_i() {
+        let f = Fp::new(primes().next().expect("a prime"));
+        let mut seed = 5u64;
+        let mut next = || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            seed >> 3
+        };
+        let (mut inverted, mut singular) = (0, 0);
+        for round in 0..400 {
+            let n = 1 + round % 9;
+            // Small entries and many zeros force row interchanges and
+            // singular cases.
+            let m: Vec<u64> = (0..n * n)
+                .map(|_| match next() % 4 {
+                    0 => 0,
+                    1 => next() % 3,
+                    _ => next() % f.p,
+                })
+                .collect();
+            let got = det_adj_mod(f, &m, n);
+            assert_eq!(got, det_adj_mod_augmented(f, &m, n), "round {round}");
+            match got {
+                Some(_) => inverted += 1,
+                None => singular += 1,
+            }
+        }
+        assert!(inverted > 250 && singular > 10, "{inverted} {singular}");
     }
 
     #[test]

@@ -219,6 +219,9 @@ pub fn to_univariate(a: &Matrix<PolyRing>) -> Matrix<QxRing> {
     let ring = QxRing::new(var);
     let r2 = UPolyRing::new(Rationals, "x");
     a.map(ring, |p| {
+        if p.nvars() <= 1 {
+            return univariate_terms(p);
+        }
         let cs = if p.nvars() == 0 {
             vec![p.as_constant().expect("no variables")]
         } else {
@@ -229,6 +232,34 @@ pub fn to_univariate(a: &Matrix<PolyRing>) -> Matrix<QxRing> {
         };
         QPoly::from_upoly(&r2.trim(cs))
     })
+}
+
+/// A polynomial in at most one variable as a [`QPoly`], read from its
+/// terms directly (distinct monomials, nonzero coefficients: MPoly's
+/// canonical form): integer coefficients go straight to the numerators,
+/// and only a polynomial with a fractional coefficient takes the common
+/// denominator. The same value as the generic conversion through
+/// `coeffs_in`.
+fn univariate_terms(p: &MPoly) -> QPoly {
+    let terms = p.terms();
+    let len = terms
+        .iter()
+        .map(|(m, _)| m.first().copied().unwrap_or(0) as usize + 1)
+        .max()
+        .unwrap_or(0);
+    let exp = |m: &[u32]| m.first().copied().unwrap_or(0) as usize;
+    if terms.iter().all(|(_, c)| c.is_integer()) {
+        let mut cs = vec![num_bigint::BigInt::from(0); len];
+        for (m, c) in terms {
+            cs[exp(m)] = c.numer().clone();
+        }
+        return QPoly::from_ints(cs);
+    }
+    let mut cs = vec![crate::algebra::rational::Q::from_integer(0.into()); len];
+    for (m, c) in terms {
+        cs[exp(m)] = c.clone();
+    }
+    QPoly::from_upoly(&UPoly(cs))
 }
 
 /// Decomposes over Q[x]: the nonsingular fast path when it applies, the

@@ -116,7 +116,7 @@ fn h_image(f: Fp, det: &[BigInt], adj: &[Vec<IntPoly>], order: &[usize]) -> Opti
     let fp = modular::monic(f, &detp);
     let (j, inv) = order.iter().find_map(|&j| {
         let a = reduce(f, &adj[n - 1][j]);
-        modular::inverse_and_resultant(f, &a, &fp).map(|(s, _)| (j, s))
+        modular::inverse_mod(f, &a, &fp).map(|s| (j, s))
     })?;
     // h_i = −Σ_t adj_ij[t]·S_t with S_t = x^t·inv mod fp (one table for
     // all rows; the sums accumulate lazily in u128).
@@ -216,8 +216,9 @@ fn reconstruct_h(
                 .collect()
         };
         // A cheap probe on h_0 first.
+        let bound = modular::reconstruction_bound(&basis.m);
         let Some((nums, den)) =
-            modular::rational_reconstruct_vec(&lift(0), &basis.m, &BigInt::one())
+            modular::rational_reconstruct_vec_below(&lift(0), &basis.m, &bound, &BigInt::one())
         else {
             continue;
         };
@@ -227,7 +228,8 @@ fn reconstruct_h(
         let mut out = vec![(nums, den)];
         for i in 1..check.h.len() {
             let l = out[i - 1].1.clone();
-            let Some((nums, den)) = modular::rational_reconstruct_vec(&lift(i), &basis.m, &l)
+            let Some((nums, den)) =
+                modular::rational_reconstruct_vec_below(&lift(i), &basis.m, &bound, &l)
             else {
                 break;
             };
@@ -245,18 +247,39 @@ fn reconstruct_h(
 
 /// `(content, primitive part)` of an integer vector (content ≥ 0; the
 /// zero vector is returned unchanged with content 0).
-fn content_split(v: &[BigInt]) -> (BigInt, Vec<BigInt>) {
+fn content_split(mut v: Vec<BigInt>) -> (BigInt, Vec<BigInt>) {
     let mut g = BigInt::zero();
-    for x in v {
+    for x in &v {
         if g.is_one() {
             break;
         }
         g = crate::algebra::intgcd::gcd(&g, x);
     }
-    if g.is_zero() || g.is_one() {
-        return (g, v.to_vec());
+    if !g.is_zero() && !g.is_one() {
+        for x in v.iter_mut() {
+            *x /= &g;
+        }
     }
-    (g.clone(), v.iter().map(|x| x / &g).collect())
+    (g, v)
+}
+
+/// `n/d` in lowest terms for positive `n` and `d` (one Lehmer gcd).
+fn reduced(n: BigInt, d: BigInt) -> Q {
+    let g = crate::algebra::intgcd::gcd(&n, &d);
+    if g.is_one() {
+        Q::new_raw(n, d)
+    } else {
+        Q::new_raw(n / &g, d / &g)
+    }
+}
+
+/// Splits `v` into `n` consecutive integer polynomials of length `wlen`
+/// (moved, not copied).
+fn split_polys(v: Vec<BigInt>, n: usize, wlen: usize) -> Vec<QPoly> {
+    let mut it = v.into_iter();
+    (0..n)
+        .map(|_| QPoly::from_ints(it.by_ref().take(wlen).collect()))
+        .collect()
 }
 
 /// One prime's images of the rows `N_i = (den_i·adj_i + num_i·adj_n)·Δ /
@@ -589,7 +612,7 @@ pub fn small_parts(
     // canonical one once W = H·adj/c is polynomial.
     let h = reconstruct_h(det, adj, &order)?;
     debug_assert!(h.iter().all(|(nu, _)| nu.len() == big_n));
-    let (cont, pp) = content_split(det);
+    let (cont, pp) = content_split(det.to_vec());
     let wlen = adj
         .iter()
         .flatten()
@@ -602,18 +625,14 @@ pub fn small_parts(
     let mut lambda = Vec::with_capacity(n);
     let mut gs = Vec::with_capacity(n);
     for (i, (row, (_, den))) in rows.into_iter().zip(&h).enumerate() {
-        let (g, prim) = content_split(&row);
+        let (g, prim) = content_split(row);
         if g.is_zero() {
             return None;
         }
-        for k in 0..n {
-            u.set(
-                i,
-                k,
-                QPoly::from_ints(prim[k * wlen..(k + 1) * wlen].to_vec()),
-            );
+        for (k, p) in split_polys(prim, n, wlen).into_iter().enumerate() {
+            u.set(i, k, p);
         }
-        lambda.push(Q::new(den * &cont, g.clone()));
+        lambda.push(reduced(den * &cont, g.clone()));
         gs.push(g);
     }
     // Last row: adj_n·Δ/lc(c), made primitive with a positive scale.
@@ -624,18 +643,14 @@ pub fn small_parts(
             last[k * wlen + t] = if lc.is_negative() { -(c * d) } else { c * d };
         }
     }
-    let (g, prim) = content_split(&last);
+    let (g, prim) = content_split(last);
     if g.is_zero() {
         return None;
     }
-    for k in 0..n {
-        u.set(
-            n - 1,
-            k,
-            QPoly::from_ints(prim[k * wlen..(k + 1) * wlen].to_vec()),
-        );
+    for (k, p) in split_polys(prim, n, wlen).into_iter().enumerate() {
+        u.set(n - 1, k, p);
     }
-    lambda.push(Q::new(lc.abs(), g.clone()));
+    lambda.push(reduced(lc.abs(), g.clone()));
     // V = [[I, −h], [0, 1]]·Λ⁻¹ and V⁻¹ = Λ·[[I, h], [0, 1]], each entry
     // normalised once: −h_i/λ_n = −num_i·g_n/(den_i·|lc|), h_i·λ_i =
     // num_i·cont/g_i (λ_i = den_i·cont/g_i).
@@ -643,8 +658,9 @@ pub fn small_parts(
     let mut v = Matrix::zeros(r.clone(), n, n);
     let mut v_inv = Matrix::zeros(r.clone(), n, n);
     for (i, l) in lambda.iter().enumerate() {
-        v.set(i, i, QPoly::constant(&l.recip()));
-        v_inv.set(i, i, QPoly::constant(l));
+        // λ_i is reduced (Q::new), and so is its reciprocal.
+        v.set(i, i, QPoly::constant_reduced(&l.recip()));
+        v_inv.set(i, i, QPoly::constant_reduced(l));
     }
     for (i, (nu, de)) in h.iter().enumerate() {
         v.set(
@@ -774,41 +790,63 @@ pub fn certificate_prime() -> Option<u64> {
     modular::primes().next()
 }
 
-/// `X·Y` over Q[x] summing only the products of nonzero entries (for the
-/// sparse factors V, V⁻¹ and D of this route).
-fn sparse_product(x: &Matrix<QxRing>, y: &Matrix<QxRing>) -> Matrix<QxRing> {
-    let r = &x.ring;
-    let mut out = Matrix::zeros(r.clone(), x.rows(), y.cols());
+/// Whether `X·Y = Z` exactly over Q[x], summing only the products of
+/// nonzero entries (for the sparse factors V, V⁻¹ and D of this route)
+/// and without normalising anything: an entry `Σ_t a_t·b_t` with `a_t =
+/// A_t/α_t`, `b_t = B_t/β_t` equals `z = Z/ζ` iff `ζ·Σ_t A_t·B_t·Π_{s≠t}
+/// d_s = Z·Π_s d_s` over Z[x] (`d_s = α_s·β_s`), so no gcd is taken.
+fn sparse_product_is(x: &Matrix<QxRing>, y: &Matrix<QxRing>, z: &Matrix<QxRing>) -> bool {
+    if x.cols() != y.rows() || z.rows() != x.rows() || z.cols() != y.cols() {
+        return false;
+    }
+    let mut terms: Vec<(&QPoly, &QPoly)> = Vec::new();
     for i in 0..x.rows() {
-        for t in 0..x.cols() {
-            let a = x.get(i, t);
-            if a.is_zero() {
-                continue;
-            }
-            for k in 0..y.cols() {
-                let b = y.get(t, k);
-                if b.is_zero() {
-                    continue;
-                }
-                // Entries are in normal form, so a product by one and a
-                // sum with zero are copies.
-                let prod = if r.is_one(a) {
-                    b.clone()
-                } else if r.is_one(b) {
-                    a.clone()
-                } else {
-                    r.mul(a, b)
-                };
-                let e = if out.get(i, k).is_zero() {
-                    prod
-                } else {
-                    r.add(out.get(i, k), &prod)
-                };
-                out.set(i, k, e);
+        for k in 0..y.cols() {
+            terms.clear();
+            terms.extend(
+                (0..x.cols())
+                    .map(|t| (x.get(i, t), y.get(t, k)))
+                    .filter(|(a, b)| !a.is_zero() && !b.is_zero()),
+            );
+            if !sum_of_products_is(&terms, z.get(i, k)) {
+                return false;
             }
         }
     }
-    out
+    true
+}
+
+/// Whether `Σ_t a_t·b_t = z` (see [`sparse_product_is`]).
+fn sum_of_products_is(terms: &[(&QPoly, &QPoly)], z: &QPoly) -> bool {
+    if terms.is_empty() {
+        return z.is_zero();
+    }
+    let ds: Vec<BigInt> = terms.iter().map(|(a, b)| a.den() * b.den()).collect();
+    let mut lhs: Vec<BigInt> = Vec::new();
+    for (t, (a, b)) in terms.iter().enumerate() {
+        let mut f = z.den().clone();
+        for (s, d) in ds.iter().enumerate() {
+            if s != t && !d.is_one() {
+                f *= d;
+            }
+        }
+        let c = crate::algebra::qx::conv(a.num(), b.num());
+        if lhs.len() < c.len() {
+            lhs.resize(c.len(), BigInt::zero());
+        }
+        for (l, c) in lhs.iter_mut().zip(c) {
+            if f.is_one() {
+                *l += c;
+            } else {
+                *l += c * &f;
+            }
+        }
+    }
+    while lhs.last().is_some_and(|c| c.is_zero()) {
+        lhs.pop();
+    }
+    let p = ds.iter().fold(BigInt::one(), |p, d| p * d);
+    lhs.len() == z.num().len() && lhs.iter().zip(z.num()).all(|(l, c)| *l == c * &p)
 }
 
 /// Certifies a [`SmallDecomposition`] of `a` exactly: `U·A·V = D` over
@@ -845,8 +883,9 @@ pub fn certify_small(a: &Matrix<QxRing>, s: &SmallDecomposition, p: u64) -> Cert
     // The products only when the degree argument can conclude. V·V⁻¹ = I
     // (V, V⁻¹ square) gives V⁻¹·V = I, so U·A·V = D follows from
     // U·A = D·V⁻¹, which avoids multiplying U·A by V's large last column.
-    let vinv = degrees && sparse_product(&s.v, &s.v_inv) == Matrix::identity(r.clone(), n);
-    let prod = vinv && mul_cleared(&s.u, a).is_some_and(|ua| ua == sparse_product(&s.d, &s.v_inv));
+    let vinv = degrees && sparse_product_is(&s.v, &s.v_inv, &Matrix::identity(r.clone(), n));
+    let prod =
+        vinv && mul_cleared(&s.u, a).is_some_and(|ua| sparse_product_is(&s.d, &s.v_inv, &ua));
     push(
         "U·A·V = D",
         prod,
@@ -1010,6 +1049,56 @@ mod tests {
         // The tampered triple still satisfies U·A·V = D: only the degree
         // argument rejects it.
         assert!(super::super::certify::ClearedQx.product_equals(&[&bad.u, &a, &bad.v], &bad.d));
+    }
+
+    /// The gcd-free check agrees with the normalised product: on the
+    /// route's own sparse factors (V·V⁻¹ = I, D·V⁻¹ = U·A) and on random
+    /// sparse rational matrices against their product and a perturbed one.
+    #[test]
+    fn gcd_free_product_check_agrees_with_the_product() {
+        let r = QxRing::new("x");
+        let a = random(6, 2, 7);
+        let (s, _) = small_hermite(&a).expect("generic input");
+        assert!(sparse_product_is(
+            &s.v,
+            &s.v_inv,
+            &Matrix::identity(r.clone(), 6)
+        ));
+        let ua = mul_cleared(&s.u, &a).expect("shapes");
+        assert!(sparse_product_is(&s.d, &s.v_inv, &ua));
+        assert!(!sparse_product_is(&s.v_inv, &s.v, &ua));
+        let mut seed = 3u64;
+        let mut next = || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (seed >> 33) as i64
+        };
+        let mut checked = 0;
+        for _ in 0..60 {
+            let mut entry = || {
+                if next() % 3 == 0 {
+                    return QPoly::from_ints(vec![]);
+                }
+                let len = (next() % 3 + 1) as usize;
+                let num = (0..len).map(|_| BigInt::from(next() % 41 - 20)).collect();
+                QPoly::new(num, BigInt::from(next() % 12 + 1))
+            };
+            let x = Matrix::new(r.clone(), 3, 4, (0..12).map(|_| entry()).collect());
+            let y = Matrix::new(r.clone(), 4, 2, (0..8).map(|_| entry()).collect());
+            let z = x.mul(&y).expect("shapes");
+            assert!(sparse_product_is(&x, &y, &z));
+            let mut w = z.clone();
+            let e = r.add(
+                w.get(2, 1),
+                &QPoly::new(vec![BigInt::one()], BigInt::from(7)),
+            );
+            w.set(2, 1, e);
+            assert!(!sparse_product_is(&x, &y, &w));
+            assert!(!sparse_product_is(&x, &y, &Matrix::zeros(r.clone(), 3, 3)));
+            checked += 1;
+        }
+        assert_eq!(checked, 60);
     }
 
     #[test]
