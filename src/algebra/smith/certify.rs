@@ -371,29 +371,7 @@ fn dot_small(xs: &[Vec<BigInt>], ys: &[Vec<i64>]) -> Vec<BigInt> {
     acc.chunks(w)
         .map(|slot| {
             let negative = slot[w - 1] >> 63 == 1;
-            let mut limbs = slot.to_vec();
-            if negative {
-                // Two's complement negation.
-                let mut carry = true;
-                for l in limbs.iter_mut() {
-                    let (v, o) = (!*l).overflowing_add(carry as u64);
-                    *l = v;
-                    carry = o;
-                }
-            }
-            let digits: Vec<u32> = limbs
-                .iter()
-                .flat_map(|&l| [l as u32, (l >> 32) as u32])
-                .collect();
-            let m = num_bigint::BigUint::new(digits);
-            BigInt::from_biguint(
-                if negative {
-                    num_bigint::Sign::Minus
-                } else {
-                    num_bigint::Sign::Plus
-                },
-                m,
-            )
+            twos_complement_to_bigint(&mut slot.to_vec(), negative)
         })
         .collect()
 }
@@ -488,27 +466,7 @@ fn dot_flat(xs: &FlatLine, ys: &[Vec<i64>]) -> Vec<BigInt> {
             // The value is Σ words·2^(64·i) + carry·2^(64·w), |carry| < 2^63.
             let negative = carry < 0;
             words.push(carry as u64);
-            if negative {
-                let mut c = true;
-                for x in words.iter_mut() {
-                    let (v, o) = (!*x).overflowing_add(u64::from(c));
-                    *x = v;
-                    c = o;
-                }
-            }
-            let digits: Vec<u32> = words
-                .iter()
-                .flat_map(|&l| [l as u32, (l >> 32) as u32])
-                .collect();
-            let m = num_bigint::BigUint::new(digits);
-            BigInt::from_biguint(
-                if negative {
-                    num_bigint::Sign::Minus
-                } else {
-                    num_bigint::Sign::Plus
-                },
-                m,
-            )
+            twos_complement_to_bigint(&mut words, negative)
         })
         .collect()
 }
@@ -954,6 +912,30 @@ pub fn certify_two_factors(
     factors.push(f_prev);
     factors.extend(f_last);
     (cert, factors)
+}
+
+/// The integer whose two's-complement little-endian 64-bit limbs are
+/// `limbs` (negative when `negative`, i.e. its top bit is set); `limbs` is
+/// negated in place on the way.
+fn twos_complement_to_bigint(limbs: &mut [u64], negative: bool) -> BigInt {
+    if negative {
+        let mut carry = true;
+        for l in limbs.iter_mut() {
+            let (v, o) = (!*l).overflowing_add(u64::from(carry));
+            *l = v;
+            carry = o;
+        }
+    }
+    let digits: Vec<u32> = limbs
+        .iter()
+        .flat_map(|&l| [l as u32, (l >> 32) as u32])
+        .collect();
+    let sign = if negative {
+        num_bigint::Sign::Minus
+    } else {
+        num_bigint::Sign::Plus
+    };
+    BigInt::from_biguint(sign, num_bigint::BigUint::new(digits))
 }
 
 #[cfg(test)]
