@@ -215,6 +215,16 @@ fn limit_info(l: &Limit) -> String {
     }
 }
 
+/// A given value as the user would write it: `0.01`, but `1e-9` rather
+/// than nine zeros (f64's `Display` never uses an exponent).
+fn shown(x: f64) -> String {
+    if x != 0.0 && (x.abs() < 1e-4 || x.abs() >= 1e16) {
+        format!("{x:e}")
+    } else {
+        format!("{x}")
+    }
+}
+
 fn ok(b: bool) -> &'static str {
     if b { "ok" } else { "VIOLATED" }
 }
@@ -236,9 +246,9 @@ fn text(s: &HertzResult, given_c: bool) -> String {
     match (&s.end_answer, given_c) {
         (Some(e), _) => {
             let (name, given, value) = if given_c {
-                ("μ", format!("c = {}", s.c), s.mu)
+                ("μ", format!("c = {}", shown(s.c)), s.mu)
             } else {
-                ("c", format!("μ = {}", s.mu), s.c)
+                ("c", format!("μ = {}", shown(s.mu)), s.c)
             };
             // Near the upper end (c → 1 near full stick) the gap is
             // stated as the distance from the end, which is what is known.
@@ -272,7 +282,13 @@ fn text(s: &HertzResult, given_c: bool) -> String {
             let _ = writeln!(o, "  given c = {}  →  μ = {:.13}{}", s.c, s.mu, pm("mu"));
         }
         (None, false) => {
-            let _ = writeln!(o, "  given μ = {}  →  c = {:.13}{}", s.mu, s.c, pm("c"));
+            let _ = writeln!(
+                o,
+                "  given μ = {}  →  c = {:.13}{}",
+                shown(s.mu),
+                s.c,
+                pm("c")
+            );
         }
     }
     let _ = writeln!(o, "  edge exponent α = arccot(γμ)/π = {:.15}", s.alpha);
