@@ -101,9 +101,13 @@ pub use error::{ErrorKind, LangError};
 /// assert!(err.render().contains("a.lmx:2:13"));
 /// ```
 ///
-/// The work runs on a helper thread with a [`STACK_SIZE`] stack (as rustc
-/// does), so that the recursive passes over deeply nested input stay far
-/// from the end of the caller's stack, whatever thread the caller is on.
+/// Input deeper than [`HERE_MAX_LEVELS`] by [`depth_bound`], or a caller's
+/// thread without room for its levels, is handed to a helper thread with a
+/// [`STACK_SIZE`] stack (as rustc does), so that the recursive passes over
+/// deeply nested input stay far from the end of the caller's stack,
+/// whatever thread the caller is on. Small shallow files (every example and
+/// benchmark matrix of degree up to 3) are done on the caller's thread:
+/// starting the helper thread cost more than parsing them.
 pub fn parse_program(src: &str, filename: &str) -> Result<Program, LangErrors> {
     parse_program_with(src, filename, &[])
 }
