@@ -68,4 +68,23 @@ mod tests {
         ours.sort_unstable();
         assert_eq!(listed, ours);
     }
+
+    #[test]
+    fn every_keyword_is_refused_as_a_name_and_longer_words_are_not() {
+        // `sinh`, `cosh`, `tanh` and `singular` were once taken for names:
+        // `sin` matched first and the word went on.
+        for kw in KEYWORDS {
+            let src = format!("param {kw} = 1\n");
+            let e = crate::lang::parser::parse_file(&src).expect_err(kw);
+            assert!(
+                e.message.contains("reserved keyword"),
+                "{kw}: {}",
+                e.message
+            );
+            for longer in [format!("{kw}2"), format!("{kw}_"), format!("{kw}x")] {
+                let src = format!("param {longer} = 1\n");
+                assert!(crate::lang::parser::parse_file(&src).is_ok(), "{longer}");
+            }
+        }
+    }
 }

@@ -101,9 +101,13 @@ pub use error::{ErrorKind, LangError};
 /// assert!(err.render().contains("a.lmx:2:13"));
 /// ```
 ///
-/// The work runs on a helper thread with a [`STACK_SIZE`] stack (as rustc
-/// does), so that the recursive passes over deeply nested input stay far
-/// from the end of the caller's stack, whatever thread the caller is on.
+/// Input deeper than [`HERE_MAX_LEVELS`] by [`depth_bound`], or a caller's
+/// thread without room for its levels, is handed to a helper thread with a
+/// [`STACK_SIZE`] stack (as rustc does), so that the recursive passes over
+/// deeply nested input stay far from the end of the caller's stack,
+/// whatever thread the caller is on. Small shallow files (every example and
+/// benchmark matrix of degree up to 3) are done on the caller's thread:
+/// starting the helper thread cost more than parsing them.
 pub fn parse_program(src: &str, filename: &str) -> Result<Program, LangErrors> {
     parse_program_with(src, filename, &[])
 }
@@ -138,6 +142,9 @@ pub fn parse_program_with(
     sets: &[(String, num_rational::BigRational)],
 ) -> Result<Program, LangErrors> {
     let src = strip_bom(src);
+    if fits_here(src) {
+        return parse_program_here(src, filename, sets);
+    }
     std::thread::scope(|s| {
         let worker = std::thread::Builder::new()
             .name("lambdamat-front-end".into())
@@ -160,6 +167,57 @@ pub fn parse_program_with(
             Err(_) => parse_program_here(src, filename, sets),
         }
     })
+}
+
+/// Most levels ([`depth_bound`]) an input may have for the front end to run
+/// on the caller's thread (deeper input goes to the [`STACK_SIZE`] thread).
+pub const HERE_MAX_LEVELS: usize = 128;
+
+/// Stack bytes budgeted per level for the front end on the caller's thread,
+/// and on top of them. At [`HERE_MAX_LEVELS`] levels of brackets (the
+/// deepest shape) the whole front end ran in a 0.66 MiB stack when
+/// optimised and in 1.6 MiB unoptimised (pest's own guard included: it
+/// refuses to go on with less than 64 KiB left); the budget is 3.3 MiB. The
+/// test `the_stack_budget_covers_the_deepest_input_run_here` runs every deep
+/// shape within it.
+const HERE_STACK_PER_LEVEL: usize = 24 << 10;
+const HERE_STACK_BASE: usize = 256 << 10;
+
+/// Whether [`parse_program_with`] can do its work on the caller's thread:
+/// the input is at most [`HERE_MAX_LEVELS`] deep by [`depth_bound`] and the
+/// thread has room for that many levels. Spawning the big-stack thread
+/// costs more than parsing a small file.
+fn fits_here(src: &str) -> bool {
+    let levels = depth_bound(src);
+    levels <= HERE_MAX_LEVELS
+        && stacker::remaining_stack()
+            .is_some_and(|room| room >= HERE_STACK_BASE + levels * HERE_STACK_PER_LEVEL)
+}
+
+/// An upper bound on how deep any pass of the front end recurses for `src`,
+/// in levels: the most `(`, `+`, `-`, `*`, `/` and `^` between two
+/// characters that never occur inside an expression (`,` `;` `=` `[` `]`
+/// `~`), comments left out. Every node of an expression tree that has
+/// children (a sum, product, power, negation, call or integral) and every
+/// bracket the parser descends into is one of those characters, so an
+/// expression's tree depth and bracket nesting are both at most the count of
+/// the stretch it lies in.
+pub fn depth_bound(src: &str) -> usize {
+    let (mut most, mut here, mut in_comment) = (0usize, 0usize, false);
+    for b in src.bytes() {
+        match b {
+            b'\n' => in_comment = false,
+            _ if in_comment => {}
+            b'#' => in_comment = true,
+            b'(' | b'+' | b'-' | b'*' | b'/' | b'^' => {
+                here += 1;
+                most = most.max(here);
+            }
+            b',' | b';' | b'=' | b'[' | b']' | b'~' => here = 0,
+            _ => {}
+        }
+    }
+    most
 }
 
 /// The names of the parameters a file defines (for checking `--set`).
@@ -200,4 +258,108 @@ fn parse_program_here(
 pub fn parse_ast(src: &str, filename: &str) -> Result<ast::File, LangErrors> {
     let src = strip_bom(src);
     parser::parse_file(src).map_err(|e| LangErrors::new(filename, src, vec![e]))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Inputs of exactly `levels` levels, one of each shape that makes a
+    /// pass recurse: brackets, calls, negations, long sums, powers,
+    /// integrals, equation sides.
+    fn deep_shapes(n: usize) -> Vec<String> {
+        vec![
+            format!("var x\nmatrix A = [{}x{}]", "(".repeat(n), ")".repeat(n)),
+            format!("var x\nmatrix A = [{}x]", "-".repeat(n)),
+            format!(
+                "var x\nmatrix A = [{}x{}]",
+                "-(".repeat(n / 2),
+                ")".repeat(n / 2)
+            ),
+            format!("var x\nmatrix A = [{}]", vec!["x"; n + 1].join("+")),
+            format!("var x\nmatrix A = [x{}]", "^1".repeat(n)),
+            format!("param a = {}1{}", "abs(".repeat(n), ")".repeat(n)),
+            format!("param a = {}1{}", "(".repeat(n), ")".repeat(n)),
+            format!(
+                "operator k = id\nunknown p\nequation {}k{} p = {}x{}",
+                "(".repeat(n),
+                ")".repeat(n),
+                "sqrt(".repeat(n),
+                ")".repeat(n)
+            ),
+            format!(
+                "var x\nmatrix A = [{}x{} +]",
+                "(".repeat(n - 1),
+                ")".repeat(n - 1)
+            ),
+            format!(
+                "operator k = {}1{}\nunknown p\nequation k p = 1",
+                "int(0..1) ".repeat(n),
+                " dt".repeat(n)
+            ),
+        ]
+    }
+
+    #[test]
+    fn the_stack_budget_covers_the_deepest_input_run_here() {
+        let n = HERE_MAX_LEVELS;
+        let budget = HERE_STACK_BASE + n * HERE_STACK_PER_LEVEL;
+        for src in deep_shapes(n) {
+            assert_eq!(depth_bound(&src), n, "{src}");
+            // A stack overflow here aborts the test binary: the budget is short.
+            let worker = std::thread::Builder::new()
+                .stack_size(budget)
+                .spawn(move || {
+                    let r = parse_program_here(&src, "t.lmx", &[]);
+                    // Valid or refused for its meaning, never for the stack.
+                    if let Err(e) = &r {
+                        let text = e.render();
+                        assert!(!text.contains("stack limit"), "{text}");
+                        assert!(!text.contains("too deeply"), "{text}");
+                    }
+                })
+                .expect("spawn");
+            assert!(worker.join().is_ok());
+        }
+    }
+
+    #[test]
+    fn only_shallow_input_on_a_roomy_thread_runs_here() {
+        let worker = std::thread::Builder::new()
+            .stack_size(8 << 20)
+            .spawn(|| {
+                let small = "var x\nmatrix A = [(-5)+(9)*x, 1; x^2, 0]\nsmith A\n";
+                assert!(fits_here(small));
+                for src in deep_shapes(HERE_MAX_LEVELS + 2) {
+                    assert!(depth_bound(&src) > HERE_MAX_LEVELS, "{src}");
+                    assert!(!fits_here(&src), "{src}");
+                }
+            })
+            .expect("spawn");
+        assert!(worker.join().is_ok());
+        // A thread without room for the levels hands the work on.
+        let worker = std::thread::Builder::new()
+            .stack_size(64 << 10)
+            .spawn(|| {
+                let src = "var x\nmatrix A = [x + 1]\n";
+                assert!(!fits_here(src));
+                assert!(parse_program(src, "t.lmx").is_ok());
+            })
+            .expect("spawn");
+        assert!(worker.join().is_ok());
+    }
+
+    #[test]
+    fn the_depth_bound_counts_within_expressions_only() {
+        assert_eq!(
+            depth_bound("var x\nmatrix A = [x+1, -(x); x^2*3-1, 1/2]"),
+            3
+        );
+        // Separators reset the count; comments are left out, separators in
+        // them included.
+        assert_eq!(depth_bound("param a = 1+1+1 # ,;=\n +1"), 3);
+        assert_eq!(depth_bound("param a = 1 # ((((((\n"), 0);
+        assert_eq!(depth_bound("unknown p on (0, 1]\n"), 1);
+        assert_eq!(depth_bound("param κ = (1)"), 1);
+    }
 }
