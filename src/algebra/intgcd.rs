@@ -27,7 +27,7 @@ pub fn gcd_nat(a: &BigUint, b: &BigUint) -> BigUint {
             std::mem::swap(&mut a, &mut b);
         }
         let shift = bits(&a) - 62;
-        let (ca, cb, cc, cd) = lehmer_step(window(&a, shift), window(&b, shift));
+        let (ca, cb, cc, cd) = lehmer_step(window(&a, shift), window(&b, shift), 0);
         if cb == 0 {
             // Not even the first quotient is certain: one full division.
             let r = (nat(&a) % nat(&b)).to_u64_digits();
@@ -75,7 +75,13 @@ pub fn gcd_nat(a: &BigUint, b: &BigUint) -> BigUint {
 /// r_{j+1} ≥ max(|u_j| + |u_{j+1}|, |v_j| + |v_{j+1}|)` (a sufficient
 /// form of Jebelean's condition); one word division per step, none for
 /// quotient 1. All magnitudes stay below 2^62.
-fn lehmer_step(x: u64, y: u64) -> (i128, i128, i128, i128) {
+///
+/// With `floor > 0` a step is also refused unless `r_{j+1} −
+/// max(|u_{j+1}|, |v_{j+1}|) ≥ floor`: since the error term `u·e_a + v·e_b`
+/// (opposite signs) is below `max(|u|, |v|)·2^s` in magnitude, the true
+/// remainder then exceeds `2^s·floor` ([`euclid_below`] stops Euclid at a
+/// bound this way without passing it).
+fn lehmer_step(x: u64, y: u64, floor: u64) -> (i128, i128, i128, i128) {
     // (r0, u0, v0) the current pair's first, (r1, u1, v1) its second;
     // signs by parity (u0 ≥ 0 ≥ v0 on even steps, the reverse on odd).
     let (mut r0, mut r1) = (x, y);
@@ -94,7 +100,7 @@ fn lehmer_step(x: u64, y: u64) -> (i128, i128, i128, i128) {
         }
         let u2 = u0 + q * u1;
         let v2 = v0 + q * v1;
-        if r2 < u2.max(v2) || r1 - r2 < (u1 + u2).max(v1 + v2) {
+        if r2 < u2.max(v2).saturating_add(floor) || r1 - r2 < (u1 + u2).max(v1 + v2) {
             break;
         }
         (r0, r1) = (r1, r2);
@@ -114,6 +120,46 @@ fn lehmer_step(x: u64, y: u64) -> (i128, i128, i128, i128) {
     } else {
         (-u0, v0, u1, -v1)
     }
+}
+
+/// Euclid's remainder sequence `r_0 = a`, `r_1 = b`, `r_{j+1} = r_{j−1} −
+/// q_j·r_j` (`a > b`) with the cofactors `t_0 = 0`, `t_1 = 1`, `t_{j+1} =
+/// t_{j−1} − q_j·t_j` (so `r_j ≡ t_j·b mod a`), stopped at the first
+/// `j ≥ 1` with `r_j ≤ bound`: returns `(r_j, t_j)`. This is the loop of
+/// rational reconstruction (Wang), run by Lehmer steps
+/// ([`lehmer_step`] with a floor, so that no accepted step passes the
+/// bound) and single divisions where Lehmer's quotients are not certain.
+pub fn euclid_below(a: &BigUint, b: &BigUint, bound: &BigUint) -> (BigUint, BigInt) {
+    debug_assert!(a > b);
+    let (mut a, mut b) = (a.to_u64_digits(), b.to_u64_digits());
+    let bl = bound.to_u64_digits();
+    let (mut t0, mut t1) = (BigInt::zero(), BigInt::from(1));
+    let (mut na, mut nb) = (Vec::new(), Vec::new());
+    while less(&bl, &b) {
+        let shift = bits(&a).saturating_sub(62);
+        // The remainders must stay above bound: r − max(|u|, |v|) ≥
+        // ⌊bound/2^s⌋ + 1 makes the true one exceed bound.
+        let floor = if bits(&bl) > shift + 62 {
+            u64::MAX
+        } else {
+            window(&bl, shift) + 1
+        };
+        let (ca, cb, cc, cd) = lehmer_step(window(&a, shift), window(&b, shift), floor);
+        if cb != 0 && combine(&a, &b, ca, cb, &mut na) && combine(&a, &b, cc, cd, &mut nb) {
+            std::mem::swap(&mut a, &mut na);
+            std::mem::swap(&mut b, &mut nb);
+            let t = &t0 * BigInt::from(ca) + &t1 * BigInt::from(cb);
+            t1 = &t0 * BigInt::from(cc) + &t1 * BigInt::from(cd);
+            t0 = t;
+            continue;
+        }
+        // One step of Euclid by a full division.
+        let (q, r) = nat(&a).div_rem(&nat(&b));
+        a = std::mem::replace(&mut b, r.to_u64_digits());
+        let t = &t0 - BigInt::from_biguint(Sign::Plus, q) * &t1;
+        t0 = std::mem::replace(&mut t1, t);
+    }
+    (nat(&b), t1)
 }
 
 /// The number with these little-endian limbs.
@@ -292,7 +338,7 @@ mod tests {
             }
             let (al, bl) = (a.to_u64_digits(), b.to_u64_digits());
             let shift = bits(&al) - 62;
-            let (ca, cb, cc, cd) = lehmer_step(window(&al, shift), window(&bl, shift));
+            let (ca, cb, cc, cd) = lehmer_step(window(&al, shift), window(&bl, shift), 0);
             if cb == 0 {
                 continue;
             }
@@ -315,6 +361,88 @@ mod tests {
             }
         }
         assert!(accepted > 300, "only {accepted} cases took a Lehmer step");
+    }
+
+    /// Euclid stopped at a bound, plainly: the reference for
+    /// [`euclid_below`].
+    fn euclid_below_plain(a: &BigUint, b: &BigUint, bound: &BigUint) -> (BigUint, BigInt) {
+        let (mut r0, mut r1) = (BigInt::from(a.clone()), BigInt::from(b.clone()));
+        let (mut t0, mut t1) = (BigInt::zero(), BigInt::from(1));
+        while r1 > BigInt::from(bound.clone()) {
+            let (q, r) = r0.div_rem(&r1);
+            r0 = std::mem::replace(&mut r1, r);
+            let t = &t0 - &q * &t1;
+            t0 = std::mem::replace(&mut t1, t);
+        }
+        (r1.magnitude().clone(), t1)
+    }
+
+    /// Lehmer's Euclid stops at the same remainder and cofactor as the
+    /// plain loop: random sizes, bounds at, around and far from √a,
+    /// bounds equal to a remainder of the sequence, Fibonacci pairs (all
+    /// quotients 1) and single large quotients.
+    #[test]
+    fn euclid_below_is_plain_euclid_stopped_at_the_bound() {
+        let mut seed = 29u64;
+        let mut next = || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            seed
+        };
+        let mut lehmer_used = 0;
+        for round in 0..1500 {
+            let la = 1 + round % 9;
+            let a = big(&(0..la).map(|_| next()).collect::<Vec<_>>()) + BigUint::from(2u32);
+            let b = match round % 5 {
+                0 => &a >> (next() % 90 + 1),
+                1 => &a - BigUint::from(next() % 1000 + 1),
+                _ => big(&(0..la).map(|_| next()).collect::<Vec<_>>()) % &a,
+            };
+            let bound = match round % 6 {
+                0 => a.sqrt(),
+                1 => (&a >> 1u32).sqrt() + BigUint::from(next() % 3),
+                2 => &a >> (next() % (64 * la as u64) + 1),
+                3 => BigUint::from(next() % 100),
+                4 => {
+                    // A remainder of the sequence itself.
+                    let (mut r0, mut r1) = (a.clone(), b.clone());
+                    for _ in 0..next() % 40 {
+                        if r1.is_zero() {
+                            break;
+                        }
+                        let r = &r0 % &r1;
+                        r0 = std::mem::replace(&mut r1, r);
+                    }
+                    r1
+                }
+                _ => BigUint::from(next()),
+            };
+            let got = euclid_below(&a, &b, &bound);
+            assert_eq!(got, euclid_below_plain(&a, &b, &bound), "{a} {b} {bound}");
+            if b.bits() > 128 && bound.bits() + 64 < b.bits() {
+                lehmer_used += 1;
+            }
+        }
+        let (mut f0, mut f1) = (BigUint::from(1u32), BigUint::from(2u32));
+        for i in 0..500 {
+            let f2 = &f0 + &f1;
+            f0 = std::mem::replace(&mut f1, f2);
+            if i % 37 == 0 {
+                let bound = f0.sqrt();
+                assert_eq!(
+                    euclid_below(&f1, &f0, &bound),
+                    euclid_below_plain(&f1, &f0, &bound)
+                );
+            }
+        }
+        let a = BigUint::from(1u32) << 300u32;
+        let b = BigUint::from(3u32);
+        assert_eq!(
+            euclid_below(&a, &b, &BigUint::from(1u32)),
+            euclid_below_plain(&a, &b, &BigUint::from(1u32))
+        );
+        assert!(lehmer_used > 300, "only {lehmer_used} cases long enough");
     }
 
     #[test]
