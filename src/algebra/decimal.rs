@@ -43,9 +43,11 @@ const PAIRS: &[u8; 200] = b"\
 6061626364656667686970717273747576777879\
 8081828384858687888990919293949596979899";
 
-/// The 19 decimal digits of `c < BASE`, zero-padded, into `buf`.
+/// The 19 decimal digits of `c < BASE`, zero-padded, into `buf` (19
+/// bytes).
 #[inline]
-fn chunk_digits(mut c: u64, buf: &mut [u8; 19]) {
+fn chunk_digits(mut c: u64, buf: &mut [u8]) {
+    debug_assert_eq!(buf.len(), 19);
     let mut i = 19;
     while i > 1 {
         let d = (c % 100) as usize;
@@ -111,10 +113,8 @@ fn write_limbs(out: &mut String, limbs: &mut [u64], chunks: &mut [u64]) {
         d_heap.resize(19 * count, 0);
         &mut d_heap
     };
-    let mut buf = [0u8; 19];
     for (slot, &c) in digits.chunks_mut(19).zip(chunks[..count].iter().rev()) {
-        chunk_digits(c, &mut buf);
-        slot.copy_from_slice(&buf);
+        chunk_digits(c, slot);
     }
     let lead = digits[..18].iter().position(|&b| b != b'0').unwrap_or(18);
     // The digits are ASCII, so this conversion cannot fail.
