@@ -457,14 +457,11 @@ pub fn rational_reconstruct(c: &BigInt, m: &BigInt) -> Option<(BigInt, BigInt)> 
 
 /// [`rational_reconstruct`] with the bound `√(m/2)` given.
 fn reconstruct_below(c: &BigInt, m: &BigInt, bound: &BigInt) -> Option<(BigInt, BigInt)> {
-    let (mut r0, mut r1) = (m.clone(), c.mod_floor(m));
-    let (mut t0, mut t1) = (BigInt::zero(), BigInt::one());
-    while r1 > *bound {
-        let (q, r) = r0.div_rem(&r1);
-        r0 = std::mem::replace(&mut r1, r);
-        let t = &t0 - &q * &t1;
-        t0 = std::mem::replace(&mut t1, t);
-    }
+    // Euclid on (m, c mod m) until the remainder is at most the bound, by
+    // Lehmer steps.
+    let c = c.mod_floor(m);
+    let (r1, t1) = super::intgcd::euclid_below(m.magnitude(), c.magnitude(), bound.magnitude());
+    let r1 = BigInt::from_biguint(num_bigint::Sign::Plus, r1);
     if t1.is_zero() || t1.abs() > *bound {
         return None;
     }

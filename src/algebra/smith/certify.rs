@@ -11,6 +11,7 @@ use crate::algebra::ring::{GcdDomain, Ring};
 use num_bigint::BigInt;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 use serde::Serialize;
+use std::borrow::Cow;
 
 /// One checked property.
 #[derive(Clone, Debug, Serialize, PartialEq)]
@@ -280,8 +281,13 @@ fn first_difference<R: GcdDomain>(x: &Matrix<R>, y: &Matrix<R>) -> (usize, usize
 /// cheaper on large matrices with big rational entries.
 pub struct ClearedQx;
 
-/// `(integer numerators, common denominator)` of a line of `QPoly`s.
-fn clear_line<'a>(line: impl Iterator<Item = &'a QPoly> + Clone) -> (Vec<Vec<BigInt>>, BigInt) {
+/// `(integer numerators, common denominator)` of a line of `QPoly`s
+/// (borrowed where the polynomial already has that denominator, as U's
+/// integer rows do: no copy).
+#[allow(clippy::type_complexity)]
+fn clear_line<'a>(
+    line: impl Iterator<Item = &'a QPoly> + Clone,
+) -> (Vec<Cow<'a, [BigInt]>>, BigInt) {
     let mut l = BigInt::one();
     for p in line.clone() {
         if !p.is_zero() && p.den() != &l {
@@ -291,10 +297,10 @@ fn clear_line<'a>(line: impl Iterator<Item = &'a QPoly> + Clone) -> (Vec<Vec<Big
     let nums = line
         .map(|p| {
             if p.den() == &l {
-                p.num().to_vec()
+                Cow::Borrowed(p.num())
             } else {
                 let s = &l / p.den();
-                p.num().iter().map(|c| c * &s).collect()
+                Cow::Owned(p.num().iter().map(|c| c * &s).collect())
             }
         })
         .collect();
@@ -302,9 +308,14 @@ fn clear_line<'a>(line: impl Iterator<Item = &'a QPoly> + Clone) -> (Vec<Vec<Big
 }
 
 /// The line's integer polynomials as `i64` coefficients, if all fit.
-fn small_line(line: &[Vec<BigInt>]) -> Option<Vec<Vec<i64>>> {
+fn small_line<P: AsRef<[BigInt]>>(line: &[P]) -> Option<Vec<Vec<i64>>> {
     line.iter()
-        .map(|p| p.iter().map(|c| c.to_i64()).collect::<Option<Vec<i64>>>())
+        .map(|p| {
+            p.as_ref()
+                .iter()
+                .map(|c| c.to_i64())
+                .collect::<Option<Vec<i64>>>()
+        })
         .collect()
 }
 
@@ -312,9 +323,10 @@ fn small_line(line: &[Vec<BigInt>]) -> Option<Vec<Vec<i64>>> {
 /// word-size coefficients, accumulated in fixed-width two's complement
 /// words wide enough for every partial sum (no allocation per term; this
 /// is the inner loop of `U·A` with a large U and a small A).
-fn dot_small(xs: &[Vec<BigInt>], ys: &[Vec<i64>]) -> Vec<BigInt> {
+fn dot_small<P: AsRef<[BigInt]>>(xs: &[P], ys: &[Vec<i64>]) -> Vec<BigInt> {
     let (mut len, mut bits, mut terms) = (0usize, 0u64, 0u64);
     for (a, b) in xs.iter().zip(ys) {
+        let a = a.as_ref();
         if a.is_empty() || b.is_empty() {
             continue;
         }
@@ -335,7 +347,7 @@ fn dot_small(xs: &[Vec<BigInt>], ys: &[Vec<i64>]) -> Vec<BigInt> {
     let mut neg_acc = vec![0u64; len * w];
     let mut mag: Vec<u64> = Vec::with_capacity(w);
     for (a, b) in xs.iter().zip(ys) {
-        for (i, c) in a.iter().enumerate() {
+        for (i, c) in a.as_ref().iter().enumerate() {
             if c.is_zero() {
                 continue;
             }
@@ -368,10 +380,10 @@ fn dot_small(xs: &[Vec<BigInt>], ys: &[Vec<i64>]) -> Vec<BigInt> {
             borrow = o1 || o2;
         }
     }
-    acc.chunks(w)
+    acc.chunks_mut(w)
         .map(|slot| {
             let negative = slot[w - 1] >> 63 == 1;
-            twos_complement_to_bigint(&mut slot.to_vec(), negative)
+            twos_complement_to_bigint(slot, negative)
         })
         .collect()
 }
@@ -389,13 +401,19 @@ struct FlatLine {
 }
 
 impl FlatLine {
-    fn new(line: &[Vec<BigInt>]) -> Self {
-        let bits = line.iter().flatten().map(|c| c.bits()).max().unwrap_or(0);
+    fn new<P: AsRef<[BigInt]>>(line: &[P]) -> Self {
+        let bits = line
+            .iter()
+            .flat_map(|p| p.as_ref())
+            .map(|c| c.bits())
+            .max()
+            .unwrap_or(0);
         let w = bits.div_ceil(64).max(1) as usize;
-        let total: usize = line.iter().map(|p| p.len()).sum();
+        let total: usize = line.iter().map(|p| p.as_ref().len()).sum();
         let (mut mags, mut masks) = (Vec::with_capacity(total * w), Vec::with_capacity(total * w));
         let mut polys = Vec::with_capacity(line.len());
         for p in line {
+            let p = p.as_ref();
             polys.push((mags.len(), p.len()));
             for c in p {
                 let start = mags.len();
@@ -454,21 +472,30 @@ fn dot_flat(xs: &FlatLine, ys: &[Vec<i64>]) -> Vec<BigInt> {
         }
     }
     let mut words: Vec<u64> = Vec::with_capacity(w + 1);
-    (0..len)
-        .map(|k| {
-            words.clear();
-            let mut carry = 0i128;
-            for &l in &lanes[k * w..(k + 1) * w] {
-                let t = l + carry;
-                words.push(t as u64);
-                carry = t >> 64;
-            }
-            // The value is Σ words·2^(64·i) + carry·2^(64·w), |carry| < 2^63.
-            let negative = carry < 0;
-            words.push(carry as u64);
-            twos_complement_to_bigint(&mut words, negative)
-        })
-        .collect()
+    let mut out: Vec<BigInt> = Vec::new();
+    let mut zeros = 0;
+    for k in 0..len {
+        words.clear();
+        let mut carry = 0i128;
+        for &l in &lanes[k * w..(k + 1) * w] {
+            let t = l + carry;
+            words.push(t as u64);
+            carry = t >> 64;
+        }
+        // The value is Σ words·2^(64·i) + carry·2^(64·w), |carry| < 2^63.
+        // Zero coefficients (most entries of U·A = D·V⁻¹ are zero) are
+        // counted, not built, and trailing ones are never materialised.
+        if carry == 0 && words.iter().all(|&x| x == 0) {
+            zeros += 1;
+            continue;
+        }
+        out.extend(std::iter::repeat_n(BigInt::zero(), zeros));
+        zeros = 0;
+        let negative = carry < 0;
+        words.push(carry as u64);
+        out.push(twos_complement_to_bigint(&mut words, negative));
+    }
+    out
 }
 
 /// Whether [`dot_flat`] applies to these factors (coefficients below
@@ -505,10 +532,10 @@ pub fn mul_cleared(x: &Matrix<QxRing>, y: &Matrix<QxRing>) -> Option<Matrix<QxRi
         return None;
     }
     let (m, k, n) = (x.rows(), x.cols(), y.cols());
-    let rows: Vec<(Vec<Vec<BigInt>>, BigInt)> = (0..m)
+    let rows: Vec<(Vec<Cow<[BigInt]>>, BigInt)> = (0..m)
         .map(|i| clear_line((0..k).map(|t| x.get(i, t))))
         .collect();
-    let cols: Vec<(Vec<Vec<BigInt>>, BigInt)> = (0..n)
+    let cols: Vec<(Vec<Cow<[BigInt]>>, BigInt)> = (0..n)
         .map(|j| clear_line((0..k).map(|t| y.get(t, j))))
         .collect();
     let small_rows: Vec<Option<Vec<Vec<i64>>>> = rows.iter().map(|(l, _)| small_line(l)).collect();
@@ -926,16 +953,35 @@ fn twos_complement_to_bigint(limbs: &mut [u64], negative: bool) -> BigInt {
             carry = o;
         }
     }
-    let digits: Vec<u32> = limbs
-        .iter()
-        .flat_map(|&l| [l as u32, (l >> 32) as u32])
-        .collect();
     let sign = if negative {
         num_bigint::Sign::Minus
     } else {
         num_bigint::Sign::Plus
     };
-    BigInt::from_biguint(sign, num_bigint::BigUint::new(digits))
+    BigInt::from_biguint(sign, biguint_from_limbs(limbs))
+}
+
+/// The natural with these little-endian 64-bit limbs, with one
+/// allocation (none for a value below 2^64): num-bigint 0.4 builds from
+/// 32-bit digits, which are packed here on the stack up to 32 limbs.
+pub(crate) fn biguint_from_limbs(limbs: &[u64]) -> num_bigint::BigUint {
+    let used = limbs.iter().rposition(|&l| l != 0).map_or(0, |i| i + 1);
+    if used <= 1 {
+        return num_bigint::BigUint::from(limbs.first().copied().unwrap_or(0));
+    }
+    let mut small = [0u32; 64];
+    let mut big = Vec::new();
+    let digits: &mut [u32] = if used <= 32 {
+        &mut small[..2 * used]
+    } else {
+        big.resize(2 * used, 0);
+        &mut big
+    };
+    for (d, &l) in digits.chunks_mut(2).zip(&limbs[..used]) {
+        d[0] = l as u32;
+        d[1] = (l >> 32) as u32;
+    }
+    num_bigint::BigUint::from_slice(digits)
 }
 
 #[cfg(test)]
@@ -948,6 +994,66 @@ mod tests {
             num.iter().map(|&c| BigInt::from(c)).collect(),
             BigInt::from(den),
         )
+    }
+
+    /// Limbs → natural with one allocation: the same number as the
+    /// shift-and-add form, for 0–40 limbs with zero runs and top zeros.
+    #[test]
+    fn naturals_from_limbs() {
+        let mut seed = 3u64;
+        let mut next = || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            seed
+        };
+        for round in 0..400 {
+            let len = round % 41;
+            let limbs: Vec<u64> = (0..len)
+                .map(|i| if (i + round) % 5 == 0 { 0 } else { next() })
+                .collect();
+            let want = limbs
+                .iter()
+                .rev()
+                .fold(num_bigint::BigUint::zero(), |acc, &l| {
+                    (acc << 64u32) + num_bigint::BigUint::from(l)
+                });
+            assert_eq!(biguint_from_limbs(&limbs), want, "{limbs:?}");
+        }
+    }
+
+    /// A flat dot product that cancels gives the empty (zero) polynomial,
+    /// and interior zero coefficients stay in place.
+    #[test]
+    fn flat_dot_product_cancels_to_nothing() {
+        let p: Vec<BigInt> = [5i64, -7, 11]
+            .iter()
+            .map(|&c| BigInt::from(c) << 130u32)
+            .collect();
+        let minus_p: Vec<BigInt> = p.iter().map(|c| -c).collect();
+        let xs = vec![p.clone(), minus_p];
+        let ys = vec![vec![3i64, 0, -2], vec![3, 0, -2]];
+        assert!(flat_applies(&ys));
+        assert!(dot_flat(&FlatLine::new(&xs), &ys).is_empty());
+        // p·(1 + x²) has a zero coefficient at x¹ only if p does: use x^0
+        // and x^2 terms of a sparse p.
+        let sparse = vec![vec![
+            BigInt::from(1) << 100u32,
+            BigInt::zero(),
+            BigInt::from(-1) << 100u32,
+        ]];
+        let got = dot_flat(&FlatLine::new(&sparse), &[vec![1, 0, 1]]);
+        let b = BigInt::from(1) << 100u32;
+        assert_eq!(
+            got,
+            vec![
+                b.clone(),
+                BigInt::zero(),
+                BigInt::zero(),
+                BigInt::zero(),
+                -b
+            ]
+        );
     }
 
     #[test]

@@ -241,7 +241,9 @@ pub struct Garner {
     inv: Vec<Vec<u64>>,
     /// `m = Π ps`.
     pub m: BigInt,
-    half: BigInt,
+    /// m and ⌊m/2⌋ as little-endian limbs.
+    m_limbs: Vec<u64>,
+    half_limbs: Vec<u64>,
 }
 
 impl Garner {
@@ -259,8 +261,9 @@ impl Garner {
         Garner {
             ps: ps.to_vec(),
             inv,
+            m_limbs: m.magnitude().to_u64_digits(),
+            half_limbs: half.magnitude().to_u64_digits(),
             m,
-            half,
         }
     }
 
@@ -326,23 +329,38 @@ impl Garner {
                 used += 1;
             }
         }
-        let mut digits_small = [0u32; 64];
-        let mut digits_big = Vec::new();
-        let digits: &mut [u32] = if used <= 32 {
-            &mut digits_small[..2 * used]
-        } else {
-            digits_big.resize(2 * used, 0);
-            &mut digits_big
-        };
-        for (d, &l) in digits.chunks_mut(2).zip(limbs[..used].iter()) {
-            d[0] = l as u32;
-            d[1] = (l >> 32) as u32;
+        // The symmetric representative, built once (one allocation): acc
+        // above ⌊m/2⌋ is acc − m = −(m − acc), taken in limbs.
+        let acc = &mut limbs[..used];
+        let above = used > self.half_limbs.len()
+            || (used == self.half_limbs.len() && acc.iter().rev().gt(self.half_limbs.iter().rev()));
+        if !above {
+            return BigInt::from_biguint(
+                num_bigint::Sign::Plus,
+                super::certify::biguint_from_limbs(acc),
+            );
         }
-        let acc = BigInt::from_biguint(
-            num_bigint::Sign::Plus,
-            num_bigint::BigUint::from_slice(digits),
-        );
-        if acc > self.half { acc - &self.m } else { acc }
+        let mut diff_small = [0u64; 32];
+        let mut diff_big = Vec::new();
+        let diff: &mut [u64] = if k <= 32 {
+            &mut diff_small[..self.m_limbs.len()]
+        } else {
+            diff_big.resize(self.m_limbs.len(), 0);
+            &mut diff_big
+        };
+        let mut borrow = false;
+        for (i, (d, &mw)) in diff.iter_mut().zip(&self.m_limbs).enumerate() {
+            let a = acc.get(i).copied().unwrap_or(0);
+            let (v1, o1) = mw.overflowing_sub(a);
+            let (v2, o2) = v1.overflowing_sub(u64::from(borrow));
+            *d = v2;
+            borrow = o1 || o2;
+        }
+        debug_assert!(!borrow);
+        BigInt::from_biguint(
+            num_bigint::Sign::Minus,
+            super::certify::biguint_from_limbs(diff),
+        )
     }
 }
 

@@ -275,13 +275,25 @@ pub fn try_fast_parts(a: &Matrix<QxRing>, limit_bits: u64) -> Option<FastParts> 
     let mut at: Vec<Vec<Vec<BigInt>>> = Vec::with_capacity(n);
     let mut bound = 0usize;
     for i in 0..n {
+        // Integer rows (the usual input) skip the lcm and the scaling.
         let l = a.row(i).iter().fold(BigInt::one(), |l, p| {
-            crate::algebra::intgcd::lcm(&l, p.den())
+            if p.den() == &l {
+                l
+            } else {
+                crate::algebra::intgcd::lcm(&l, p.den())
+            }
         });
         let row: Vec<Vec<BigInt>> = a
             .row(i)
             .iter()
-            .map(|p| p.num().iter().map(|c| c * (&l / p.den())).collect())
+            .map(|p| {
+                if p.den() == &l {
+                    p.num().to_vec()
+                } else {
+                    let s = &l / p.den();
+                    p.num().iter().map(|c| c * &s).collect()
+                }
+            })
             .collect();
         bound += super::detadj::row_degree(&row);
         delta.push(l);

@@ -55,12 +55,19 @@ fn integral(a: &Matrix<QxRing>) -> (Vec<Vec<Vec<BigInt>>>, Vec<BigInt>) {
     let mut at = Vec::with_capacity(n);
     for i in 0..n {
         let l = a.row(i).iter().fold(BigInt::one(), |l, p| {
-            crate::algebra::intgcd::lcm(&l, p.den())
+            if p.den() == &l {
+                l
+            } else {
+                crate::algebra::intgcd::lcm(&l, p.den())
+            }
         });
         let row: Vec<Vec<BigInt>> = a
             .row(i)
             .iter()
             .map(|p| {
+                if p.den() == &l {
+                    return p.num().to_vec();
+                }
                 let s = &l / p.den();
                 p.num().iter().map(|c| c * &s).collect()
             })
