@@ -438,3 +438,15 @@ fn principal_k2_four_by_four_fraction_free_and_certified_by_degrees() {
             .any(|c| c["detail"].as_str().unwrap_or("").contains("U⁻¹"))
     );
 }
+
+#[test]
+fn non_square_with_zero_entries_is_certified() {
+    // Found by timing the property-test strategies over many seeds: the
+    // one-symbol certificate's product over Z[x] indexed past its
+    // accumulator when a row entry was zero (exit 101 before the fix).
+    let v = json(&["smith", "tests/data/smith_zero_entry_3x2.lmx"]);
+    assert_eq!(v["mode"], "one-symbol");
+    assert_eq!(v["verified"], true);
+    assert_eq!(v["rank"], 2);
+    assert_eq!(strings(&v["invariant_factors"]), ["1", "1"]);
+}
