@@ -450,3 +450,22 @@ fn non_square_with_zero_entries_is_certified() {
     assert_eq!(v["rank"], 2);
     assert_eq!(strings(&v["invariant_factors"]), ["1", "1"]);
 }
+
+#[test]
+fn principal_two_by_three_whose_elimination_swells() {
+    // Found by timing the printing tests' polynomial distribution as
+    // matrix entries: the fraction-free elimination's remainder sequence
+    // swelled (×11 in one round) and ran for minutes; the invariant factors
+    // now come from the 2×2 minors, without transforms.
+    let f = "tests/data/issue15_principal_2x3_swell.lmx";
+    for (sym, want) in [("k4", ["1", "1"]), ("k1", ["1", "k1"])] {
+        let v = json(&["smith", f, "--principal", sym]);
+        assert_eq!(v["mode"], "principal", "{sym}");
+        assert_eq!(v["verified"], true, "{sym}");
+        assert_eq!(v["rank"], 2, "{sym}");
+        assert!(v["U"].is_null() && v["V"].is_null(), "{sym}");
+        assert_eq!(strings(&v["invariant_factors"]), want, "{sym}");
+        let note = v["mode_note"].as_str().expect("text");
+        assert!(note.contains("safeguard"), "{note}");
+    }
+}
