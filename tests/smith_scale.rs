@@ -452,13 +452,17 @@ fn non_square_with_zero_entries_is_certified() {
 }
 
 #[test]
-fn principal_two_by_three_whose_elimination_swells() {
+fn principal_non_square_inputs_whose_elimination_swells() {
     // Found by timing the printing tests' polynomial distribution as
     // matrix entries: the fraction-free elimination's remainder sequence
     // swelled (×11 in one round) and ran for minutes; the invariant factors
     // now come from the 2×2 minors, without transforms.
-    let f = "tests/data/issue15_principal_2x3_swell.lmx";
-    for (sym, want) in [("k4", ["1", "1"]), ("k1", ["1", "k1"])] {
+    for (f, sym, want) in [
+        ("tests/data/issue15_principal_2x3_swell.lmx", "k4", ["1", "1"]),
+        ("tests/data/issue15_principal_2x3_swell.lmx", "k1", ["1", "k1"]),
+        ("tests/data/issue15_principal_3x2_swell.lmx", "k4", ["1", "k4^2"]),
+        ("tests/data/issue15_principal_3x2_swell.lmx", "k1", ["1", "1"]),
+    ] {
         let v = json(&["smith", f, "--principal", sym]);
         assert_eq!(v["mode"], "principal", "{sym}");
         assert_eq!(v["verified"], true, "{sym}");
