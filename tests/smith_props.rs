@@ -85,8 +85,22 @@ fn planted() -> impl Strategy<Value = (Matrix<QxRing>, Vec<QPoly>)> {
     (
         2usize..=5,
         proptest::collection::vec(-3i64..=3, 1..=5),
-        proptest::collection::vec((0usize..5, 0usize..5, proptest::collection::vec(coeff(), 0..=2)), 0..8),
-        proptest::collection::vec((0usize..5, 0usize..5, proptest::collection::vec(coeff(), 0..=2)), 0..8),
+        proptest::collection::vec(
+            (
+                0usize..5,
+                0usize..5,
+                proptest::collection::vec(coeff(), 0..=2),
+            ),
+            0..8,
+        ),
+        proptest::collection::vec(
+            (
+                0usize..5,
+                0usize..5,
+                proptest::collection::vec(coeff(), 0..=2),
+            ),
+            0..8,
+        ),
         0usize..2,
     )
         .prop_map(|(n, roots, ops_l, ops_r, zeros)| {
@@ -355,10 +369,15 @@ fn one_symbol_sweep() {
                 _ => Ok(()),
             }
         });
-        sw.run("try_nonsingular+certify", i, &src, || match try_nonsingular(&a) {
-            Some(f) if !f.certify(&a).verified() => Err("not verified".into()),
-            _ => Ok(()),
-        });
+        sw.run(
+            "try_nonsingular+certify",
+            i,
+            &src,
+            || match try_nonsingular(&a) {
+                Some(f) if !f.certify(&a).verified() => Err("not verified".into()),
+                _ => Ok(()),
+            },
+        );
         let ap = as_poly_ring(&a);
         sw.run("smith_report (binary)", i, &src, || {
             report_ok(&ap, None).map(|_| ())

@@ -458,10 +458,26 @@ fn principal_non_square_inputs_whose_elimination_swells() {
     // swelled (×11 in one round) and ran for minutes; the invariant factors
     // now come from the 2×2 minors, without transforms.
     for (f, sym, want) in [
-        ("tests/data/issue15_principal_2x3_swell.lmx", "k4", ["1", "1"]),
-        ("tests/data/issue15_principal_2x3_swell.lmx", "k1", ["1", "k1"]),
-        ("tests/data/issue15_principal_3x2_swell.lmx", "k4", ["1", "k4^2"]),
-        ("tests/data/issue15_principal_3x2_swell.lmx", "k1", ["1", "1"]),
+        (
+            "tests/data/issue15_principal_2x3_swell.lmx",
+            "k4",
+            ["1", "1"],
+        ),
+        (
+            "tests/data/issue15_principal_2x3_swell.lmx",
+            "k1",
+            ["1", "k1"],
+        ),
+        (
+            "tests/data/issue15_principal_3x2_swell.lmx",
+            "k4",
+            ["1", "k4^2"],
+        ),
+        (
+            "tests/data/issue15_principal_3x2_swell.lmx",
+            "k1",
+            ["1", "1"],
+        ),
     ] {
         let v = json(&["smith", f, "--principal", sym]);
         assert_eq!(v["mode"], "principal", "{sym}");

@@ -282,7 +282,8 @@ pub fn certify_maximal_minors(a: &Matrix<PolyRing>, s: usize) -> Option<(Certifi
             .collect::<Vec<_>>()
             .join(", ")
     };
-    let minor_of = |rows: &[usize], cols: &[usize]| det_expanding_largest_row(&a.submatrix(rows, cols));
+    let minor_of =
+        |rows: &[usize], cols: &[usize]| det_expanding_largest_row(&a.submatrix(rows, cols));
     let all: Vec<usize> = (0..r).collect();
     // The r×r minors, stopping early once those so far are coprime.
     let mut subset: Vec<usize> = (0..r).collect();
@@ -351,7 +352,10 @@ pub fn certify_maximal_minors(a: &Matrix<PolyRing>, s: usize) -> Option<(Certifi
         return None;
     }
     let d = crate::algebra::gcd::primitive_part_in(&g, s).primitive_normal();
-    let quotients: Vec<MPoly> = minors.iter().map(|e| e.div_exact(&d)).collect::<Option<_>>()?;
+    let quotients: Vec<MPoly> = minors
+        .iter()
+        .map(|e| e.div_exact(&d))
+        .collect::<Option<_>>()?;
     let (p, k) = coprime_or_unit(&quotients.iter().collect::<Vec<_>>(), s)?;
     // d_(r−1) = 1 from some (r−1)×(r−1) minors (r = 1: d_0 = 1).
     let low = if r == 1 {
@@ -363,7 +367,11 @@ pub fn certify_maximal_minors(a: &Matrix<PolyRing>, s: usize) -> Option<(Certifi
         'outer: loop {
             let mut cols: Vec<usize> = (0..r - 1).collect();
             loop {
-                let (rr, cc) = if m < n { (&rows, &cols) } else { (&cols, &rows) };
+                let (rr, cc) = if m < n {
+                    (&rows, &cols)
+                } else {
+                    (&cols, &rows)
+                };
                 let e = minor_of(rr, cc)?;
                 if !e.is_zero() {
                     small.push(e);
@@ -905,7 +913,14 @@ mod tests {
             ring2(),
             2,
             3,
-            vec![x.clone(), y.clone(), one.clone(), y.clone(), x.clone(), x.clone()],
+            vec![
+                x.clone(),
+                y.clone(),
+                one.clone(),
+                y.clone(),
+                x.clone(),
+                x.clone(),
+            ],
         );
         let (cert, d) = certify_maximal_minors(&a, 0).expect("coprime minors");
         assert!(cert.verified() && d.is_nonzero_constant());
@@ -914,7 +929,14 @@ mod tests {
             ring2(),
             3,
             2,
-            vec![x.clone(), y.clone(), y.clone(), x.clone(), one.clone(), x.clone()],
+            vec![
+                x.clone(),
+                y.clone(),
+                y.clone(),
+                x.clone(),
+                one.clone(),
+                x.clone(),
+            ],
         );
         let (_, d) = certify_maximal_minors(&t, 0).expect("coprime minors");
         assert!(d.is_nonzero_constant());
@@ -927,7 +949,14 @@ mod tests {
             ring2(),
             2,
             3,
-            vec![x.clone(), &y * &xy, xy.clone(), one.clone(), &x * &xy, MPoly::zero(2)],
+            vec![
+                x.clone(),
+                &y * &xy,
+                xy.clone(),
+                one.clone(),
+                &x * &xy,
+                MPoly::zero(2),
+            ],
         );
         let (cert, d) = certify_maximal_minors(&b, 0).expect("established");
         assert!(cert.verified());
@@ -936,13 +965,25 @@ mod tests {
         let (_, d) = certify_maximal_minors(&b, 1).expect("established");
         assert!(d.div_exact(&xy).is_some_and(|q| q.is_nonzero_constant()));
         // Square or rank-deficient inputs are not treated.
-        let sq = Matrix::new(ring2(), 2, 2, vec![x.clone(), y.clone(), y.clone(), x.clone()]);
+        let sq = Matrix::new(
+            ring2(),
+            2,
+            2,
+            vec![x.clone(), y.clone(), y.clone(), x.clone()],
+        );
         assert!(certify_maximal_minors(&sq, 0).is_none());
         let low = Matrix::new(
             ring2(),
             2,
             3,
-            vec![x.clone(), y.clone(), one.clone(), x.clone(), y.clone(), one.clone()],
+            vec![
+                x.clone(),
+                y.clone(),
+                one.clone(),
+                x.clone(),
+                y.clone(),
+                one.clone(),
+            ],
         );
         assert!(certify_maximal_minors(&low, 0).is_none());
     }

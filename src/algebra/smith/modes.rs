@@ -1640,8 +1640,8 @@ mod tests {
         let a = random_xy(3, 11);
         let ap = to_principal(&a, 1);
         let opts = SmithOptions::default();
-        let fast =
-            principal_form_only("A", &a, &ap, 1, "note", &opts, Some("asked")).expect("generic input");
+        let fast = principal_form_only("A", &a, &ap, 1, "note", &opts, Some("asked"))
+            .expect("generic input");
         let full = smith_report(
             "A",
             &a,

@@ -46,10 +46,18 @@ pub fn maximal_minors_report(
     for i in 0..r - 1 {
         d.set(i, i, kr.one());
     }
-    let f = kr.normalize(&kr.trim(last.coeffs_in(p).into_iter().map(RatFunc::from_poly).collect()));
+    let f = kr.normalize(
+        &kr.trim(
+            last.coeffs_in(p)
+                .into_iter()
+                .map(RatFunc::from_poly)
+                .collect(),
+        ),
+    );
     d.set(r - 1, r - 1, f);
     let inv = d.diagonal();
-    let rows = |x: &Matrix<PolyRing>, latex: bool| if latex { x.latex_rows() } else { x.lmx_rows() };
+    let rows =
+        |x: &Matrix<PolyRing>, latex: bool| if latex { x.latex_rows() } else { x.lmx_rows() };
     let drows = |latex: bool| if latex { d.latex_rows() } else { d.lmx_rows() };
     let latex = opts.latex.then(|| LatexForms {
         a: rows(a, true),
