@@ -4,6 +4,7 @@
 Usage:
   scale_limits.py BIN [--modes M1,M2] [--degs 1,2,3] [--budget 10]
                       [--limit 20] [--seed 1] [--start N] [--out DIR]
+                      [--need-uv]
 
 Modes (the matrices are the peers' generators, seeded):
   dense, bdc2, bdc3   one symbol, `BIN smith F --json` (peers_grid.build:
@@ -18,7 +19,9 @@ For each mode and degree: n doubles from --start while the whole process
 stays under the budget (user + sys CPU, RLIMIT_CPU = --limit), then
 bisects between the last n under and the first over. Prints one line per
 run (n, CPU, peak RSS, exit code, whether U and V were printed) and a
-summary line per (mode, degree): the largest n under the budget."""
+summary line per (mode, degree): the largest n under the budget (with
+--need-uv: the largest n whose run also printed U and V; the binary's
+policy omits them above a size, so this bisects that switch too)."""
 import json
 import os
 import resource
@@ -73,6 +76,7 @@ def main():
     seed = int(arg(a, "--seed", "1"))
     start = int(arg(a, "--start", "4"))
     out = arg(a, "--out", "/tmp/scale_limits")
+    need_uv = "--need-uv" in a
     os.makedirs(out, exist_ok=True)
     for mode in modes:
         for d in degs:
@@ -90,7 +94,7 @@ def main():
                           f"rc={r['rc']}, U/V={r['uv']}  ({binary} smith {path} --json {' '.join(extra)})",
                           flush=True)
                 r = seen[n]
-                return r["rc"] == 0 and r["cpu"] < budget
+                return r["rc"] == 0 and r["cpu"] < budget and (r["uv"] or not need_uv)
 
             lo, hi = None, None
             n = start

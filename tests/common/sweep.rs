@@ -6,7 +6,8 @@
 //! fail only on a failure. Environment: `LAMBDAMAT_SWEEP_CASES` (cases per
 //! strategy), `LAMBDAMAT_SWEEP_SEED`, `LAMBDAMAT_SWEEP_DIR` (where the
 //! slowest inputs are written as .lmx files, and `current.lmx`, the input
-//! being run, so that a hang can be found by its file).
+//! being run, so that a hang can be found by its file),
+//! `LAMBDAMAT_SWEEP_SKIP` (`name:index,…`: known hangs not to run).
 
 use lambdamat::algebra::matrix::Matrix;
 use lambdamat::algebra::ring::Ring;
@@ -68,6 +69,9 @@ pub fn lmx_file<R: Ring>(names: &[String], a: &Matrix<R>) -> String {
     format!("{var}matrix A = [\n{}\n]\nsmith A\n", rows.join(";\n"))
 }
 
+/// Cases at least this slow (CPU seconds) are printed when they finish.
+pub const SLOW_SECONDS: f64 = 0.5;
+
 struct Case {
     cpu: f64,
     index: usize,
@@ -107,6 +111,12 @@ impl Sweep {
         input: &str,
         f: impl FnOnce() -> Result<(), String>,
     ) {
+        let key = format!("{}:{index}", self.name);
+        let skip = std::env::var("LAMBDAMAT_SWEEP_SKIP").unwrap_or_default();
+        if skip.split(',').any(|k| k == key) {
+            println!("skipped (LAMBDAMAT_SWEEP_SKIP): {key} {mode}");
+            return;
+        }
         std::fs::write(
             self.dir.join("current.lmx"),
             format!("# {} {mode} case {index}\n{input}", self.name),
@@ -123,6 +133,13 @@ impl Sweep {
             Err(_) => self
                 .failures
                 .push(format!("{mode} case {index}: panic\n{input}")),
+        }
+        if cpu >= SLOW_SECONDS {
+            // Shown at once: a later case may hang the sweep.
+            println!(
+                "slow case: {} {mode} case {index}: {cpu:.2} s\n{input}",
+                self.name
+            );
         }
         self.times.entry(mode.to_string()).or_default().push(cpu);
         self.slowest.push((
