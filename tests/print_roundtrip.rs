@@ -380,3 +380,79 @@ fn the_issue_matrix_factor_prints_its_value() {
     assert_eq!(back.num(), &want);
     assert_eq!(back.den(), &k1);
 }
+
+// ── timing sweep (issue 15): `cargo test --release --test print_roundtrip
+// -- --ignored sweep --nocapture`; see tests/common/sweep.rs ──
+
+mod common;
+
+/// The printing properties' distributions timed over many seeds, and the
+/// polynomial distributions (large rationals, degree ≤ 3 in each of three
+/// symbols; the fraction fields' small-coefficient degree-2 numerators) as
+/// entries of 1×1 … 3×3 matrices in every Smith mode of the binary.
+#[test]
+#[ignore = "timing sweep: run by hand"]
+fn print_and_smith_sweep() {
+    use common::sweep::{Sweep, cases, draw, lmx_file};
+    use lambdamat::algebra::matrix::Matrix;
+    use lambdamat::algebra::polyring::PolyRing;
+    use lambdamat::algebra::smith::modes::{SmithOptions, smith_report};
+    let n = cases(1000);
+    let mut sw = Sweep::new("print");
+    let r = PolyRing::new(names());
+    for (i, p) in draw(&poly(), 11, n).into_iter().enumerate() {
+        sw.run("polynomials", i, &r.lmx(&p), || {
+            check_commutative(&r, &p, &value(&p));
+            Ok(())
+        });
+    }
+    for (i, f) in draw(&ratfunc_in(vec![0, 1, 2]), 12, n)
+        .into_iter()
+        .enumerate()
+    {
+        sw.run("rational functions", i, &field().lmx(&f), || {
+            check_commutative(&field(), &f, &f);
+            Ok(())
+        });
+    }
+    sw.finish();
+    let matrices = |entries: BoxedStrategy<MPoly>| {
+        (1usize..=3, 1usize..=3).prop_flat_map(move |(m, c)| {
+            proptest::collection::vec(entries.clone(), m * c)
+                .prop_map(move |es| Matrix::new(PolyRing::new(names()), m, c, es))
+        })
+    };
+    for (name, tag, entries) in [
+        ("poly_matrix", 13, poly().boxed()),
+        (
+            "small_matrix",
+            14,
+            poly_with(vec![0, 1, 2], 2, small_rational().boxed()).boxed(),
+        ),
+    ] {
+        let mut sw = Sweep::new(name);
+        for (i, a) in draw(&matrices(entries), tag, n).into_iter().enumerate() {
+            let src = lmx_file(&names(), &a);
+            for (mode, principal) in [
+                ("determinantal (default)", None),
+                ("principal k4", Some(2)),
+                ("principal k1", Some(0)),
+            ] {
+                sw.run(mode, i, &src, || {
+                    let opts = SmithOptions {
+                        principal,
+                        ..SmithOptions::default()
+                    };
+                    let rep = smith_report("A", &a, &opts).map_err(|e| e.to_string())?;
+                    let free = rep.denominator_free.as_ref().is_none_or(|d| d.verified);
+                    if rep.verified && free {
+                        Ok(())
+                    } else {
+                        Err("not verified".into())
+                    }
+                });
+            }
+        }
+        sw.finish();
+    }
+}

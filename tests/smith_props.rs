@@ -79,6 +79,56 @@ fn unimodular(n: usize, ops: &[ElemOp]) -> Matrix<QxRing> {
     m
 }
 
+/// A planted matrix `U·diag(f_1, …)·V` (U, V random unimodular products of
+/// elementary operations, n ≤ 5) and its nonzero invariant factors.
+fn planted() -> impl Strategy<Value = (Matrix<QxRing>, Vec<QPoly>)> {
+    (
+        2usize..=5,
+        proptest::collection::vec(-3i64..=3, 1..=5),
+        proptest::collection::vec(
+            (
+                0usize..5,
+                0usize..5,
+                proptest::collection::vec(coeff(), 0..=2),
+            ),
+            0..8,
+        ),
+        proptest::collection::vec(
+            (
+                0usize..5,
+                0usize..5,
+                proptest::collection::vec(coeff(), 0..=2),
+            ),
+            0..8,
+        ),
+        0usize..2,
+    )
+        .prop_map(|(n, roots, ops_l, ops_r, zeros)| {
+            // f_k = Π_{i<k} (x - roots[i]) (k ≥ 1): a divisibility chain;
+            // the last `zeros` diagonal entries are 0 (rank deficiency).
+            let r = QxRing::new("x");
+            let mut diag = Vec::new();
+            let mut f = r.one();
+            for k in 0..n {
+                if k > 0 {
+                    let root = roots[(k - 1) % roots.len()];
+                    f = r.mul(&f, &qx(&[(-root, 1), (1, 1)]));
+                }
+                diag.push(if k + zeros >= n { r.zero() } else { f.clone() });
+            }
+            let mut d = Matrix::zeros(r.clone(), n, n);
+            for (i, e) in diag.iter().enumerate() {
+                d.set(i, i, e.clone());
+            }
+            let a = unimodular(n, &ops_l)
+                .mul(&d)
+                .and_then(|x| x.mul(&unimodular(n, &ops_r)))
+                .expect("square");
+            let expect: Vec<QPoly> = diag.into_iter().filter(|e| !r.is_zero(e)).collect();
+            (a, expect)
+        })
+}
+
 proptest! {
     #![proptest_config(ProptestConfig { cases: 48, rng_seed: RngSeed::Fixed(0x5eed_0001), .. ProptestConfig::default() })]
 
@@ -100,6 +150,18 @@ proptest! {
     }
 
     #[test]
+    fn binary_mode_is_certified_and_agrees(a in qx_matrix(6)) {
+        // What `lambdamat smith` runs (its product check over Z[x] once
+        // panicked on a zero entry of a non-square matrix).
+        let r = report_ok(&as_poly_ring(&a), None).map_err(TestCaseError::fail)?;
+        let want: Vec<String> = inv_factors(&SmithDecomposition::new(&a))
+            .iter()
+            .map(|f| QxRing::new("x").lmx(f))
+            .collect();
+        prop_assert_eq!(r.invariant_factors, want);
+    }
+
+    #[test]
     fn invariant_factors_ignore_permutations(a in qx_matrix(6), rr in 0usize..6, rc in 0usize..6) {
         let p = permuted(&a, rr, rc);
         let (d1, _) = decompose_qx(&a);
@@ -109,33 +171,9 @@ proptest! {
     }
 
     #[test]
-    fn planted_invariant_factors_are_recovered(
-        n in 2usize..=5,
-        roots in proptest::collection::vec(-3i64..=3, 1..=5),
-        ops_l in proptest::collection::vec((0usize..5, 0usize..5, proptest::collection::vec(coeff(), 0..=2)), 0..8),
-        ops_r in proptest::collection::vec((0usize..5, 0usize..5, proptest::collection::vec(coeff(), 0..=2)), 0..8),
-        zeros in 0usize..2,
-    ) {
-        // f_k = Π_{i<k} (x - roots[i]) (k ≥ 1): a divisibility chain; the
-        // last `zeros` diagonal entries are 0 (rank deficiency).
-        let r = QxRing::new("x");
-        let mut diag = Vec::new();
-        let mut f = r.one();
-        for k in 0..n {
-            if k > 0 {
-                let root = roots[(k - 1) % roots.len()];
-                f = r.mul(&f, &qx(&[(-root, 1), (1, 1)]));
-            }
-            diag.push(if k + zeros >= n { r.zero() } else { f.clone() });
-        }
-        let mut d = Matrix::zeros(r.clone(), n, n);
-        for (i, e) in diag.iter().enumerate() {
-            d.set(i, i, e.clone());
-        }
-        let a = unimodular(n, &ops_l).mul(&d).and_then(|x| x.mul(&unimodular(n, &ops_r))).expect("square");
+    fn planted_invariant_factors_are_recovered((a, expect) in planted()) {
         let (dec, _) = decompose_qx(&a);
         prop_assert!(dec.certify(&a).verified());
-        let expect: Vec<QPoly> = diag.into_iter().filter(|e| !r.is_zero(e)).collect();
         prop_assert_eq!(inv_factors(&dec), expect);
     }
 }
@@ -201,18 +239,10 @@ fn gcd_domain_normal_forms_are_idempotent() {
 
 use lambdamat::algebra::smith::modes::to_principal as over_k;
 
-/// Random matrices up to 4×4 (4×4 only in two symbols) with entries of
-/// degree ≤ 1 in each symbol: the fraction-free route over Q[others][λ]
-/// (λ the last symbol) must certify and give the D of the elimination over
-/// K[λ]. Counts the nonsingular square cases (degree certificate) and the
-/// others (determinant certificate), and asserts both ran often enough.
-#[test]
-fn principal_fraction_free_route_agrees_with_the_field_elimination() {
-    use lambdamat::algebra::smith::certify_several::certify_principal_degrees;
-    use lambdamat::algebra::smith::fraction_free::{eliminate_fraction_free, over_k as ff_over_k};
-    use proptest::test_runner::{Config, TestRunner};
-    use std::cell::Cell;
-    let strategy = (2usize..=3, 1usize..=4, 1usize..=4).prop_flat_map(|(nv, m, n)| {
+/// The fraction-free property's matrices: up to 4×4 in two symbols, up to
+/// 3×3 in three, entries of degree ≤ 1 in each symbol.
+fn ff_matrix() -> impl Strategy<Value = Matrix<PolyRing>> {
+    (2usize..=3, 1usize..=4, 1usize..=4).prop_flat_map(|(nv, m, n)| {
         let (m, n) = if nv == 3 {
             (m.min(3), n.min(3))
         } else {
@@ -230,7 +260,21 @@ fn principal_fraction_free_route_agrees_with_the_field_elimination() {
                 )
             },
         )
-    });
+    })
+}
+
+/// Random matrices up to 4×4 (4×4 only in two symbols) with entries of
+/// degree ≤ 1 in each symbol: the fraction-free route over Q[others][λ]
+/// (λ the last symbol) must certify and give the D of the elimination over
+/// K[λ]. Counts the nonsingular square cases (degree certificate) and the
+/// others (determinant certificate), and asserts both ran often enough.
+#[test]
+fn principal_fraction_free_route_agrees_with_the_field_elimination() {
+    use lambdamat::algebra::smith::certify_several::certify_principal_degrees;
+    use lambdamat::algebra::smith::fraction_free::{eliminate_fraction_free, over_k as ff_over_k};
+    use proptest::test_runner::{Config, TestRunner};
+    use std::cell::Cell;
+    let strategy = ff_matrix();
     let full = Cell::new(0usize);
     let other = Cell::new(0usize);
     let mut runner = TestRunner::new(Config {
@@ -262,4 +306,144 @@ fn principal_fraction_free_route_agrees_with_the_field_elimination() {
         full.get()
     );
     assert!(other.get() >= 8, "only {} other cases", other.get());
+}
+
+// ── timing sweeps (issue 15): `cargo test --release --test smith_props --
+// --ignored sweep --nocapture`; see tests/common/sweep.rs ──
+
+mod common;
+
+use common::sweep::{Sweep, cases, draw, lmx_file};
+
+/// A one-symbol matrix as the binary reads it (Q[x] as a one-name
+/// polynomial ring).
+fn as_poly_ring(a: &Matrix<QxRing>) -> Matrix<PolyRing> {
+    a.map(PolyRing::new(vec!["x".to_string()]), |e| {
+        MPoly::from_terms(
+            1,
+            (0..=e.degree().unwrap_or(0)).map(|k| (vec![k as u32], e.coeff(k))),
+        )
+    })
+}
+
+fn report_ok(
+    a: &Matrix<PolyRing>,
+    principal: Option<usize>,
+) -> Result<lambdamat::algebra::smith::modes::SmithReport, String> {
+    let opts = SmithOptions {
+        principal,
+        ..SmithOptions::default()
+    };
+    let r = smith_report("A", a, &opts).map_err(|e| e.to_string())?;
+    let free_ok = r.denominator_free.as_ref().is_none_or(|d| d.verified);
+    if r.verified && free_ok {
+        Ok(r)
+    } else {
+        Err("not verified".into())
+    }
+}
+
+/// Every mode on the one-symbol strategies: elimination + certificate,
+/// determinantal divisors, the nonsingular fast path, the binary's mode
+/// (`smith_report`), and the planted factors through `decompose_qx`.
+#[test]
+#[ignore = "timing sweep: run by hand"]
+fn one_symbol_sweep() {
+    let x = vec!["x".to_string()];
+    let mut sw = Sweep::new("qx6");
+    for (i, a) in draw(&qx_matrix(6), 1, cases(2000)).into_iter().enumerate() {
+        let src = lmx_file(&x, &a);
+        let dec = std::cell::RefCell::new(None);
+        sw.run("elimination+certify", i, &src, || {
+            let d = SmithDecomposition::new(&a);
+            if !d.certify(&a).verified() {
+                return Err("not verified".into());
+            }
+            *dec.borrow_mut() = Some(inv_factors(&d));
+            Ok(())
+        });
+        sw.run("determinantal divisors", i, &src, || {
+            let dd = divisor_ratios(&a);
+            match dec.borrow().as_ref() {
+                Some(f) if *f != dd => Err(format!("{f:?} != {dd:?}")),
+                _ => Ok(()),
+            }
+        });
+        sw.run(
+            "try_nonsingular+certify",
+            i,
+            &src,
+            || match try_nonsingular(&a) {
+                Some(f) if !f.certify(&a).verified() => Err("not verified".into()),
+                _ => Ok(()),
+            },
+        );
+        let ap = as_poly_ring(&a);
+        sw.run("smith_report (binary)", i, &src, || {
+            report_ok(&ap, None).map(|_| ())
+        });
+    }
+    sw.finish();
+    let mut sw = Sweep::new("planted");
+    for (i, (a, expect)) in draw(&planted(), 2, cases(2000)).into_iter().enumerate() {
+        let src = lmx_file(&x, &a);
+        sw.run("decompose_qx+certify", i, &src, || {
+            let (d, _) = decompose_qx(&a);
+            if !d.certify(&a).verified() {
+                return Err("not verified".into());
+            }
+            if inv_factors(&d) != expect {
+                return Err("wrong factors".into());
+            }
+            Ok(())
+        });
+        let ap = as_poly_ring(&a);
+        sw.run("smith_report (binary)", i, &src, || {
+            report_ok(&ap, None).map(|_| ())
+        });
+    }
+    sw.finish();
+}
+
+/// The several-symbol strategies in every mode of the binary: the
+/// determinantal divisors (no principal symbol), `--principal` on the last
+/// and on the first symbol; and the fraction-free route with its degree
+/// certificate (the last property's body).
+#[test]
+#[ignore = "timing sweep: run by hand"]
+fn several_symbols_sweep() {
+    use lambdamat::algebra::smith::certify_several::certify_principal_degrees;
+    use lambdamat::algebra::smith::fraction_free::{eliminate_fraction_free, over_k as ff_over_k};
+    for (name, values) in [
+        ("multi3", draw(&multi_matrix(), 3, cases(1000))),
+        ("ff4", draw(&ff_matrix(), 4, cases(1000))),
+    ] {
+        let mut sw = Sweep::new(name);
+        for (i, a) in values.into_iter().enumerate() {
+            let src = lmx_file(&a.ring.names, &a);
+            let last = a.ring.nvars() - 1;
+            sw.run("determinantal (default)", i, &src, || {
+                report_ok(&a, None).map(|_| ())
+            });
+            sw.run("principal last", i, &src, || {
+                report_ok(&a, Some(last)).map(|_| ())
+            });
+            sw.run("principal first", i, &src, || {
+                report_ok(&a, Some(0)).map(|_| ())
+            });
+            if name == "ff4" {
+                sw.run("fraction-free+degrees", i, &src, || {
+                    let ap = over_k(&a, last);
+                    let ff = eliminate_fraction_free(&a, last).ok_or("no finish")?;
+                    let [u, d, v] = ff_over_k(&ff, &ap.ring, last).ok_or("zero lc")?;
+                    let cert = certify_principal_degrees(&a, last, &ap, [&u, &d, &v]);
+                    if !cert.verified() {
+                        return Err("not verified".into());
+                    }
+                    Ok(())
+                });
+            }
+        }
+        sw.finish();
+    }
 }

@@ -438,3 +438,54 @@ fn principal_k2_four_by_four_fraction_free_and_certified_by_degrees() {
             .any(|c| c["detail"].as_str().unwrap_or("").contains("U⁻¹"))
     );
 }
+
+#[test]
+fn non_square_with_zero_entries_is_certified() {
+    // Found by timing the property-test strategies over many seeds: the
+    // one-symbol certificate's product over Z[x] indexed past its
+    // accumulator when a row entry was zero (exit 101 before the fix).
+    let v = json(&["smith", "tests/data/smith_zero_entry_3x2.lmx"]);
+    assert_eq!(v["mode"], "one-symbol");
+    assert_eq!(v["verified"], true);
+    assert_eq!(v["rank"], 2);
+    assert_eq!(strings(&v["invariant_factors"]), ["1", "1"]);
+}
+
+#[test]
+fn principal_non_square_inputs_whose_elimination_swells() {
+    // Found by timing the printing tests' polynomial distribution as
+    // matrix entries: the fraction-free elimination's remainder sequence
+    // swelled (×11 in one round) and ran for minutes; the invariant factors
+    // now come from the 2×2 minors, without transforms.
+    for (f, sym, want) in [
+        (
+            "tests/data/issue15_principal_2x3_swell.lmx",
+            "k4",
+            ["1", "1"],
+        ),
+        (
+            "tests/data/issue15_principal_2x3_swell.lmx",
+            "k1",
+            ["1", "k1"],
+        ),
+        (
+            "tests/data/issue15_principal_3x2_swell.lmx",
+            "k4",
+            ["1", "k4^2"],
+        ),
+        (
+            "tests/data/issue15_principal_3x2_swell.lmx",
+            "k1",
+            ["1", "1"],
+        ),
+    ] {
+        let v = json(&["smith", f, "--principal", sym]);
+        assert_eq!(v["mode"], "principal", "{sym}");
+        assert_eq!(v["verified"], true, "{sym}");
+        assert_eq!(v["rank"], 2, "{sym}");
+        assert!(v["U"].is_null() && v["V"].is_null(), "{sym}");
+        assert_eq!(strings(&v["invariant_factors"]), want, "{sym}");
+        let note = v["mode_note"].as_str().expect("text");
+        assert!(note.contains("safeguard"), "{note}");
+    }
+}

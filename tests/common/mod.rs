@@ -3,6 +3,7 @@
 #![allow(dead_code)]
 
 pub mod cli;
+pub mod sweep;
 
 /// Spence's published (ν, μ, c) pairs (seed Table 1, column c1).
 pub const SPENCE: [(f64, f64, f64); 7] = [

@@ -453,6 +453,10 @@ fn dot_flat(xs: &FlatLine, ys: &[Vec<i64>]) -> Vec<BigInt> {
     }
     let mut lanes = vec![0i128; (len + 1) * w];
     for (&(start, la), b) in xs.polys.iter().zip(ys) {
+        if la == 0 {
+            // A zero entry: no products (and `t·w` may pass `lanes`).
+            continue;
+        }
         let (mags, masks) = (
             &xs.mags[start..start + la * w],
             &xs.masks[start..start + la * w],

@@ -23,6 +23,10 @@
 //! 1, …, 1, c (made monic in s). When every symbol of A is in S, u and v
 //! are constants and the same holds over Q[all]: d_(n−1) = 1 and
 //! d_n ~ c.
+//!
+//! For a non-square A, [`certify_maximal_minors`] states invariant factors
+//! 1, …, 1, d over Q(others)[s] from its maximal minors computed exactly
+//! (d their gcd) and step 2's argument applied to them.
 
 use super::certify::{Certificate, Check};
 use super::several::degree_bound;
@@ -239,6 +243,219 @@ pub fn certify_last_factor_several(
         },
     });
     Certificate { checks }
+}
+
+/// At most this many r×r minors (r-subsets of the longer side) are
+/// computed by [`certify_maximal_minors`], and at most this many
+/// (r−1)×(r−1) minors tried for `d_(r−1) = 1`.
+pub const MAXIMAL_MINORS_LIMIT: usize = 64;
+
+/// Certifies the invariant factors of a non-square `a` (m×n, r = min(m, n))
+/// over Q(others)[s] from A alone, without transforms: every r×r minor
+/// (r-subsets of the longer side, at most [`MAXIMAL_MINORS_LIMIT`]) is
+/// computed exactly over Q[all]; `d` = the primitive part in s of their
+/// gcd over Q[all] divides each of them exactly and the quotients have gcd
+/// 1 over Q(others)[s] (their images in Z_p[s] at a point where the first
+/// keeps its degree in s, the argument of the module text, step 2), so
+/// `d_r ~ d`; and some (r−1)×(r−1) minors have gcd 1 there, so `d_(r−1) =
+/// 1` and `d_k = 1` for k < r (d_k divides d_(k+1)). The invariant factors
+/// are then 1, …, 1, d (rank r). When the first minors tried are already
+/// coprime, `d = 1` and neither the other minors nor the (r−1)×(r−1) ones
+/// are needed. Returns the certificate and `d`; `None` for a square or
+/// rank-deficient input, or when the statement is not established.
+pub fn certify_maximal_minors(a: &Matrix<PolyRing>, s: usize) -> Option<(Certificate, MPoly)> {
+    let (m, n) = (a.rows(), a.cols());
+    if m == n || m == 0 || n == 0 {
+        return None;
+    }
+    let r = m.min(n);
+    let long = m.max(n);
+    let nv = a.ring.nvars();
+    let name = &a.ring.names[s];
+    let side = if m < n { "columns" } else { "rows" };
+    let sets = |used: &[Vec<usize>]| -> String {
+        used.iter()
+            .map(|c| {
+                let c: Vec<String> = c.iter().map(|i| (i + 1).to_string()).collect();
+                format!("{{{}}}", c.join(", "))
+            })
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let minor_of =
+        |rows: &[usize], cols: &[usize]| det_expanding_largest_row(&a.submatrix(rows, cols));
+    let all: Vec<usize> = (0..r).collect();
+    // The r×r minors, stopping early once those so far are coprime.
+    let mut subset: Vec<usize> = (0..r).collect();
+    let mut minors: Vec<MPoly> = Vec::new();
+    let mut used: Vec<Vec<usize>> = Vec::new();
+    let mut complete = false;
+    loop {
+        let minor = if m < n {
+            minor_of(&all, &subset)?
+        } else {
+            minor_of(&subset, &all)?
+        };
+        if !minor.is_zero() {
+            minors.push(minor);
+            used.push(subset.clone());
+            if let Some((p, k)) = coprime_or_unit(&minors.iter().collect::<Vec<_>>(), s) {
+                let gcd_detail = if p == 0 {
+                    format!("minor {} is free of {name}, a unit", sets(&used[k - 1..k]))
+                } else {
+                    format!(
+                        "the first {k} have gcd 1 in Z_p[{name}], p = {p}, at a point of the other symbols where the first keeps its degree in {name}"
+                    )
+                };
+                let checks = vec![
+                    Check {
+                        property: format!("{r}×{r} minors computed"),
+                        ok: true,
+                        detail: format!(
+                            "{k} nonzero {r}×{r} minor(s) of A over {} ({side} {}), each by expansion",
+                            a.ring.name(),
+                            sets(&used[..k])
+                        ),
+                    },
+                    Check {
+                        property: format!("gcd of {r}×{r} minors over Q(others)[{name}] is 1"),
+                        ok: true,
+                        detail: gcd_detail,
+                    },
+                    Check {
+                        property: "invariant factors 1, …, 1".into(),
+                        ok: true,
+                        detail: format!(
+                            "d_{r} = 1, so d_k = 1 for every k ≤ {r} (d_k divides d_(k+1)): rank {r}, every invariant factor 1"
+                        ),
+                    },
+                ];
+                return Some((Certificate { checks }, MPoly::one(nv)));
+            }
+        }
+        if used.len() + 1 > MAXIMAL_MINORS_LIMIT {
+            break;
+        }
+        if !next_subset(&mut subset, long) {
+            complete = true;
+            break;
+        }
+    }
+    if !complete || minors.is_empty() {
+        return None;
+    }
+    // d = primitive part in s of the gcd of all r×r minors.
+    let g = minors
+        .iter()
+        .fold(MPoly::zero(nv), |g, e| crate::algebra::gcd::gcd(&g, e));
+    if g.degree_in(s).unwrap_or(0) == 0 {
+        return None;
+    }
+    let d = crate::algebra::gcd::primitive_part_in(&g, s).primitive_normal();
+    let quotients: Vec<MPoly> = minors
+        .iter()
+        .map(|e| e.div_exact(&d))
+        .collect::<Option<_>>()?;
+    let (p, k) = coprime_or_unit(&quotients.iter().collect::<Vec<_>>(), s)?;
+    // d_(r−1) = 1 from some (r−1)×(r−1) minors (r = 1: d_0 = 1).
+    let low = if r == 1 {
+        None
+    } else {
+        let mut rows: Vec<usize> = (0..r - 1).collect();
+        let mut small: Vec<MPoly> = Vec::new();
+        let mut found = None;
+        'outer: loop {
+            let mut cols: Vec<usize> = (0..r - 1).collect();
+            loop {
+                let (rr, cc) = if m < n {
+                    (&rows, &cols)
+                } else {
+                    (&cols, &rows)
+                };
+                let e = minor_of(rr, cc)?;
+                if !e.is_zero() {
+                    small.push(e);
+                    if let Some(pk) = coprime_or_unit(&small.iter().collect::<Vec<_>>(), s) {
+                        found = Some(pk);
+                        break 'outer;
+                    }
+                    if small.len() >= MAXIMAL_MINORS_LIMIT {
+                        break 'outer;
+                    }
+                }
+                if !next_subset(&mut cols, long) {
+                    break;
+                }
+            }
+            if !next_subset(&mut rows, r) {
+                break;
+            }
+        }
+        Some(found?)
+    };
+    let pr = &a.ring;
+    let checks = vec![
+        Check {
+            property: format!("{r}×{r} minors computed"),
+            ok: true,
+            detail: format!(
+                "all {} nonzero {r}×{r} minor(s) of A over {} ({side} {}), each by expansion",
+                minors.len(),
+                pr.name(),
+                sets(&used)
+            ),
+        },
+        Check {
+            property: format!("d_{r} over Q(others)[{name}]"),
+            ok: true,
+            detail: format!(
+                "d = {} (primitive part in {name} of their gcd over {}) divides each exactly; the first {k} quotients have gcd 1 in Z_p[{name}], p = {p}, at a point of the other symbols where the first keeps its degree in {name}",
+                pr.format(&d),
+                pr.name()
+            ),
+        },
+        Check {
+            property: format!("d_{} = 1", r - 1),
+            ok: true,
+            detail: match low {
+                None => "d_0 = 1".to_string(),
+                Some((0, _)) => format!("a nonzero {0}×{0} minor is free of {name}, a unit", r - 1),
+                Some((p, k)) => format!(
+                    "{k} nonzero {0}×{0} minors have gcd 1 in Z_p[{name}], p = {p}, at a point where the first keeps its degree in {name}",
+                    r - 1
+                ),
+            },
+        },
+        Check {
+            property: "invariant factors 1, …, 1, d".into(),
+            ok: true,
+            detail: format!("d_k = 1 for k < {r} and d_{r} ~ d: rank {r}"),
+        },
+    ];
+    Some((Certificate { checks }, d))
+}
+
+/// `coprime_in`, or `(0, i + 1)` when entry i is free of `s` (a unit).
+fn coprime_or_unit(entries: &[&MPoly], s: usize) -> Option<(u64, usize)> {
+    match entries.iter().position(|e| !e.contains_var(s)) {
+        Some(i) => Some((0, i + 1)),
+        None => coprime_in(entries, s),
+    }
+}
+
+/// The next r-subset of 0..n in lexicographic order (false after the last).
+fn next_subset(sub: &mut [usize], n: usize) -> bool {
+    let r = sub.len();
+    for i in (0..r).rev() {
+        if sub[i] < n - r + i {
+            sub[i] += 1;
+            for j in i + 1..r {
+                sub[j] = sub[j - 1] + 1;
+            }
+            return true;
+        }
+    }
+    false
 }
 
 /// A lower bound on `deg_λ det A` (λ = symbol `s`): the degree of the
@@ -684,6 +901,91 @@ mod tests {
 
     fn ring2() -> PolyRing {
         PolyRing::new(vec!["x".into(), "y".into()])
+    }
+
+    #[test]
+    fn maximal_minors_give_the_last_factor_of_non_square_inputs() {
+        let (x, y) = (MPoly::var(0, 2), MPoly::var(1, 2));
+        let one = MPoly::one(2);
+        // [[x, y, 1], [y, x, x]]: minors x² − y², x² − y, xy − x; coprime
+        // over Q(y)[x]: invariant factors 1, 1.
+        let a = Matrix::new(
+            ring2(),
+            2,
+            3,
+            vec![
+                x.clone(),
+                y.clone(),
+                one.clone(),
+                y.clone(),
+                x.clone(),
+                x.clone(),
+            ],
+        );
+        let (cert, d) = certify_maximal_minors(&a, 0).expect("coprime minors");
+        assert!(cert.verified() && d.is_nonzero_constant());
+        // The transpose: the same over rows.
+        let t = Matrix::new(
+            ring2(),
+            3,
+            2,
+            vec![
+                x.clone(),
+                y.clone(),
+                y.clone(),
+                x.clone(),
+                one.clone(),
+                x.clone(),
+            ],
+        );
+        let (_, d) = certify_maximal_minors(&t, 0).expect("coprime minors");
+        assert!(d.is_nonzero_constant());
+        // Both rows times (x − y) in the second column's and third's minors:
+        // [[x, y(x − y), x − y], [1, x(x − y), 0]] has minors divisible by
+        // x − y and entries with gcd 1: invariant factors 1, x − y over
+        // Q(y)[x]; over Q(x)[y] the same (y − x up to a unit).
+        let xy = &x - &y;
+        let b = Matrix::new(
+            ring2(),
+            2,
+            3,
+            vec![
+                x.clone(),
+                &y * &xy,
+                xy.clone(),
+                one.clone(),
+                &x * &xy,
+                MPoly::zero(2),
+            ],
+        );
+        let (cert, d) = certify_maximal_minors(&b, 0).expect("established");
+        assert!(cert.verified());
+        assert_eq!(d.degree_in(0), Some(1));
+        assert!(d.div_exact(&xy).is_some_and(|q| q.is_nonzero_constant()));
+        let (_, d) = certify_maximal_minors(&b, 1).expect("established");
+        assert!(d.div_exact(&xy).is_some_and(|q| q.is_nonzero_constant()));
+        // Square or rank-deficient inputs are not treated.
+        let sq = Matrix::new(
+            ring2(),
+            2,
+            2,
+            vec![x.clone(), y.clone(), y.clone(), x.clone()],
+        );
+        assert!(certify_maximal_minors(&sq, 0).is_none());
+        let low = Matrix::new(
+            ring2(),
+            2,
+            3,
+            vec![
+                x.clone(),
+                y.clone(),
+                one.clone(),
+                x.clone(),
+                y.clone(),
+                one.clone(),
+            ],
+        );
+        assert!(certify_maximal_minors(&low, 0).is_none());
     }
 
     #[test]

@@ -35,6 +35,30 @@ pub struct FractionFree {
 /// pivot's degree in λ or finishes a column, so honest inputs need few).
 const MAX_ROUNDS: usize = 10_000;
 
+/// Gives up when the working matrix and the transforms together hold more
+/// than this many bits of coefficients (numerators and denominators). The
+/// contents removed from each line keep the entries near minor size only
+/// when the transforms' lines have content too; when they do not, a
+/// remainder sequence in λ swells exponentially (a 2×3 in three symbols of
+/// degree ≤ 3 with 60-digit rational coefficients, found by timing the
+/// property strategies: 0.4 Mbit after 5 rounds, 7 Mbit after 6, and the
+/// 7th round's gcds ran for minutes). The caller then certifies the
+/// invariant factors without transforms where it can.
+pub const SIZE_LIMIT_BITS: u64 = 2_000_000;
+
+/// Also gives up when a round multiplies the bits held by more than
+/// [`SWELL_FACTOR`] and ends above this size: the next round then costs
+/// far more than all before it (the 2×3 above: ×11 to 0.9 Mbit, the next
+/// round alone 7 s CPU; a 3×2 of the same kind: ×7.7 to 0.27 Mbit, the
+/// next round 6 s). On 64 seeded random 2×2–5×5 inputs in 2–3 symbols
+/// (`benches/multi_peers.py`, degrees 1–2, 4 seeds) that finish, no round
+/// above this floor grew the size more than ×3.1 (×5.9 below it), and the
+/// largest size reached was 0.7 Mbit (4.2 s CPU).
+pub const SWELL_FLOOR_BITS: u64 = 256_000;
+
+/// See [`SWELL_FLOOR_BITS`].
+pub const SWELL_FACTOR: u64 = 6;
+
 struct Work {
     m: Vec<Vec<MPoly>>,
     u: Vec<Vec<MPoly>>,
@@ -109,6 +133,18 @@ fn reduce_line(line: &mut [&mut MPoly]) {
 }
 
 impl Work {
+    /// Bits of coefficients held by the working matrix and the transforms.
+    fn size_bits(&self) -> u64 {
+        self.m
+            .iter()
+            .chain(&self.u)
+            .chain(&self.v)
+            .flatten()
+            .flat_map(|e| e.terms().iter())
+            .map(|(_, c)| c.numer().bits() + c.denom().bits())
+            .sum()
+    }
+
     fn row_op(&mut self, i: usize, k: usize, m: &MPoly, q: &MPoly) {
         for j in 0..self.cols {
             let a = &(m * &self.m[i][j]) - &(q * &self.m[k][j]);
@@ -161,9 +197,19 @@ impl Work {
 }
 
 /// The fraction-free Smith elimination of `a` over Q[others][λ], λ the
-/// symbol with index `p` (any shape and rank); `None` only if the
-/// safeguard on the number of rounds stops it.
+/// symbol with index `p` (any shape and rank); `None` only if a safeguard
+/// stops it: the number of rounds, or the size of the entries
+/// ([`SIZE_LIMIT_BITS`]).
 pub fn eliminate_fraction_free(a: &Matrix<PolyRing>, p: usize) -> Option<FractionFree> {
+    eliminate_fraction_free_within(a, p, SIZE_LIMIT_BITS)
+}
+
+/// [`eliminate_fraction_free`] with a given limit on the bits held.
+pub fn eliminate_fraction_free_within(
+    a: &Matrix<PolyRing>,
+    p: usize,
+    limit_bits: u64,
+) -> Option<FractionFree> {
     let (rows, cols) = (a.rows(), a.cols());
     let nv = a.ring.nvars();
     let id = |n: usize| -> Vec<Vec<MPoly>> {
@@ -191,12 +237,18 @@ pub fn eliminate_fraction_free(a: &Matrix<PolyRing>, p: usize) -> Option<Fractio
     };
     let mut rounds = 0usize;
     let mut rank = 0usize;
+    let mut last_size = u64::MAX;
     for k in 0..rows.min(cols) {
         loop {
             rounds += 1;
             if rounds > MAX_ROUNDS {
                 return None;
             }
+            let size = w.size_bits();
+            if size > limit_bits || (size > SWELL_FLOOR_BITS && size > SWELL_FACTOR * last_size) {
+                return None;
+            }
+            last_size = size;
             let Some((pi, pj)) = w.pivot(k) else {
                 break;
             };

@@ -22,6 +22,7 @@ pub mod hermite_cert;
 pub mod minors_cert;
 pub mod modes;
 pub mod nonsingular;
+pub mod principal_form;
 pub mod several;
 pub mod small;
 pub mod trailing;

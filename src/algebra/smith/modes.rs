@@ -814,7 +814,7 @@ fn principal(
         "principal symbol {}: Smith form over {ring_name}, a principal ideal domain; entries of U and V are rational functions of the other symbols",
         a.ring.names[p]
     );
-    if let Some(r) = principal_form_only(name, a, &ap, p, &note, opts, false) {
+    if let Some(r) = principal_form_only(name, a, &ap, p, &note, opts, None) {
         return Ok(r);
     }
     refuse_if_too_large(a, "the principal mode")?;
@@ -873,7 +873,18 @@ fn principal_fraction_free(
         a.ring.names[p]
     ));
     let Some(ff) = super::fraction_free::eliminate_fraction_free(a, p) else {
-        return Ok(None);
+        // Its entries swelled: the invariant factors alone, where the
+        // det/adjugate (square) or coprime maximal minors (non-square)
+        // certify them.
+        let why = format!(
+            "the fraction-free elimination over Q[others][λ] stopped at its safeguard (entries over {} bits of coefficients)",
+            super::fraction_free::SIZE_LIMIT_BITS
+        );
+        return Ok(
+            principal_form_only(name, a, ap, p, note, opts, Some(&why)).or_else(|| {
+                super::principal_form::maximal_minors_report(name, a, ap, p, note, &why, opts)
+            }),
+        );
     };
     let Some([u, d, v]) = super::fraction_free::over_k(&ff, kr, p) else {
         return Ok(None);
@@ -937,7 +948,7 @@ fn principal_form_only(
     p: usize,
     note: &str,
     opts: &SmithOptions,
-    always: bool,
+    forced: Option<&str>,
 ) -> Option<SmithReport> {
     opts.progress
         .phase("det and adj over Q[all] by Kronecker packing and images mod word primes");
@@ -952,8 +963,8 @@ fn principal_form_only(
             "det A has {} terms (the elimination with transforms is used up to {PRINCIPAL_TRANSFORM_TERMS})",
             c.terms().len()
         )
-    } else if always {
-        "the caller asked for it".to_string()
+    } else if let Some(why) = forced {
+        why.to_string()
     } else {
         return None;
     };
@@ -1629,8 +1640,8 @@ mod tests {
         let a = random_xy(3, 11);
         let ap = to_principal(&a, 1);
         let opts = SmithOptions::default();
-        let fast =
-            principal_form_only("A", &a, &ap, 1, "note", &opts, true).expect("generic input");
+        let fast = principal_form_only("A", &a, &ap, 1, "note", &opts, Some("asked"))
+            .expect("generic input");
         let full = smith_report(
             "A",
             &a,
