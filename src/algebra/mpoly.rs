@@ -9,6 +9,7 @@ pub use super::print::latex_name;
 use super::print::{Node, PrintOptions, print};
 use super::rational::{Q, primitive_scale};
 use num_bigint::BigInt;
+use num_integer::Integer;
 use num_traits::{One, Signed, Zero};
 use std::cmp::Ordering;
 use std::collections::BTreeMap;
@@ -296,25 +297,50 @@ impl MPoly {
     /// Exact division: `Some(q)` with `q * d == self`, or `None` if `d` does
     /// not divide `self` (or `d` is zero).
     pub fn div_exact(&self, d: &MPoly) -> Option<MPoly> {
-        let (dm, dc) = d.terms.first()?;
+        let (dm, _) = d.terms.first()?;
         if let Some(c) = d.as_constant() {
             return Some(self.scale(&c.recip()));
         }
-        let dinv = dc.recip();
-        let mut r = self.clone();
-        let mut quot: Vec<(Monomial, Q)> = Vec::new();
-        while let Some((rm, rc)) = r.terms.first() {
+        if self.is_zero() {
+            return Some(self.clone());
+        }
+        // Over the integers: with `a = sa·self` and `e = sd·d` of coprime
+        // integer coefficients, d | self over Q iff e | a over Q, and then
+        // (Gauss's lemma, e primitive) the quotient a/e has integer
+        // coefficients, so every step's leading coefficient divides exactly
+        // and a failed integer division means no division over Q either.
+        // self/d = (a/e)·sd/sa. Integer steps need no gcd per coefficient,
+        // which rational steps take for every term of every remainder.
+        let (sa, sd) = (self.integer_scale(), d.integer_scale());
+        let int_terms = |p: &MPoly, s: &Q| -> Vec<(Monomial, BigInt)> {
+            p.terms
+                .iter()
+                .map(|(m, c)| (m.clone(), (c * s).to_integer()))
+                .collect()
+        };
+        let e = int_terms(d, &sd);
+        let lc = &e[0].1;
+        let mut r = int_terms(self, &sa);
+        let mut quot: Vec<(Monomial, BigInt)> = Vec::new();
+        while let Some((rm, rc)) = r.first() {
             if !rm.iter().zip(dm).all(|(a, b)| a >= b) {
                 return None;
             }
+            let (c, rem) = rc.div_rem(lc);
+            if !rem.is_zero() {
+                return None;
+            }
             let m: Monomial = rm.iter().zip(dm).map(|(a, b)| a - b).collect();
-            let c = rc * &dinv;
-            r = r - MPoly::monomial(m.clone(), c.clone()) * d;
+            r = sub_shifted(&r, &e, &m, &c);
             quot.push((m, c));
         }
+        let back = &sd / &sa;
         Some(MPoly {
             nvars: self.nvars,
-            terms: quot,
+            terms: quot
+                .into_iter()
+                .map(|(m, c)| (m, Q::from_integer(c) * &back))
+                .collect(),
         })
     }
 
@@ -399,6 +425,40 @@ fn merge(a: &MPoly, b: &MPoly, negate_b: bool) -> MPoly {
         nvars: a.nvars,
         terms,
     }
+}
+
+/// `r − c·x^m·e` for integer terms in the polynomial order (highest
+/// first): shifting by a monomial keeps the lexicographic order, so one
+/// merge suffices.
+fn sub_shifted(
+    r: &[(Monomial, BigInt)],
+    e: &[(Monomial, BigInt)],
+    m: &Monomial,
+    c: &BigInt,
+) -> Vec<(Monomial, BigInt)> {
+    let shifted = e.iter().map(|(em, ec)| {
+        let mm: Monomial = em.iter().zip(m).map(|(x, y)| x + y).collect();
+        (mm, ec * c)
+    });
+    let mut out = Vec::with_capacity(r.len() + e.len());
+    let mut i = 0;
+    for (sm, sc) in shifted {
+        while i < r.len() && r[i].0 > sm {
+            out.push(r[i].clone());
+            i += 1;
+        }
+        if i < r.len() && r[i].0 == sm {
+            let v = &r[i].1 - &sc;
+            if !v.is_zero() {
+                out.push((sm, v));
+            }
+            i += 1;
+        } else {
+            out.push((sm, -sc));
+        }
+    }
+    out.extend_from_slice(&r[i..]);
+    out
 }
 
 /// The integer numerators of `p` and the positive rational `u` with
@@ -535,6 +595,71 @@ mod tests {
         assert_eq!(p.div_exact(&a), Some(b.clone()));
         assert_eq!(p.div_exact(&(&x + MPoly::one(2))), None);
         assert_eq!(p.div_exact(&MPoly::zero(2)), None);
+    }
+
+    /// The integer-step division against the quotient it must return, on
+    /// seeded products of polynomials in three symbols with rational
+    /// coefficients (large ones included), and its refusals: a remainder
+    /// whose leading monomial is not a multiple, a leading coefficient the
+    /// divisor's does not divide over Z after clearing (no division over Q
+    /// either), and a zero dividend.
+    #[test]
+    fn integer_step_division_is_exact_on_rational_products() {
+        let mut seed = 11u64;
+        let mut next = || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            seed >> 33
+        };
+        let mut random = |terms: usize, big: bool| {
+            let mut p = MPoly::zero(3);
+            for _ in 0..terms {
+                let m: Monomial = (0..3).map(|_| (next() % 3) as u32).collect();
+                let n = BigInt::from(next() % 19) - 9;
+                let d = BigInt::from(1 + next() % 7);
+                let n = if big {
+                    n * BigInt::from(next()).pow(4)
+                } else {
+                    n
+                };
+                p = p + MPoly::monomial(m, Q::new(n, d));
+            }
+            p
+        };
+        let mut checked = 0;
+        for round in 0..200 {
+            let (a, b) = (
+                random(1 + round % 5, round % 3 == 0),
+                random(1 + round % 4, round % 2 == 0),
+            );
+            if a.is_zero() || b.is_zero() {
+                continue;
+            }
+            let p = &a * &b;
+            assert_eq!(p.div_exact(&b), Some(a.clone()), "{round}");
+            assert_eq!(p.div_exact(&a), Some(b.clone()), "{round}");
+            if b.as_constant().is_none() {
+                let off = &p + &MPoly::one(3);
+                assert_eq!(off.div_exact(&b).map(|q| &q * &b), None, "{round}");
+            }
+            checked += 1;
+        }
+        assert!(checked >= 150, "only {checked} products checked");
+        let (x, y) = xy();
+        let two = MPoly::constant(qi(2), 2);
+        // x + 1/2 divides x^2 + x/2, and 2x + 1 too: the scales of both
+        // sides are undone exactly.
+        let p = &(&x * &x) + &x.scale(&q(1, 2));
+        let d = &x + &MPoly::constant(q(1, 2), 2);
+        assert_eq!(p.div_exact(&d), Some(x.clone()));
+        assert_eq!(p.div_exact(&(&two * &d)), Some(x.scale(&q(1, 2))));
+        // 3x + 1 ∤ 2x^2 + x: integer leading coefficients 2 and 3.
+        let p = &(&x * &x).scale(&qi(2)) + &x;
+        let d = &x.scale(&qi(3)) + &MPoly::one(2);
+        assert_eq!(p.div_exact(&d), None);
+        assert_eq!(p.div_exact(&(&y + &x)), None);
+        assert_eq!(MPoly::zero(2).div_exact(&d), Some(MPoly::zero(2)));
     }
 
     #[test]

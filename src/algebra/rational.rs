@@ -5,7 +5,6 @@
 use super::print::{Node, PrintOptions, print};
 use super::ring::{Field, Ring};
 use num_bigint::BigInt;
-use num_integer::Integer;
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
 
@@ -42,13 +41,21 @@ pub fn primitive_scale<'a>(coeffs: impl IntoIterator<Item = &'a Q>) -> Q {
         if c.is_zero() {
             continue;
         }
-        l = l.lcm(c.denom());
-        g = g.gcd(c.numer());
+        // Lehmer's gcd (num's binary gcd is quadratic in bits, with a
+        // large constant, on the big coefficients of eliminations).
+        if !c.denom().is_one() {
+            l = super::intgcd::lcm(&l, c.denom());
+        }
+        if !g.is_one() {
+            g = super::intgcd::gcd(&g, c.numer());
+        }
     }
     if g.is_zero() {
         Q::one()
     } else {
-        Q::new(l, g.abs())
+        // Already in lowest terms: a prime dividing g divides every
+        // numerator, so no denominator (each coefficient is reduced).
+        Q::new_raw(l, g)
     }
 }
 
