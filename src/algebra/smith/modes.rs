@@ -939,8 +939,13 @@ pub const PRINCIPAL_TRANSFORM_TERMS: usize = 22;
 
 /// The principal-mode report with D alone, when the input is large
 /// ([`PRINCIPAL_FORM_ONLY_MIN`], [`PRINCIPAL_TRANSFORM_TERMS`]; or
-/// `always`) and [`super::certify_several::certify_last_factor_several`]
-/// establishes invariant factors 1, …, 1, det over Q(others)[λ].
+/// `forced`) and [`super::certify_several::certify_last_factor_several`]
+/// establishes invariant factors 1, …, 1, det over Q(others)[λ]; when it
+/// declines, for an input of at least [`PRINCIPAL_FORM_ONLY_MIN`] rows or
+/// when `forced` (the fraction-free elimination's safeguard stopped it),
+/// [`super::certify_several::certify_two_factors_several`] may establish
+/// 1, …, 1, g, c/g instead (below that size and unforced the elimination
+/// with transforms runs first, so its outputs are unchanged).
 fn principal_form_only(
     name: &str,
     a: &Matrix<PolyRing>,
@@ -982,9 +987,14 @@ fn principal_form_only(
             format!("the last one, cleared of denominators, is {}", pr.format(&c.primitive_normal())),
             "det and adj over Q[all] by Kronecker substitution and images mod word primes (CRT above a proved bound); invariant factors from A·B = c·I, the gcd of adj's entries over Q(others)[λ] (images at a point mod p) and deg_λ c".to_string(),
         )
+    } else if n < PRINCIPAL_FORM_ONLY_MIN && forced.is_none() {
+        // Below that size the fraction-free elimination (with transforms)
+        // runs first; this route is its fallback after the safeguard.
+        return None;
     } else {
-        // d_(n−1) ≠ 1 over Q(others)[λ]: two non-trivial factors by
-        // Jacobi's identity, or the elimination below.
+        // d_(n−1) ≠ 1 over Q(others)[λ] (or deg_λ c below the degree
+        // bound): 1, …, 1, g, c/g by Jacobi's identity, or the elimination
+        // below.
         opts.progress.phase(
             "certifying invariant factors 1, …, 1, g, c/g (gcd of adj, Jacobi, (n−2)-minors)",
         );
