@@ -1114,6 +1114,117 @@ mod tests {
         PolyRing::new(vec!["x".into(), "y".into()])
     }
 
+    /// `L·diag(diag)·R` with L unit lower and R unit upper triangular
+    /// (polynomial entries): unimodular over Q[x, y].
+    fn planted(diag: &[MPoly]) -> Matrix<PolyRing> {
+        let n = diag.len();
+        let (x, y) = (MPoly::var(0, 2), MPoly::var(1, 2));
+        let one = MPoly::one(2);
+        let entry = |i: usize, j: usize| match (i + 2 * j) % 4 {
+            0 => &x + &one,
+            1 => y.clone(),
+            2 => &(&x * &y) - &one,
+            _ => one.scale(&qi(2)),
+        };
+        let mut l = Matrix::identity(ring2(), n);
+        let mut r = Matrix::identity(ring2(), n);
+        for i in 0..n {
+            for j in 0..i {
+                l.set(i, j, entry(i, j));
+                r.set(j, i, entry(j, i + 1));
+            }
+        }
+        let mut d = Matrix::zeros(ring2(), n, n);
+        for (i, e) in diag.iter().enumerate() {
+            d.set(i, i, e.clone());
+        }
+        l.mul(&d).and_then(|ld| ld.mul(&r)).expect("square")
+    }
+
+    /// Whether `p` and `q` are associates over Q(others)[s] (same primitive
+    /// part in s up to a rational constant).
+    fn associates_in(p: &MPoly, q: &MPoly, s: usize) -> bool {
+        use crate::algebra::gcd::primitive_part_in;
+        let (pp, qq) = (primitive_part_in(p, s), primitive_part_in(q, s));
+        pp.div_exact(&qq).is_some_and(|u| u.is_nonzero_constant())
+    }
+
+    #[test]
+    fn two_factors_of_planted_inputs_agree_with_the_determinantal_divisors() {
+        use crate::algebra::smith::divisors::determinantal_divisors;
+        let (x, y) = (MPoly::var(0, 2), MPoly::var(1, 2));
+        let one = MPoly::one(2);
+        let (xm, xp) = (&x - &y, &x + &y);
+        for n in [2, 3, 4] {
+            let mut diag = vec![one.clone(); n - 2];
+            diag.push(xm.clone());
+            diag.push(&xm * &xp);
+            let a = planted(&diag);
+            let (c, b) = det_adj_several(&a).expect("nonsingular");
+            // d_(n−1) = x − y ≠ 1: the one-factor certificate declines.
+            assert!(!certify_last_factor_several(&a, &c, &b, &[0]).verified());
+            let dv = determinantal_divisors(&a, 1 << 20).expect("few minors");
+            for s in [0, 1] {
+                let (cert, g, last) =
+                    certify_two_factors_several(&a, &c, &b, s).expect("two factors");
+                assert!(cert.verified(), "n = {n}, s = {s}");
+                // Against the minors over Q[x, y] (their primitive parts in s
+                // are the divisors over Q(others)[s], Gauss's lemma).
+                assert!(associates_in(&g, &dv.invariant[n - 2], s), "n = {n}");
+                assert!(associates_in(&last, &dv.invariant[n - 1], s), "n = {n}");
+                assert!(associates_in(&g, &xm, s) && associates_in(&last, &(&xm * &xp), s));
+                for f in &dv.invariant[..n - 2] {
+                    assert!(f.is_nonzero_constant());
+                }
+            }
+            // Tampering: a changed entry of B or a changed c fails A·B = c·I.
+            let mut bad = b.clone();
+            bad.set(0, 0, b.get(0, 0) + &one);
+            assert!(certify_two_factors_several(&a, &c, &bad, 0).is_none());
+            assert!(certify_two_factors_several(&a, &(&c * &xp), &b, 0).is_none());
+            // B and c both times (x + 2): A·B = c·I still holds and the gcd of
+            // B gains x + 2, but c/det A depends on x: Jacobi's check refuses
+            // (over Q(x)[y] the factor is a unit and the statement stands).
+            let k = &x + &one.scale(&qi(2));
+            let bk = b.map(ring2(), |e| e * &k);
+            let ck = &c * &k;
+            assert!(certify_two_factors_several(&a, &ck, &bk, 0).is_none());
+            let (cert, g, _) = certify_two_factors_several(&a, &ck, &bk, 1).expect("unit");
+            assert!(cert.verified() && associates_in(&g, &xm, 1));
+        }
+        // Three non-trivial factors: d_(n−2) = x − y, declined.
+        let a = planted(&[one.clone(), xm.clone(), xm.clone(), &xm * &xp]);
+        let (c, b) = det_adj_several(&a).expect("nonsingular");
+        for s in [0, 1] {
+            assert!(certify_two_factors_several(&a, &c, &b, s).is_none());
+        }
+    }
+
+    #[test]
+    fn two_factor_route_covers_a_det_below_the_degree_bound() {
+        // [[x, x + 1], [x, x + 2]]: det x, degree bound 2 in x, so the
+        // one-factor certificate declines; gcd(adj) = 1, factors 1, x.
+        let x = MPoly::var(0, 2);
+        let one = MPoly::one(2);
+        let a = Matrix::new(
+            ring2(),
+            2,
+            2,
+            vec![
+                x.clone(),
+                &x + &one,
+                x.clone(),
+                &x + &one.scale(&qi(2)),
+            ],
+        );
+        let (c, b) = det_adj_several(&a).expect("nonsingular");
+        assert!(!certify_last_factor_several(&a, &c, &b, &[0]).verified());
+        let (cert, g, last) = certify_two_factors_several(&a, &c, &b, 0).expect("1, x");
+        assert!(cert.verified());
+        assert!(g.is_nonzero_constant());
+        assert!(associates_in(&last, &x, 0));
+    }
+
     #[test]
     fn maximal_minors_give_the_last_factor_of_non_square_inputs() {
         let (x, y) = (MPoly::var(0, 2), MPoly::var(1, 2));
