@@ -519,9 +519,7 @@ fn principal_six_by_six_whose_det_is_below_the_degree_bound() {
         .map(|s| parse_poly(s, &names).expect("polynomial"))
         .collect();
     assert_eq!(fd.len(), 6);
-    let d5 = fd[..5]
-        .iter()
-        .fold(MPoly::one(2), |acc, f| &acc * f);
+    let d5 = fd[..5].iter().fold(MPoly::one(2), |acc, f| &acc * f);
     // d_5 over Q[x, y] is free of y: a unit of Q(x)[y], so d_5 = 1 there.
     assert!(!d5.contains_var(1), "d_5 = {d5:?}");
     let d6 = &d5 * &fd[5];

@@ -1210,12 +1210,7 @@ mod tests {
             ring2(),
             2,
             2,
-            vec![
-                x.clone(),
-                &x + &one,
-                x.clone(),
-                &x + &one.scale(&qi(2)),
-            ],
+            vec![x.clone(), &x + &one, x.clone(), &x + &one.scale(&qi(2))],
         );
         let (c, b) = det_adj_several(&a).expect("nonsingular");
         assert!(!certify_last_factor_several(&a, &c, &b, &[0]).verified());

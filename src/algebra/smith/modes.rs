@@ -977,7 +977,9 @@ fn principal_form_only(
         .phase("certifying the invariant factors (A·B = c·I, gcd of adj over Q(others)[λ])");
     let cert = super::certify_several::certify_last_factor_several(a, &c, &b, &[p]);
     let kr = &ap.ring;
-    let over_k = |e: &MPoly| kr.normalize(&kr.trim(e.coeffs_in(p).into_iter().map(RatFunc::from_poly).collect()));
+    let over_k = |e: &MPoly| {
+        kr.normalize(&kr.trim(e.coeffs_in(p).into_iter().map(RatFunc::from_poly).collect()))
+    };
     let pr = &a.ring;
     let mut d = Matrix::identity(kr.clone(), n);
     let (checks, last_note, algorithm) = if cert.verified() {
@@ -998,8 +1000,7 @@ fn principal_form_only(
         opts.progress.phase(
             "certifying invariant factors 1, …, 1, g, c/g (gcd of adj, Jacobi, (n−2)-minors)",
         );
-        let (cert2, g, last) =
-            super::certify_several::certify_two_factors_several(a, &c, &b, p)?;
+        let (cert2, g, last) = super::certify_several::certify_two_factors_several(a, &c, &b, p)?;
         if !cert2.verified() {
             return None;
         }
