@@ -489,3 +489,50 @@ fn principal_non_square_inputs_whose_elimination_swells() {
         assert!(note.contains("safeguard"), "{note}");
     }
 }
+
+#[test]
+fn principal_six_by_six_whose_det_is_below_the_degree_bound() {
+    // The peers' grid 6×6 over Q[x, y] of degree 3 (seed 1): --principal y
+    // stalled (over 60 s CPU) in the elimination over Q(x)[y]; now certified
+    // from A·B = c·I with c/det A free of y by Jacobi's identity, D alone.
+    use lambdamat::algebra::mpoly::MPoly;
+    use lambdamat::algebra::ratfunc::{RatFunc, RatFuncField};
+    use lambdamat::algebra::ring::Ring;
+    use lambdamat::lang::formula::{parse_poly, parse_ratfunc};
+    let file = "tests/data/issue15_principal_grid_6x6.lmx";
+    let v = json(&["smith", file, "--principal", "y"]);
+    assert_eq!(v["mode"], "principal");
+    assert_eq!(v["ring"], "Q(x)[y]");
+    assert_eq!(v["verified"], true);
+    assert!(v["U"].is_null() && v["V"].is_null());
+    let inv = strings(&v["invariant_factors"]);
+    assert_eq!(inv.len(), 6);
+    assert_eq!(&inv[..5], ["1", "1", "1", "1", "1"]);
+    // Independently: the determinantal mode's factors over Q[x, y] (gcd of
+    // k×k minors) give d_5 and d_6 there; over Q(x)[y] the divisors are
+    // their primitive parts in y (Gauss's lemma).
+    let det = json(&["smith", file]);
+    assert_eq!(det["verified"], true);
+    let names = vec!["x".to_string(), "y".to_string()];
+    let fd: Vec<MPoly> = strings(&det["invariant_factors"])
+        .iter()
+        .map(|s| parse_poly(s, &names).expect("polynomial"))
+        .collect();
+    assert_eq!(fd.len(), 6);
+    let d5 = fd[..5].iter().fold(MPoly::one(2), |acc, f| &acc * f);
+    // d_5 over Q[x, y] is free of y: a unit of Q(x)[y], so d_5 = 1 there.
+    assert!(!d5.contains_var(1), "d_5 = {d5:?}");
+    let d6 = &d5 * &fd[5];
+    // f_6 = d_6/d_5 over Q(x)[y] = d_6 made monic in y.
+    let lc = d6.coeffs_in(1).pop().expect("nonzero");
+    let k = RatFuncField {
+        names: names.clone(),
+        shown: names.clone(),
+    };
+    let f6 = parse_ratfunc(&inv[5], &names).expect("rational function");
+    let lhs = k.mul(&f6, &RatFunc::from_poly(lc));
+    assert!(k.is_zero(&k.sub(&lhs, &RatFunc::from_poly(d6))));
+    assert!(inv[5].starts_with("y^16 "), "{}", &inv[5][..40]);
+    let note = v["mode_note"].as_str().expect("text");
+    assert!(note.contains("transforms omitted"), "{note}");
+}

@@ -939,8 +939,13 @@ pub const PRINCIPAL_TRANSFORM_TERMS: usize = 22;
 
 /// The principal-mode report with D alone, when the input is large
 /// ([`PRINCIPAL_FORM_ONLY_MIN`], [`PRINCIPAL_TRANSFORM_TERMS`]; or
-/// `always`) and [`super::certify_several::certify_last_factor_several`]
-/// establishes invariant factors 1, …, 1, det over Q(others)[λ].
+/// `forced`) and [`super::certify_several::certify_last_factor_several`]
+/// establishes invariant factors 1, …, 1, det over Q(others)[λ]; when it
+/// declines, for an input of at least [`PRINCIPAL_FORM_ONLY_MIN`] rows or
+/// when `forced` (the fraction-free elimination's safeguard stopped it),
+/// [`super::certify_several::certify_two_factors_several`] may establish
+/// 1, …, 1, g, c/g instead (below that size and unforced the elimination
+/// with transforms runs first, so its outputs are unchanged).
 fn principal_form_only(
     name: &str,
     a: &Matrix<PolyRing>,
@@ -971,13 +976,53 @@ fn principal_form_only(
     opts.progress
         .phase("certifying the invariant factors (A·B = c·I, gcd of adj over Q(others)[λ])");
     let cert = super::certify_several::certify_last_factor_several(a, &c, &b, &[p]);
-    if !cert.verified() {
-        return None;
-    }
     let kr = &ap.ring;
-    let f = kr.normalize(&kr.trim(c.coeffs_in(p).into_iter().map(RatFunc::from_poly).collect()));
+    let over_k = |e: &MPoly| {
+        kr.normalize(&kr.trim(e.coeffs_in(p).into_iter().map(RatFunc::from_poly).collect()))
+    };
+    let pr = &a.ring;
     let mut d = Matrix::identity(kr.clone(), n);
-    d.set(n - 1, n - 1, f.clone());
+    let (checks, last_note, algorithm) = if cert.verified() {
+        d.set(n - 1, n - 1, over_k(&c));
+        (
+            cert.checks,
+            format!("the last one, cleared of denominators, is {}", pr.format(&c.primitive_normal())),
+            "det and adj over Q[all] by Kronecker substitution and images mod word primes (CRT above a proved bound); invariant factors from A·B = c·I, the gcd of adj's entries over Q(others)[λ] (images at a point mod p) and deg_λ c".to_string(),
+        )
+    } else if n < PRINCIPAL_FORM_ONLY_MIN && forced.is_none() {
+        // Below that size the fraction-free elimination (with transforms)
+        // runs first; this route is its fallback after the safeguard.
+        return None;
+    } else {
+        // d_(n−1) ≠ 1 over Q(others)[λ] (or deg_λ c below the degree
+        // bound): 1, …, 1, g, c/g by Jacobi's identity, or the elimination
+        // below.
+        opts.progress.phase(
+            "certifying invariant factors 1, …, 1, g, c/g (gcd of adj, Jacobi, (n−2)-minors)",
+        );
+        let (cert2, g, last) = super::certify_several::certify_two_factors_several(a, &c, &b, p)?;
+        if !cert2.verified() {
+            return None;
+        }
+        d.set(n - 2, n - 2, over_k(&g));
+        d.set(n - 1, n - 1, over_k(&last));
+        (
+            cert2.checks,
+            if g.is_nonzero_constant() {
+                format!(
+                    "the last one, cleared of denominators, is {}",
+                    pr.format(&last.primitive_normal())
+                )
+            } else {
+                format!(
+                    "the last two, cleared of denominators, are {} and {}",
+                    pr.format(&g),
+                    pr.format(&last.primitive_normal())
+                )
+            },
+            "det and adj over Q[all] by Kronecker substitution and images mod word primes (CRT above a proved bound); invariant factors 1, …, 1, g, c/g from A·B = c·I: g = gcd of adj's entries over Q(others)[λ] (exact divisions, quotients coprime by images at a point mod p), c/det A free of λ by Jacobi's identity on a 2×2 minor, d_(n−2) = 1 from (n−2)×(n−2) minors".to_string(),
+        )
+    };
     let inv = d.diagonal();
     let latex = opts.latex.then(|| LatexForms {
         a: rows_of(a, true),
@@ -986,17 +1031,14 @@ fn principal_form_only(
         u: None,
         v: None,
     });
-    let pr = &a.ring;
-    let dprim = c.primitive_normal();
     Some(SmithReport {
         matrix: name.to_string(),
         ring: kr.name(),
         mode: Mode::Principal,
         mode_note: format!(
-            "{note}; transforms omitted because {why} (their coefficients are rational functions of resultant size): the invariant factors alone are certified; the last one, cleared of denominators, is {}",
-            pr.format(&dprim)
+            "{note}; transforms omitted because {why} (their coefficients are rational functions of resultant size): the invariant factors alone are certified; {last_note}"
         ),
-        algorithm: "det and adj over Q[all] by Kronecker substitution and images mod word primes (CRT above a proved bound); invariant factors from A·B = c·I, the gcd of adj's entries over Q(others)[λ] (images at a point mod p) and deg_λ c".to_string(),
+        algorithm,
         a: rows_of(a, false),
         invariant_factors: inv.iter().map(|e| kr.lmx(e)).collect(),
         rank: n,
@@ -1004,7 +1046,7 @@ fn principal_form_only(
         u: None,
         v: None,
         verified: true,
-        certificate: cert.checks,
+        certificate: checks,
         invariant_factor_coefficients: Some(
             inv.iter()
                 .map(|f| f.coeffs().iter().map(|c| kr.k.lmx(c)).collect())
