@@ -1023,6 +1023,30 @@ fn principal_form_only(
             "det and adj over Q[all] by Kronecker substitution and images mod word primes (CRT above a proved bound); invariant factors 1, …, 1, g, c/g from A·B = c·I: g = gcd of adj's entries over Q(others)[λ] (exact divisions, quotients coprime by images at a point mod p), c/det A free of λ by Jacobi's identity on a 2×2 minor, d_(n−2) = 1 from (n−2)×(n−2) minors".to_string(),
         )
     };
+    let mode_note = format!(
+        "{note}; transforms omitted because {why} (their coefficients are rational functions of resultant size): the invariant factors alone are certified; {last_note}"
+    );
+    Some(principal_d_only_report(
+        name, a, d, n, mode_note, algorithm, checks, opts,
+    ))
+}
+
+/// The principal mode's report of a certified D without transforms
+/// (`rank` nonzero invariant factors): the form-only routes' common
+/// assembly, shared by [`principal_form_only`] and
+/// [`super::principal_form`].
+#[allow(clippy::too_many_arguments)]
+pub(super) fn principal_d_only_report(
+    name: &str,
+    a: &Matrix<PolyRing>,
+    d: Matrix<UPolyRing<RatFuncField>>,
+    rank: usize,
+    mode_note: String,
+    algorithm: String,
+    certificate: Vec<Check>,
+    opts: &SmithOptions,
+) -> SmithReport {
+    let kr = d.ring.clone();
     let inv = d.diagonal();
     let latex = opts.latex.then(|| LatexForms {
         a: rows_of(a, true),
@@ -1031,22 +1055,20 @@ fn principal_form_only(
         u: None,
         v: None,
     });
-    Some(SmithReport {
+    SmithReport {
         matrix: name.to_string(),
         ring: kr.name(),
         mode: Mode::Principal,
-        mode_note: format!(
-            "{note}; transforms omitted because {why} (their coefficients are rational functions of resultant size): the invariant factors alone are certified; {last_note}"
-        ),
+        mode_note,
         algorithm,
         a: rows_of(a, false),
         invariant_factors: inv.iter().map(|e| kr.lmx(e)).collect(),
-        rank: n,
+        rank,
         d: rows_of(&d, false),
         u: None,
         v: None,
         verified: true,
-        certificate: checks,
+        certificate,
         invariant_factor_coefficients: Some(
             inv.iter()
                 .map(|f| f.coeffs().iter().map(|c| kr.k.lmx(c)).collect())
@@ -1054,7 +1076,7 @@ fn principal_form_only(
         ),
         denominator_free: None,
         latex,
-    })
+    }
 }
 
 /// Evaluates identities over Q(others)[λ] by clearing denominators: with

@@ -8,7 +8,7 @@
 //! square inputs take `modes`' det/adjugate route instead).
 
 use super::certify_several::certify_maximal_minors;
-use super::modes::{LatexForms, Mode, SmithOptions, SmithReport};
+use super::modes::{SmithOptions, SmithReport, principal_d_only_report};
 use crate::algebra::matrix::Matrix;
 use crate::algebra::polyring::PolyRing;
 use crate::algebra::ratfunc::{RatFunc, RatFuncField};
@@ -55,48 +55,27 @@ pub fn maximal_minors_report(
         ),
     );
     d.set(r - 1, r - 1, f);
-    let inv = d.diagonal();
-    let rows =
-        |x: &Matrix<PolyRing>, latex: bool| if latex { x.latex_rows() } else { x.lmx_rows() };
-    let drows = |latex: bool| if latex { d.latex_rows() } else { d.lmx_rows() };
-    let latex = opts.latex.then(|| LatexForms {
-        a: rows(a, true),
-        invariant_factors: inv.iter().map(|e| kr.latex(e)).collect(),
-        d: Some(drows(true)),
-        u: None,
-        v: None,
-    });
-    Some(SmithReport {
-        matrix: name.to_string(),
-        ring: kr.name(),
-        mode: Mode::Principal,
-        mode_note: format!(
-            "{note}; transforms omitted because {why}: the invariant factors alone are certified"
-        ),
-        algorithm: if last.is_nonzero_constant() {
-            format!(
-                "{r}×{r} minors over Q[all] by expansion; their gcd over Q(others)[λ] is 1 (images at a point mod p), so every invariant factor is 1"
-            )
-        } else {
-            format!(
-                "{r}×{r} minors over Q[all] by expansion; d_{r} = their gcd over Q(others)[λ] (the gcd over Q[all]; the quotients' gcd 1 from images at a point mod p), d_{} = 1 from smaller minors the same way; invariant factors 1, …, 1, d_{r}",
-                r - 1
-            )
-        },
-        a: rows(a, false),
-        invariant_factors: inv.iter().map(|e| kr.lmx(e)).collect(),
-        rank: r,
-        d: drows(false),
-        u: None,
-        v: None,
-        verified: true,
-        certificate: cert.checks,
-        invariant_factor_coefficients: Some(
-            inv.iter()
-                .map(|f| f.coeffs().iter().map(|c| kr.k.lmx(c)).collect())
-                .collect(),
-        ),
-        denominator_free: None,
-        latex,
-    })
+    let algorithm = if last.is_nonzero_constant() {
+        format!(
+            "{r}×{r} minors over Q[all] by expansion; their gcd over Q(others)[λ] is 1 (images at a point mod p), so every invariant factor is 1"
+        )
+    } else {
+        format!(
+            "{r}×{r} minors over Q[all] by expansion; d_{r} = their gcd over Q(others)[λ] (the gcd over Q[all]; the quotients' gcd 1 from images at a point mod p), d_{} = 1 from smaller minors the same way; invariant factors 1, …, 1, d_{r}",
+            r - 1
+        )
+    };
+    let mode_note = format!(
+        "{note}; transforms omitted because {why}: the invariant factors alone are certified"
+    );
+    Some(principal_d_only_report(
+        name,
+        a,
+        d,
+        r,
+        mode_note,
+        algorithm,
+        cert.checks,
+        opts,
+    ))
 }
