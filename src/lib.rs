@@ -20,6 +20,8 @@
 //!   ordered elimination), built from [`algebra`] and [`system`];
 //! * [`codegen`]: a language system → a standalone Rust solver module
 //!   (kernels as Rust functions, solved through [`plan`] and [`numeric`]);
+//! * [`report`]: the one report of a numerical solve (every file, one
+//!   entry [`report::solve`]) and its text, JSON, CSV and SVG;
 //! * [`cli`]: the `lambdamat` command line and its text/LaTeX/JSON reports.
 pub mod algebra;
 pub mod cli;
@@ -29,4 +31,5 @@ pub mod lang;
 pub mod numeric;
 pub mod plan;
 pub mod reduce;
+pub mod report;
 pub mod system;

@@ -271,7 +271,7 @@ fn text(s: &HertzResult, given_c: bool) -> String {
                 e.end_value,
                 pm(e.scalar.as_str())
             );
-            if let Some(line) = super::split::estimate_line(e) {
+            if let Some(line) = crate::report::text::estimate_line(e) {
                 let _ = writeln!(o, "  {line}");
             }
             if let Some(l) = &s.limit {
