@@ -247,7 +247,8 @@ impl<'b> Assembler<'b> {
         window: (f64, f64),
         row: &mut [f64],
     ) -> Result<(), NumericError> {
-        let (l0, h0) = limits.at(x);
+        let (l0, h0, sign) = limits.range_at(x);
+        let c = sign * c;
         let lo = l0.max(window.0);
         let hi = h0.min(window.1);
         if lo.partial_cmp(&hi) != Some(std::cmp::Ordering::Less) {

@@ -18,12 +18,12 @@ pub type Multiplier = Arc<dyn Fn(f64) -> f64 + Send + Sync>;
 /// The integration range of an integral term as a function of `x`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Limits {
-    /// `∫_x^b` (empty when `x ≥ b`).
+    /// `∫_x^b`, oriented: for `x > b` it is `-∫_b^x`.
     Upper {
         /// Upper end.
         b: f64,
     },
-    /// `∫_a^x` (empty when `x ≤ a`).
+    /// `∫_a^x`, oriented: for `x < a` it is `-∫_x^a`.
     Lower {
         /// Lower end.
         a: f64,
@@ -38,12 +38,24 @@ pub enum Limits {
 }
 
 impl Limits {
-    /// The range `[lo, hi]` at `x` (may be empty: `lo >= hi`).
+    /// The limits `(from, to)` at `x` as written: the integral is
+    /// `∫_from^to`, which is `-∫_to^from` when `from > to`.
     pub fn at(&self, x: f64) -> (f64, f64) {
         match *self {
             Limits::Upper { b } => (x, b),
             Limits::Lower { a } => (a, x),
             Limits::Fixed { a, b } => (a, b),
+        }
+    }
+
+    /// The range `[lo, hi]` (`lo ≤ hi`) at `x` and the orientation: the
+    /// integral is `sign · ∫_lo^hi`.
+    pub fn range_at(&self, x: f64) -> (f64, f64, f64) {
+        let (from, to) = self.at(x);
+        if from <= to {
+            (from, to, 1.0)
+        } else {
+            (to, from, -1.0)
         }
     }
 }

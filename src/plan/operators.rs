@@ -149,6 +149,7 @@ pub fn plan_operator(
                         }
                     }
                 };
+                let reversed = reversed_side(limits, domain);
                 let plan = match abel_parts(kernel) {
                     Some(parts) => {
                         let real = matches!(
@@ -156,10 +157,11 @@ pub fn plan_operator(
                             (_, AbelBase::Abs)
                                 | (Limits::Upper { .. }, AbelBase::TMinusX)
                                 | (Limits::Lower { .. }, AbelBase::XMinusT)
-                        );
+                        ) && (parts.base == AbelBase::Abs || reversed.is_none());
                         if !real {
+                            let range = reversed.as_deref().unwrap_or("on all of its range");
                             return Err(unsupported(format!(
-                                "kernel {kernel} is not real on all of its range (write abs(t^2 - x^2))"
+                                "kernel {kernel} is not real {range} (write abs(t^2 - x^2))"
                             )));
                         }
                         if *pv {
@@ -190,6 +192,15 @@ pub fn plan_operator(
                                     kernel: KernelPlan::Diagonal(Singularity::Smooth, smooth),
                                     written: kernel.clone(),
                                 });
+                            }
+                            if let (DiagonalClass::Power { side, .. }, Some(why)) =
+                                (class, &reversed)
+                                && side != 0
+                            {
+                                let fix = if side == 1 { "x - t" } else { "t - x" };
+                                return Err(unsupported(format!(
+                                    "kernel {kernel} is not real {why} (write abs({fix}))"
+                                )));
                             }
                             diagonal_plan(class, parts, limits, *pv, kernel).map_err(unsupported)?
                         }
@@ -223,6 +234,22 @@ pub fn plan_operator(
         out.extend(extra);
     }
     Ok(out)
+}
+
+/// Where an `int(a..x)` (`int(x..b)`) range is reversed on `domain`: for
+/// `x < a` (`x > b`) the integral is `-∫_x^a` (`-∫_b^x`), over which a
+/// one-sided base such as `x - t` is negative. `None` if `x` never passes
+/// the constant limit.
+fn reversed_side(limits: Limits, domain: (f64, f64)) -> Option<String> {
+    match limits {
+        Limits::Lower { a } if domain.0 < a => Some(format!(
+            "for x < {a}, where int({a}..x) is -int(x..{a}) and t > x"
+        )),
+        Limits::Upper { b } if domain.1 > b => Some(format!(
+            "for x > {b}, where int(x..{b}) is -int({b}..x) and t < x"
+        )),
+        _ => None,
+    }
 }
 
 /// The plan of a kernel with a recognised diagonal factor: the base must
@@ -284,7 +311,7 @@ fn peak_width(k: &Fn2, limits: Limits, domain: (f64, f64)) -> Option<f64> {
     let mut width = f64::INFINITY;
     for fx in [0.1, 0.37, 0.5, 0.71, 0.9] {
         let x = lo + fx * len;
-        let (l, h) = limits.at(x);
+        let (l, h, _) = limits.range_at(x);
         if !(x > l && x < h) {
             continue;
         }
@@ -320,7 +347,7 @@ fn check_regular(k: &Fn2, limits: Limits, domain: (f64, f64)) -> Result<(), Stri
     let mut scale = 0.0f64;
     for fx in xs {
         let x = lo + fx * (hi - lo);
-        let (l, h) = limits.at(x);
+        let (l, h, _) = limits.range_at(x);
         let (l, h) = (l.max(lo), h.min(hi));
         for ft in ts {
             let v = k(x, l + ft * (h - l));
@@ -331,7 +358,7 @@ fn check_regular(k: &Fn2, limits: Limits, domain: (f64, f64)) -> Result<(), Stri
     }
     for fx in xs {
         let x = lo + fx * (hi - lo);
-        let (l, h) = limits.at(x);
+        let (l, h, _) = limits.range_at(x);
         let (l, h) = (l.max(lo), h.min(hi));
         if l >= h {
             continue;

