@@ -10,7 +10,7 @@ use plotters::prelude::*;
 use serde_json::{Map, Value, json};
 
 use super::error::CliError;
-use super::output::{check_not_input, write_file};
+use super::output::{check_writable, write_file};
 use super::smith::{Source, load_with_source};
 use super::{SolveArgs, SolveFlags};
 use crate::plan::{CompiledSystem, Method, PlanError, SolveOptions, SolveReport, solve_system};
@@ -67,7 +67,7 @@ pub fn solve_and_report(
 ) -> Result<(), CliError> {
     check_flags(flags)?;
     for path in [&flags.csv, &flags.plot].into_iter().flatten() {
-        check_not_input(path, inputs)?;
+        check_writable(path, inputs)?;
     }
     let method: Method = flags.method.parse().map_err(CliError::Invalid)?;
     let opts = SolveOptions {
@@ -89,7 +89,7 @@ pub fn solve_and_report(
         write_text(&r, w)?;
     }
     for warning in &r.warnings {
-        eprintln!("warning: {warning}");
+        super::output::note(&format!("warning: {warning}"));
     }
     converged(&r)
 }
@@ -132,7 +132,7 @@ pub fn solver_main(system: fn() -> Result<CompiledSystem, PlanError>) -> i32 {
         Ok(c) => c,
         Err(code) => return code,
     };
-    let mut stdout = std::io::stdout().lock();
+    let mut stdout = super::output::Stdout::new();
     let result = system()
         .map_err(CliError::from)
         .and_then(|sys| solve_and_report(&sys, &cli.flags, &[], &mut stdout));

@@ -29,6 +29,14 @@ fn check_method(flags: &SolveFlags) -> Result<(), CliError> {
             "--method commutative: a split-domain file is solved as one collocation system on all its subintervals; the seed's single equations per subinterval are shown by `lambdamat reduce`".into(),
         ));
     }
+    if let Some(flag) = [("--csv", &flags.csv), ("--plot", &flags.plot)]
+        .into_iter()
+        .find_map(|(name, path)| path.as_ref().map(|_| name))
+    {
+        return Err(CliError::Invalid(format!(
+            "{flag}: a split-domain file's fields are not tabulated by `solve` (for the Hertz problem, `lambdamat hertz --csv FILE` or `--plot FILE.svg` writes them)"
+        )));
+    }
     Ok(())
 }
 
@@ -55,7 +63,7 @@ pub fn split_solver_main(input: fn() -> Result<SplitInput, PlanError>) -> i32 {
         Ok(c) => c,
         Err(code) => return code,
     };
-    let mut stdout = std::io::stdout().lock();
+    let mut stdout = super::output::Stdout::new();
     let result = super::solve::check_flags(&cli.flags)
         .and_then(|()| check_method(&cli.flags))
         .and_then(|()| input().map_err(CliError::from))
@@ -69,8 +77,10 @@ pub fn split_solver_main(input: fn() -> Result<SplitInput, PlanError>) -> i32 {
 pub fn require_converged(r: &SplitReport) -> Result<(), CliError> {
     if !r.converged {
         return Err(CliError::NotConverged(format!(
-            "split-domain solve: successive levels differ by {:.2e} > tol {:.1e} after {} levels",
-            r.error_estimate, r.tol, r.levels
+            "split-domain solve: the error estimate {:.2e} (level {}) is above the tolerance {:.1e}",
+            r.error_estimate,
+            r.levels.saturating_sub(1),
+            r.tol
         )));
     }
     Ok(())
