@@ -1,7 +1,8 @@
 //! The exit-code contract, command by command: 0 success and converged,
 //! 1 usage, 2 invalid input, 3 failed computation (tables and sweeps: some
 //! row failed, counted on stderr), 4 finished but not converged (result
-//! printed and marked). A closed standard output is a normal end (0, no
+//! printed and marked). A closed standard output does not change the exit
+//! code (`cli_flags.rs`: a closed output of a successful run ends with 0, no
 //! message), and every file a command writes is announced on stderr as
 //! `wrote FILE`. The messages themselves are pinned in `error_catalogue.rs`.
 

@@ -5,7 +5,7 @@ use std::io::Write;
 
 use super::CodegenArgs;
 use super::error::CliError;
-use super::output::{check_not_input, write_file};
+use super::output::{check_writable, write_file};
 use super::smith::load_with_source;
 use super::solve::located;
 use crate::codegen::{Provenance, solver_source};
@@ -20,7 +20,7 @@ use crate::plan::{CompiledSystem, SolveOptions, SplitInput, solve_system};
 /// (a numerical failure there is the generated solver's business).
 pub fn codegen_command(a: &CodegenArgs, w: &mut dyn Write) -> Result<(), CliError> {
     if let Some(path) = &a.output {
-        check_not_input(path, &[a.file.as_path()])?;
+        check_writable(path, &[a.file.as_path()])?;
     }
     let (prog, src) = load_with_source(&a.file)?;
     // The generated text depends on the source and `--for` only, not on

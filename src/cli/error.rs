@@ -12,8 +12,9 @@
 //! | 3 | a computation failed (for tables and sweeps: at least one row failed) |
 //! | 4 | finished but not converged: results printed and marked, tolerance not reached |
 //!
-//! A closed standard output (`lambdamat … | head`) is a normal end: exit 0,
-//! no message.
+//! A closed standard output (`lambdamat … | head`) or standard error does
+//! not change the exit code (see [`super::output::Stdout`]); messages to a
+//! closed standard error are dropped.
 
 use crate::algebra::smith::modes::SmithError;
 use crate::lang::LangErrors;
@@ -56,7 +57,7 @@ pub enum CliError {
     #[error(transparent)]
     Reduce(#[from] ReduceError),
     /// Writing to standard output failed (a closed pipe is not an error:
-    /// see [`CliError::exit_code`]).
+    /// [`super::output::Stdout`] drops the bytes).
     #[error("cannot write output: {0}")]
     Output(#[from] std::io::Error),
     /// A file named on the command line cannot be written (or would
@@ -101,7 +102,6 @@ impl CliError {
     /// not determine the unknown, and no computation failed.
     pub fn exit_code(&self) -> i32 {
         match self {
-            CliError::Output(e) if e.kind() == std::io::ErrorKind::BrokenPipe => EXIT_OK,
             CliError::Io { .. }
             | CliError::Lang(_)
             | CliError::Invalid(_)
@@ -119,16 +119,11 @@ impl CliError {
         }
     }
 
-    /// Whether this is the normal end of a run whose reader went away
-    /// (standard output closed): nothing is reported then.
-    pub fn is_closed_output(&self) -> bool {
-        matches!(self, CliError::Output(e) if e.kind() == std::io::ErrorKind::BrokenPipe)
-    }
-
     /// Prints the error to standard error.
     pub fn report(&self) {
+        use std::io::Write as _;
+        let mut err = std::io::stderr().lock();
         match self {
-            _ if self.is_closed_output() => {}
             CliError::Lang(errs) => {
                 let handler = if std::io::IsTerminal::is_terminal(&std::io::stderr()) {
                     miette::GraphicalReportHandler::new()
@@ -139,18 +134,20 @@ impl CliError {
                 };
                 for (i, one) in errs.split().iter().enumerate() {
                     if i > 0 {
-                        eprintln!();
+                        let _ = writeln!(err);
                     }
                     let mut out = String::new();
                     if !one.has_long_lines() && handler.render_report(&mut out, one).is_ok() {
-                        eprint!("{}", elide_long_numbers(&out));
+                        let _ = write!(err, "{}", elide_long_numbers(&out));
                     } else {
-                        eprint!("{}", one.render());
+                        let _ = write!(err, "{}", one.render());
                     }
                 }
-                eprintln!("{}", summary(errs.len()));
+                let _ = writeln!(err, "{}", summary(errs.len()));
             }
-            other => eprintln!("error: {}", elide_long_numbers(&other.to_string())),
+            other => {
+                let _ = writeln!(err, "error: {}", elide_long_numbers(&other.to_string()));
+            }
         }
     }
 }

@@ -6,9 +6,9 @@
 //! `examples/hertz*.lmx` and the general split-domain solver); this file
 //! only formats. The hand-written solver is not called here.
 
-use super::AFTER_HELP;
 use super::error::CliError;
-use super::output::write_file;
+use super::help_with_examples;
+use super::output::{check_writable, write_file};
 use crate::hertz::front::{
     DEFAULT_MAX_LEVEL, Given, HertzResult, Limit, Refusal, solve, solve_with_limit,
 };
@@ -29,16 +29,16 @@ pub struct HertzArgs {
     #[command(subcommand)]
     sub: Option<HertzSub>,
     /// Poisson's ratio ν, -1 < ν ≤ 1/2 (a stable isotropic solid).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     nu: Option<f64>,
     /// Stick radius c in (0, 1): find μ.
-    #[arg(long, conflicts_with = "mu", allow_negative_numbers = true)]
+    #[arg(long, conflicts_with = "mu", allow_hyphen_values = true)]
     c: Option<f64>,
     /// Friction coefficient μ ≥ 0: find c.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     mu: Option<f64>,
     /// Target accuracy (finite, > 0): refine until successive levels agree to this.
-    #[arg(long, default_value = "1e-10", allow_negative_numbers = true)]
+    #[arg(long, default_value = "1e-10", allow_hyphen_values = true)]
     tol: f64,
     /// Print one JSON object instead of text.
     #[arg(long)]
@@ -54,7 +54,9 @@ pub struct HertzArgs {
 #[derive(Subcommand, Debug)]
 enum HertzSub {
     /// The seed paper's Tables 1 and 2 beside our values (Markdown, or CSV with --csv).
-    #[command(after_help = AFTER_HELP)]
+    #[command(after_help = help_with_examples!(
+        "  lambdamat hertz table --table 2\n  lambdamat hertz table --csv --tol 1e-8"
+    ))]
     Table {
         /// Print one table as CSV instead of Markdown (table 1 unless --table 2).
         #[arg(long)]
@@ -63,11 +65,13 @@ enum HertzSub {
         #[arg(long, value_parser = clap::value_parser!(u8).range(1..=2))]
         table: Option<u8>,
         /// Target accuracy of our solves (finite, > 0).
-        #[arg(long, default_value = "1e-10", allow_negative_numbers = true)]
+        #[arg(long, default_value = "1e-10", allow_hyphen_values = true)]
         tol: f64,
     },
     /// Solve on a ν × μ grid in parallel; CSV (default) or JSON lines.
-    #[command(after_help = AFTER_HELP)]
+    #[command(after_help = help_with_examples!(
+        "  lambdamat hertz sweep --nu 0:0.5:3 --mu 0.1:1:4\n  lambdamat hertz sweep --nu 0.25:0.25:1 --mu log:0.01:100:5 --jsonl -o /tmp/sweep.jsonl"
+    ))]
     Sweep {
         /// ν range as START:END:COUNT within (-1, 1/2], e.g. -0.9:0.5:15 (END may be below START).
         #[arg(long, value_name = "START:END:COUNT", allow_hyphen_values = true)]
@@ -77,7 +81,7 @@ enum HertzSub {
         #[arg(long, value_name = "START:END:COUNT", allow_hyphen_values = true)]
         mu: String,
         /// Target accuracy of each solve (finite, > 0).
-        #[arg(long, default_value = "1e-10", allow_negative_numbers = true)]
+        #[arg(long, default_value = "1e-10", allow_hyphen_values = true)]
         tol: f64,
         /// Print JSON lines instead of CSV.
         #[arg(long)]
@@ -115,8 +119,27 @@ fn check_tol(tol: f64) -> Result<(), CliError> {
     }
 }
 
+/// Refuses `--set`: `hertz` takes its parameters as flags (`--nu`,
+/// `--mu`, `--c`); the language file behind it takes `--set` through
+/// `lambdamat solve examples/hertz.lmx`.
+fn refuse_set() -> Result<(), CliError> {
+    match super::overrides().first() {
+        None => Ok(()),
+        Some((name, value)) => {
+            let flag = match name.as_str() {
+                "nu" | "mu" | "c" => format!("--{name} {value}"),
+                _ => "--nu, --mu or --c".to_string(),
+            };
+            Err(CliError::Invalid(format!(
+                "--set {name}: `lambdamat hertz` takes no --set; give its parameters as {flag} (or run `lambdamat solve examples/hertz.lmx --set {name}={value}`)"
+            )))
+        }
+    }
+}
+
 /// `lambdamat hertz …`.
 pub fn hertz_command(a: &HertzArgs, w: &mut dyn Write) -> Result<(), CliError> {
+    refuse_set()?;
     match &a.sub {
         Some(HertzSub::Table {
             csv,
@@ -150,6 +173,9 @@ pub fn hertz_command(a: &HertzArgs, w: &mut dyn Write) -> Result<(), CliError> {
             ));
         }
     };
+    for path in [&a.csv, &a.plot].into_iter().flatten() {
+        check_writable(path, &[])?;
+    }
     let s = match solve_with_limit(nu, given, &opts) {
         Ok(s) => s,
         Err(Refusal { error, limit }) => {
@@ -309,9 +335,9 @@ fn text(s: &HertzResult, given_c: bool) -> String {
     );
     let _ = writeln!(
         o,
-        "  error estimate {:.1e} (successive refinement levels, {} levels, {} unknowns; tolerance {:.0e} {})",
+        "  error estimate {:.1e} (successive refinement levels, finest level {}, {} unknowns; tolerance {:.0e} {})",
         s.error_estimate,
-        s.levels,
+        s.levels.saturating_sub(1),
         s.unknowns,
         s.tol,
         if s.converged {
@@ -788,6 +814,9 @@ fn sweep(
     w: &mut dyn Write,
 ) -> Result<(), CliError> {
     check_tol(tol)?;
+    if let Some(p) = out {
+        check_writable(p, &[])?;
+    }
     let nus = parse_range(
         "nu",
         nu,
@@ -912,7 +941,7 @@ fn sweep(
         Some(p) => write_file(p, text.as_bytes(), &[], "")?,
         None => w.write_all(text.as_bytes())?,
     }
-    eprintln!("{}", sweep_summary(&rows));
+    super::output::note(&sweep_summary(&rows));
     tally.into_inner().unwrap_or_default().status("solves")
 }
 

@@ -74,21 +74,34 @@ fn parse_sets(sets: &[String]) -> Result<Vec<(String, num_rational::BigRational)
         .collect()
 }
 
-/// The text after every `--help`: the exit codes and where the documents are.
-pub const AFTER_HELP: &str = concat!(
-    "Exit codes: 0 success (every result reached its tolerance); 1 usage error; ",
-    "2 invalid input (file, parameter or path; with line:column where there is one; nothing computed); ",
-    "3 a computation failed (tables and sweeps: at least one row failed, the count is on stderr); ",
-    "4 finished but not converged (results printed and marked). ",
-    "A closed standard output (| head) ends with 0.\n",
-    "The language: docs/language.md (grammar/lambdamat.pest is its reference); ",
-    "the Hertz problem: docs/hertz.md."
+/// The text after every `--help` (the exit codes and where the documents
+/// are), followed by the command's examples: `help_with_examples!("…")`.
+macro_rules! help_with_examples {
+    ($examples:literal) => {
+        concat!(
+            "Exit codes: 0 success (every result reached its tolerance); 1 usage error; ",
+            "2 invalid input (file, parameter or path; with line:column where there is one; nothing computed); ",
+            "3 a computation failed (tables and sweeps: at least one row failed, the count is on stderr); ",
+            "4 finished but not converged (results printed and marked). ",
+            "A closed standard output or standard error does not change the exit code.\n",
+            "The language: docs/language.md (grammar/lambdamat.pest is its reference); ",
+            "the Hertz problem: docs/hertz.md.\n\n",
+            "Examples:\n",
+            $examples
+        )
+    };
+}
+pub(crate) use help_with_examples;
+
+/// The text after the top-level `--help`.
+pub const AFTER_HELP: &str = help_with_examples!(
+    "  lambdamat solve examples/mms.lmx\n  lambdamat hertz --nu 0.25 --mu 0.1801"
 );
 
 #[derive(Subcommand, Debug)]
 enum Command {
     /// Do everything the file asks for (its directives, in order).
-    #[command(after_help = AFTER_HELP)]
+    #[command(after_help = help_with_examples!("  lambdamat run examples/seed_lambda.lmx\n  lambdamat run examples/written_order.lmx --json"))]
     Run(RunArgs),
     /// Certified Smith normal form (U, D, V) of the file's matrices.
     ///
@@ -97,7 +110,7 @@ enum Command {
     /// --principal s): over Q(others)[s], plus a denominator-free form.
     /// Several symbols and no principal one: invariant factors over Q[all]
     /// from determinantal divisors (no U, V claimed: Q[all] is not a PID).
-    #[command(after_help = AFTER_HELP)]
+    #[command(after_help = help_with_examples!("  lambdamat smith examples/matrix_qx.lmx\n  lambdamat smith examples/seed_lambda.lmx --principal k1 --latex"))]
     Smith(SmithArgs),
     /// One equation for one unknown of the file's operator system.
     ///
@@ -107,19 +120,19 @@ enum Command {
     /// (non-commutative) elimination with explicit inverses, and the symbol
     /// pairs the eliminant had to commute. A singular λ-matrix is an error
     /// (exit code 2).
-    #[command(after_help = AFTER_HELP)]
+    #[command(after_help = help_with_examples!("  lambdamat reduce examples/hertz.lmx\n  lambdamat reduce examples/hertz_stick.lmx --for q"))]
     Reduce(ReduceArgs),
     /// The Hertz contact problem with finite friction, solved exactly (docs/hertz.md).
     ///
     /// `hertz --nu 0.25 --mu 0.1801` finds the stick radius c; `--c 0.5`
     /// finds μ instead. `hertz table` reproduces the seed paper's tables
     /// beside our values; `hertz sweep` solves a ν × μ grid in parallel.
-    #[command(after_help = AFTER_HELP)]
+    #[command(after_help = help_with_examples!("  lambdamat hertz --nu 0.25 --mu 0.1801\n  lambdamat hertz --nu 0 --c 0.5 --json"))]
     Hertz(hertz::HertzArgs),
     /// Solve the file's operator system numerically: unknowns on a grid,
     /// outputs, an error estimate and the commutator defects of the pairs
     /// an elimination commuted.
-    #[command(after_help = AFTER_HELP)]
+    #[command(after_help = help_with_examples!("  lambdamat solve examples/mms.lmx --method coupled --csv /tmp/mms.csv\n  lambdamat solve examples/hertz.lmx --set nu=0.25 --set mu=0.1801"))]
     Solve(SolveArgs),
     /// Write a standalone Rust solver for the file's operator system.
     ///
@@ -128,7 +141,7 @@ enum Command {
     /// solves through lambdamat's numeric layer, printing what `lambdamat
     /// solve` prints (same flags). Use it as an example or binary target of
     /// a crate that depends on lambdamat, or include it as a module.
-    #[command(after_help = AFTER_HELP)]
+    #[command(after_help = help_with_examples!("  lambdamat codegen examples/mms.lmx -o /tmp/mms_solver.rs"))]
     Codegen(CodegenArgs),
 }
 
@@ -152,10 +165,10 @@ pub struct SolveFlags {
     #[arg(long, value_parser = ["coupled", "ordered", "commutative"])]
     pub method: Option<String>,
     /// Refine until every error estimate (absolute, from successive levels) is within tol·max(1, |value|): absolute tolerance tol for values up to 1, relative above (finite, > 0).
-    #[arg(long, default_value = "1e-10", allow_negative_numbers = true)]
+    #[arg(long, default_value = "1e-10", allow_hyphen_values = true)]
     pub tol: f64,
-    /// Highest refinement level tried (at most 14).
-    #[arg(long, default_value_t = 8, allow_negative_numbers = true)]
+    /// Highest refinement level tried (levels are numbered from 0; at most 14).
+    #[arg(long, default_value_t = 8, allow_hyphen_values = true)]
     pub max_level: usize,
     /// Print one JSON object instead of text.
     #[arg(long)]
@@ -283,7 +296,7 @@ pub fn main() -> i32 {
         }
         Err(e) => return exit_code(Err(e)),
     }
-    let mut stdout = std::io::stdout().lock();
+    let mut stdout = output::Stdout::new();
     let result = match cli.command {
         Command::Run(a) => run::run(&a.file, &a.out, &mut stdout),
         Command::Smith(a) => smith::smith_command(&a, &mut stdout),

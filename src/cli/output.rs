@@ -4,7 +4,9 @@
 //! through [`write_file`], so the message, the refusal and the exit code of
 //! an unwritable path (2) are the same everywhere. It knows nothing about
 //! what the bytes mean. [`write_json`] is the one way `--json` documents
-//! reach standard output.
+//! reach standard output. [`check_writable`] checks every output path
+//! before any work; [`Stdout`] and [`note`] keep a closed standard output
+//! or standard error from changing the exit code.
 
 use std::path::Path;
 
@@ -44,6 +46,94 @@ pub fn check_not_input(path: &Path, inputs: &[&Path]) -> Result<(), CliError> {
     Ok(())
 }
 
+/// Checks, before any work, that `path` can be written: not one of
+/// `inputs`, not a directory, and its directory exists and accepts the
+/// file (tried by opening it for appending, or by creating and removing
+/// it, so nothing is truncated and no file is left behind).
+pub fn check_writable(path: &Path, inputs: &[&Path]) -> Result<(), CliError> {
+    check_not_input(path, inputs)?;
+    let refuse = |reason: String| CliError::Write {
+        path: path.display().to_string(),
+        reason,
+    };
+    if path.is_dir() {
+        return Err(refuse("it is a directory".into()));
+    }
+    if path.exists() {
+        std::fs::OpenOptions::new()
+            .append(true)
+            .open(path)
+            .map_err(|e| refuse(e.to_string()))?;
+        return Ok(());
+    }
+    std::fs::OpenOptions::new()
+        .write(true)
+        .create_new(true)
+        .open(path)
+        .map_err(|e| refuse(e.to_string()))?;
+    let _ = std::fs::remove_file(path);
+    Ok(())
+}
+
+/// Prints one line on standard error; a closed or failing standard error
+/// is ignored (a message must never turn an exit code into a panic).
+pub fn note(line: &str) {
+    use std::io::Write as _;
+    let _ = writeln!(std::io::stderr(), "{line}");
+}
+
+/// Standard output for a command's report. Once the reader has gone away
+/// (a broken pipe: `lambdamat … | head -1`) further bytes are dropped
+/// and the command runs on, so its exit code is that of its result.
+pub struct Stdout {
+    inner: std::io::StdoutLock<'static>,
+    closed: bool,
+}
+
+impl Stdout {
+    /// The locked standard output.
+    pub fn new() -> Self {
+        Stdout {
+            inner: std::io::stdout().lock(),
+            closed: false,
+        }
+    }
+}
+
+impl Default for Stdout {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl std::io::Write for Stdout {
+    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+        if self.closed {
+            return Ok(buf.len());
+        }
+        match self.inner.write(buf) {
+            Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => {
+                self.closed = true;
+                Ok(buf.len())
+            }
+            other => other,
+        }
+    }
+
+    fn flush(&mut self) -> std::io::Result<()> {
+        if self.closed {
+            return Ok(());
+        }
+        match self.inner.flush() {
+            Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => {
+                self.closed = true;
+                Ok(())
+            }
+            other => other,
+        }
+    }
+}
+
 /// Writes `bytes` to `path` (never over one of `inputs`) and reports
 /// `wrote PATH` (with `note`, if any) on standard error.
 pub fn write_file(path: &Path, bytes: &[u8], inputs: &[&Path], note: &str) -> Result<(), CliError> {
@@ -53,9 +143,9 @@ pub fn write_file(path: &Path, bytes: &[u8], inputs: &[&Path], note: &str) -> Re
         reason: e.to_string(),
     })?;
     if note.is_empty() {
-        eprintln!("wrote {}", path.display());
+        self::note(&format!("wrote {}", path.display()));
     } else {
-        eprintln!("wrote {} {note}", path.display());
+        self::note(&format!("wrote {} {note}", path.display()));
     }
     Ok(())
 }
@@ -93,6 +183,36 @@ mod tests {
         assert!(
             e.to_string()
                 .starts_with("cannot write /nonexistent/dir/x.csv")
+        );
+    }
+
+    #[test]
+    fn writable_paths_are_checked_without_leaving_files() {
+        let dir = tempfile::tempdir().expect("temp dir");
+        let new = dir.path().join("new.csv");
+        check_writable(&new, &[]).expect("creatable");
+        assert!(!new.exists(), "the check leaves no file behind");
+        std::fs::write(&new, "keep").expect("write");
+        check_writable(&new, &[]).expect("writable");
+        assert_eq!(std::fs::read_to_string(&new).expect("read"), "keep");
+        assert_eq!(
+            check_writable(&new, &[&new])
+                .expect_err("input")
+                .exit_code(),
+            2
+        );
+        assert_eq!(
+            check_writable(dir.path(), &[])
+                .expect_err("dir")
+                .exit_code(),
+            2
+        );
+        let missing = dir.path().join("missing").join("x.csv");
+        assert_eq!(
+            check_writable(&missing, &[])
+                .expect_err("no dir")
+                .exit_code(),
+            2
         );
     }
 }

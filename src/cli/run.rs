@@ -109,7 +109,7 @@ pub fn run(file: &PathBuf, out: &OutputArgs, w: &mut dyn Write) -> Result<(), Cl
                     r.write_text(w)?;
                 }
                 for warning in &r.warnings {
-                    eprintln!("warning: {warning}");
+                    super::output::note(&format!("warning: {warning}"));
                 }
                 if let Err(e) = solve::converged(&r) {
                     not_converged.get_or_insert(e);

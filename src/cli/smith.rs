@@ -147,10 +147,10 @@ fn timing(what: &str) {
         .ok()
         .and_then(|s| s.split_whitespace().next()?.parse::<f64>().ok())
         .map_or_else(|| "-".to_string(), |ns| format!("{:.3}", ns / 1e6));
-    eprintln!(
+    super::output::note(&format!(
         "[timings] cpu {cpu:>9} ms  wall {:9.3} ms  {what}",
         t0.elapsed().as_secs_f64() * 1e3
-    );
+    ));
 }
 
 /// The report of a `check smith A with U, D, V` directive.

@@ -8,7 +8,7 @@ use std::io::Write;
 use std::path::Path;
 
 use super::error::CliError;
-use super::output::{check_not_input, write_file};
+use super::output::{check_writable, write_file};
 use super::smith::{Source, load_with_source};
 use super::{SolveArgs, SolveFlags};
 use crate::plan::{CompiledSystem, Method, PlanError, SplitInput};
@@ -50,7 +50,7 @@ pub fn settings(flags: &SolveFlags) -> Result<SolveSettings, CliError> {
 /// `--csv` and `--plot` must not overwrite an input.
 fn check_outputs(flags: &SolveFlags, inputs: &[&Path]) -> Result<(), CliError> {
     for path in [&flags.csv, &flags.plot].into_iter().flatten() {
-        check_not_input(path, inputs)?;
+        check_writable(path, inputs)?;
     }
     Ok(())
 }
@@ -80,7 +80,7 @@ pub fn print(
         r.write_text(w)?;
     }
     for warning in &r.warnings {
-        eprintln!("warning: {warning}");
+        super::output::note(&format!("warning: {warning}"));
     }
     converged(r)
 }
@@ -126,7 +126,7 @@ fn generated_main(solve: impl FnOnce(&SolveSettings) -> Result<Report, CliError>
         Ok(c) => c,
         Err(code) => return code,
     };
-    let mut stdout = std::io::stdout().lock();
+    let mut stdout = super::output::Stdout::new();
     let result = settings(&cli.flags)
         .and_then(|s| check_outputs(&cli.flags, &[]).map(|()| s))
         .and_then(|s| solve(&s))
