@@ -26,21 +26,26 @@ impl Report {
             .and_then(Value::as_f64)
             .unwrap_or(f64::NAN);
         let size = match self.extra.get("domain").and_then(Value::as_array) {
-            Some(d) if d.len() == 2 => {
-                format!("{dim} coefficients per unknown on [{}, {}]", d[0], d[1])
-            }
+            Some(d) if d.len() == 2 => format!(
+                "{dim} coefficients per unknown on [{}, {}]",
+                d[0].as_f64().unwrap_or(f64::NAN),
+                d[1].as_f64().unwrap_or(f64::NAN)
+            ),
             _ => format!("{dim} coefficients"),
         };
-        writeln!(w, "levels: {}, {size}, condition ≈ {cond:.2e}", self.levels)?;
         writeln!(
             w,
-            "error estimates (absolute): largest {:.2e}, tolerance {:.1e}·max(1, |value|){}",
-            self.largest_estimate(),
+            "levels: {}, {size}, condition ≈ {cond:.2e}",
+            self.levels
+        )?;
+        writeln!(
+            w,
+            "tolerance {:.1e}·max(1, |value|) (estimates ± are absolute): {}",
             self.tol,
             if self.converged {
-                ""
+                "reached"
             } else {
-                " (not converged)"
+                "NOT reached (not converged)"
             }
         )?;
         for (kind, map) in [
