@@ -156,15 +156,20 @@ pub fn lower(file: &File, v: &Validated) -> Result<Program, LangError> {
                     rhs: fexpr(rhs, scope)?,
                 });
             }
-            Stmt::Output { name, body } => program.outputs.push(Output {
-                name: name.name.clone(),
-                terms: output_terms(body, scope)?,
-            }),
-            Stmt::Condition { lhs, rhs } if is_side_condition(lhs, scope) => {
-                program.side_conditions.push(SideCondition {
-                    terms: output_terms(lhs, scope)?,
-                    value: fexpr(rhs, scope)?,
+            Stmt::Output { name, body } => {
+                let terms = output_terms(body, scope)?;
+                finite_functional(&terms, &format!("output {}", name.name), body)?;
+                program.outputs.push(Output {
+                    name: name.name.clone(),
+                    terms,
                 })
+            }
+            Stmt::Condition { lhs, rhs } if is_side_condition(lhs, scope) => {
+                let terms = output_terms(lhs, scope)?;
+                finite_functional(&terms, "this condition", lhs)?;
+                let value = fexpr(rhs, scope)?;
+                finite_constant(&value, "the condition's value", rhs)?;
+                program.side_conditions.push(SideCondition { terms, value })
             }
             Stmt::Var(_)
             | Stmt::Param { .. }
@@ -391,6 +396,78 @@ fn scale_term(t: FunctionalTerm, f: impl Fn(SExpr) -> SExpr) -> FunctionalTerm {
             unknown,
         },
     }
+}
+
+/// Refuses a functional (an output or a side condition's left side)
+/// whose constants or weights are not finite doubles: `10^400`,
+/// `exp(1000)` or `pi^1000` would print NaN or infinity, so they are
+/// refused at `at` instead of computed.
+fn finite_functional(terms: &[FunctionalTerm], what: &str, at: &Expr) -> Result<(), LangError> {
+    for t in terms {
+        match t {
+            FunctionalTerm::Constant(c) | FunctionalTerm::Point { coeff: c, .. } => {
+                finite_constant(c, &format!("the constant factor {c} of {what}"), at)?
+            }
+            FunctionalTerm::Integral {
+                coeff,
+                lower,
+                upper,
+                weight,
+                ..
+            } => {
+                finite_constant(coeff, &format!("the constant factor {coeff} of {what}"), at)?;
+                let (a, b) = (
+                    lower.to_f64().unwrap_or(f64::NAN),
+                    upper.to_f64().unwrap_or(f64::NAN),
+                );
+                // Interior points only: an integrable end singularity of the
+                // weight is allowed.
+                for f in [0.013, 0.25, 0.5, 0.75, 0.987] {
+                    let x = a + f * (b - a);
+                    let v = weight.eval(x, x);
+                    if !v.is_finite() {
+                        return Err(not_finite(
+                            format!(
+                                "the weight {weight} of {what} is {v} at x = {x} (as a double): the output cannot be computed"
+                            ),
+                            at,
+                        ));
+                    }
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Refuses a constant that is not a finite double, or a nonzero exact
+/// constant that rounds to zero.
+fn finite_constant(c: &SExpr, what: &str, at: &Expr) -> Result<(), LangError> {
+    let v = c.eval(0.0, 0.0);
+    let underflow = matches!(c, SExpr::Const(q) if !q.is_zero()) && v == 0.0;
+    if v.is_finite() && !underflow {
+        return Ok(());
+    }
+    let why = if underflow {
+        "is below the smallest double and would be taken as 0".to_string()
+    } else {
+        format!("evaluates to {v} in double precision (some part of it overflows 1.8e308)")
+    };
+    Err(not_finite(
+        format!(
+            "{what} {why}: it is refused rather than printed as NaN; rescale it so every part stays within the range of doubles"
+        ),
+        at,
+    ))
+}
+
+fn not_finite(message: String, at: &Expr) -> LangError {
+    LangError::new(
+        ErrorKind::Unsupported,
+        message,
+        at.span,
+        "not a finite number",
+    )
 }
 
 /// An output body as a list of terms (every `+`, `-` at the top splits).
