@@ -20,8 +20,13 @@
 //!   ordered elimination), built from [`algebra`] and [`system`];
 //! * [`codegen`]: a language system → a standalone Rust solver module
 //!   (kernels as Rust functions, solved through [`plan`] and [`numeric`]);
+//! * [`api`]: the small entry point — [`Problem`] with its methods
+//!   `smith`, `reduce`, `codegen` and `solve`, their values and one
+//!   [`Error`] — re-exported here; the CLI and the Python package are its
+//!   clients;
 //! * [`cli`]: the `lambdamat` command line and its text/LaTeX/JSON reports.
 pub mod algebra;
+pub mod api;
 pub mod cli;
 pub mod codegen;
 pub mod hertz;
@@ -30,3 +35,8 @@ pub mod numeric;
 pub mod plan;
 pub mod reduce;
 pub mod system;
+
+pub use api::{
+    Error, ErrorKind, Field, Location, Method, Problem, Reduction, SmithForm, SmithOptions,
+    Solution, SolveOptions,
+};

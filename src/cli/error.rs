@@ -125,33 +125,51 @@ impl CliError {
         matches!(self, CliError::Output(e) if e.kind() == std::io::ErrorKind::BrokenPipe)
     }
 
-    /// Prints the error to standard error.
-    pub fn report(&self) {
+    /// What [`CliError::report`] prints when standard error is not a
+    /// terminal (no colours), as one string; a closed output is the empty
+    /// string. The library's [`crate::api::Error`] displays this.
+    pub fn plain_message(&self) -> String {
+        self.message(false)
+    }
+
+    /// The message, with colours for a terminal or without.
+    fn message(&self, colours: bool) -> String {
         match self {
-            _ if self.is_closed_output() => {}
+            _ if self.is_closed_output() => String::new(),
             CliError::Lang(errs) => {
-                let handler = if std::io::IsTerminal::is_terminal(&std::io::stderr()) {
+                let handler = if colours {
                     miette::GraphicalReportHandler::new()
                 } else {
                     miette::GraphicalReportHandler::new_themed(
                         miette::GraphicalTheme::unicode_nocolor(),
                     )
                 };
+                let mut text = String::new();
                 for (i, one) in errs.split().iter().enumerate() {
                     if i > 0 {
-                        eprintln!();
+                        text.push('\n');
                     }
                     let mut out = String::new();
                     if !one.has_long_lines() && handler.render_report(&mut out, one).is_ok() {
-                        eprint!("{}", elide_long_numbers(&out));
+                        text.push_str(&elide_long_numbers(&out));
                     } else {
-                        eprint!("{}", one.render());
+                        text.push_str(&one.render());
                     }
                 }
-                eprintln!("{}", summary(errs.len()));
+                text.push_str(&summary(errs.len()));
+                text.push('\n');
+                text
             }
-            other => eprintln!("error: {}", elide_long_numbers(&other.to_string())),
+            other => format!("error: {}\n", elide_long_numbers(&other.to_string())),
         }
+    }
+
+    /// Prints the error to standard error.
+    pub fn report(&self) {
+        eprint!(
+            "{}",
+            self.message(std::io::IsTerminal::is_terminal(&std::io::stderr()))
+        );
     }
 }
 
