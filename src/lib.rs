@@ -22,8 +22,13 @@
 //!   (kernels as Rust functions, solved through [`plan`] and [`numeric`]);
 //! * [`report`]: the one report of a numerical solve (every file, one
 //!   entry [`report::solve`]) and its text, JSON, CSV and SVG;
+//! * [`api`]: the small entry point — [`Problem`] with its methods
+//!   `smith`, `reduce`, `codegen` and `solve`, their values and one
+//!   [`Error`] — re-exported here; the CLI and the Python package are its
+//!   clients;
 //! * [`cli`]: the `lambdamat` command line and its text/LaTeX/JSON reports.
 pub mod algebra;
+pub mod api;
 pub mod cli;
 pub mod codegen;
 pub mod hertz;
@@ -33,3 +38,8 @@ pub mod plan;
 pub mod reduce;
 pub mod report;
 pub mod system;
+
+pub use api::{
+    Error, ErrorKind, Field, Location, Method, Problem, Reduction, SmithForm, SmithOptions,
+    Solution, SolveOptions,
+};

@@ -1,62 +1,24 @@
-//! The `codegen` command: parses the file and writes the Rust solver that
-//! [`crate::codegen`] generates, to a file or standard output. It owns the
+//! The `codegen` command: writes the Rust solver that
+//! [`crate::api::Problem::codegen`] generates, to a file or standard output. It owns the
 //! command's arguments and messages only.
 use std::io::Write;
 
 use super::CodegenArgs;
 use super::error::CliError;
 use super::output::{check_writable, write_file};
-use super::smith::load_with_source;
-use super::solve::located;
-use crate::codegen::{Provenance, solver_source};
-use crate::plan::split::SplitProblem;
-use crate::plan::{CompiledSystem, SolveOptions, SplitInput, solve_system};
+use super::read_source;
+use crate::api::Problem;
 
-/// `lambdamat codegen FILE [--for u] [-o solver.rs]`.
-///
-/// The system must pass the checks `lambdamat solve` makes on its input
-/// (kernels, right sides finite at the collocation points): a short solve on
-/// the first levels runs them, and only its input errors refuse the file
-/// (a numerical failure there is the generated solver's business).
+/// `lambdamat codegen FILE [--for u] [-o solver.rs]`: writes what
+/// [`crate::api::Problem::codegen`] returns.
 pub fn codegen_command(a: &CodegenArgs, w: &mut dyn Write) -> Result<(), CliError> {
     if let Some(path) = &a.output {
         check_writable(path, &[a.file.as_path()])?;
     }
-    let (prog, src) = load_with_source(&a.file)?;
-    // The generated text depends on the source and `--for` only, not on
-    // where it is written, so regenerating is reproducible.
-    let mut command = format!("lambdamat codegen {}", a.file.display());
-    if let Some(u) = &a.unknown {
-        command.push_str(&format!(" --for {u}"));
-    }
-    for (name, value) in super::overrides() {
-        command.push_str(&format!(" --set {name}={value}"));
-    }
-    command.push_str(" -o FILE.rs");
-    let from = Provenance {
-        source: a.file.display().to_string(),
-        command,
-    };
-    let code = solver_source(&prog, a.unknown.as_deref(), &from).map_err(|e| located(e, &src))?;
-    if prog.contact.is_split() {
-        // The split solver's input checks (intervals, scalars against
-        // conditions, operators) run when its problem is made.
-        SplitProblem::from_input(SplitInput::from_program(&prog).map_err(|e| located(e, &src))?)
-            .map_err(|e| located(e, &src))?;
-        return write_code(a, &code, w);
-    }
-    let sys =
-        CompiledSystem::from_program(&prog, a.unknown.as_deref()).map_err(|e| located(e, &src))?;
-    let quick = SolveOptions {
-        max_level: 2,
-        tol: 1.0,
-        ..SolveOptions::default()
-    };
-    if let Err(e) = solve_system(&sys, &quick)
-        && e.is_input_error()
-    {
-        return Err(located(e, &src));
-    }
+    let (text, name) = read_source(&a.file)?;
+    let code = Problem::with_sets(text, name, super::overrides().to_vec())
+        .and_then(|p| p.codegen(a.unknown.as_deref()))
+        .map_err(crate::api::Error::into_cli)?;
     write_code(a, &code, w)
 }
 

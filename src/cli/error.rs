@@ -119,36 +119,49 @@ impl CliError {
         }
     }
 
-    /// Prints the error to standard error.
-    pub fn report(&self) {
-        use std::io::Write as _;
-        let mut err = std::io::stderr().lock();
+    /// What [`CliError::report`] prints when standard error is not a
+    /// terminal (no colours), as one string. The library's [`crate::api::Error`] displays this.
+    pub fn plain_message(&self) -> String {
+        self.message(false)
+    }
+
+    /// The message, with colours for a terminal or without.
+    fn message(&self, colours: bool) -> String {
         match self {
             CliError::Lang(errs) => {
-                let handler = if std::io::IsTerminal::is_terminal(&std::io::stderr()) {
+                let handler = if colours {
                     miette::GraphicalReportHandler::new()
                 } else {
                     miette::GraphicalReportHandler::new_themed(
                         miette::GraphicalTheme::unicode_nocolor(),
                     )
                 };
+                let mut text = String::new();
                 for (i, one) in errs.split().iter().enumerate() {
                     if i > 0 {
-                        let _ = writeln!(err);
+                        text.push('\n');
                     }
                     let mut out = String::new();
                     if !one.has_long_lines() && handler.render_report(&mut out, one).is_ok() {
-                        let _ = write!(err, "{}", elide_long_numbers(&out));
+                        text.push_str(&elide_long_numbers(&out));
                     } else {
-                        let _ = write!(err, "{}", one.render());
+                        text.push_str(&one.render());
                     }
                 }
-                let _ = writeln!(err, "{}", summary(errs.len()));
+                text.push_str(&summary(errs.len()));
+                text.push('\n');
+                text
             }
-            other => {
-                let _ = writeln!(err, "error: {}", elide_long_numbers(&other.to_string()));
-            }
+            other => format!("error: {}\n", elide_long_numbers(&other.to_string())),
         }
+    }
+
+    /// Prints the error to standard error.
+    pub fn report(&self) {
+        use std::io::Write as _;
+        let text = self.message(std::io::IsTerminal::is_terminal(&std::io::stderr()));
+        // A closed standard error must not turn the exit code into a panic.
+        let _ = std::io::stderr().lock().write_all(text.as_bytes());
     }
 }
 

@@ -5,40 +5,27 @@
 
 use super::error::CliError;
 use super::render::{checks, matrix};
-use super::smith::load;
 use super::{OutputArgs, ReduceArgs};
 use crate::algebra::print::latex_name;
 use crate::reduce::expand::{sum_latex, sum_text};
-use crate::reduce::{Reduction, StepsForm, choose_unknown, reduce};
+use crate::reduce::{Reduction, StepsForm, reduce};
 use serde_json::{Value, json};
 use std::fmt::Write as _;
 use std::io::Write;
 
-/// `lambdamat reduce FILE [--for u] [--json] [--latex]`.
+/// `lambdamat reduce FILE [--for u] [--json] [--latex]`: prints what
+/// [`crate::api::Problem::reduce`] returns.
 pub fn reduce_command(a: &ReduceArgs, w: &mut dyn Write) -> Result<(), CliError> {
-    let p = load(&a.file)?;
-    if p.contact.is_split() {
-        return reduce_split(&p, a, w);
-    }
-    let u = choose_unknown(&p, a.unknown.as_deref())?;
-    let r = reduce(&p, u)?;
-    print_reduction(&r, &a.out, w)
-}
-
-/// `reduce` of a split-domain file: one reduction per subinterval (with the
-/// relations of that subinterval substituted), for the chosen unknown
-/// where it is free, else for the first free unknown.
-fn reduce_split(
-    p: &crate::system::Program,
-    a: &ReduceArgs,
-    w: &mut dyn Write,
-) -> Result<(), CliError> {
-    let u = choose_unknown(p, a.unknown.as_deref())?;
-    let list = split_reductions(p, u)?;
+    let (text, name) = super::read_source(&a.file)?;
+    let r = crate::api::Problem::with_sets(text, name, super::overrides().to_vec())
+        .and_then(|p| p.reduce(a.unknown.as_deref()))
+        .map_err(crate::api::Error::into_cli)?;
     if a.out.json {
-        super::output::write_json(w, &split_json(&list))?;
+        writeln!(w, "{}", r.to_json())?;
+    } else if a.out.latex {
+        write!(w, "{}", r.latex())?;
     } else {
-        write!(w, "{}", split_text(&list, a.out.latex))?;
+        write!(w, "{}", r.text())?;
     }
     Ok(())
 }

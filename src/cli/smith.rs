@@ -9,7 +9,8 @@ use crate::algebra::polyring::PolyRing;
 use crate::algebra::smith::modes::{
     CheckReport, PhaseHook, SmithOptions, SmithReport, check_decomposition, smith_report,
 };
-use crate::lang::{Directive, MatrixDef, Program, parse_program};
+use crate::api::Problem;
+use crate::lang::{MatrixDef, Program};
 use std::io::Write;
 
 /// A matrix definition as a matrix over Q[symbols].
@@ -38,52 +39,18 @@ pub struct Source {
 }
 
 /// [`load`], keeping the text so that later errors can point into it.
+/// The file is read and validated by [`crate::api::Problem`].
 pub fn load_with_source(path: &std::path::PathBuf) -> Result<(Program, Source), CliError> {
     let (text, name) = read_source(path)?;
-    let sets = super::overrides();
-    if sets.is_empty() {
-        let p = parse_program(&text, &name).map_err(|e| CliError::Lang(Box::new(e)))?;
-        return Ok((p, Source { text, name }));
-    }
-    let ast = crate::lang::parse_ast(&text, &name).map_err(|e| CliError::Lang(Box::new(e)))?;
-    let names = crate::lang::param_names(&ast);
-    for (n, _) in sets {
-        if !names.contains(n) {
-            return Err(CliError::Invalid(format!(
-                "--set {n}: {name} defines no parameter `{n}` (parameters: {})",
-                if names.is_empty() {
-                    "none".to_string()
-                } else {
-                    names.join(", ")
-                }
-            )));
-        }
-    }
-    let p = crate::lang::parse_program_with(&text, &name, sets)
-        .map_err(|e| CliError::Lang(Box::new(e)))?;
+    let problem = Problem::with_sets(text, name, super::overrides().to_vec())
+        .map_err(crate::api::Error::into_cli)?;
+    let (p, text, name) = problem.into_parts();
     Ok((p, Source { text, name }))
 }
 
 /// Resolves `--principal` against the file's symbols (the flag wins).
 pub fn principal(p: &Program, flag: Option<&str>) -> Result<Option<usize>, CliError> {
-    match flag {
-        None => Ok(p.principal),
-        Some(s) => p
-            .symbols
-            .iter()
-            .position(|n| n == s)
-            .map(Some)
-            .ok_or_else(|| {
-                CliError::Invalid(format!(
-                    "--principal {s}: no such symbol in the file (declared: {})",
-                    if p.symbols.is_empty() {
-                        "none".to_string()
-                    } else {
-                        p.symbols.join(", ")
-                    }
-                ))
-            }),
-    }
+    crate::api::principal_of(p, flag).map_err(crate::api::Error::into_cli)
 }
 
 /// The Smith report of matrix number `idx`.
@@ -94,13 +61,24 @@ pub fn report(
     latex: bool,
 ) -> Result<SmithReport, CliError> {
     let m = &p.matrices[idx];
+    report_of(&m.name, &to_matrix(&p.symbols, m), principal, latex)
+}
+
+/// The Smith report of `a` (named `name`), with a spinner naming the
+/// phases on a terminal.
+fn report_of(
+    name: &str,
+    a: &Matrix<PolyRing>,
+    principal: Option<usize>,
+    latex: bool,
+) -> Result<SmithReport, CliError> {
     let spinner = std::io::IsTerminal::is_terminal(&std::io::stderr()).then(|| {
         let bar = indicatif::ProgressBar::new_spinner();
         bar.set_style(
             indicatif::ProgressStyle::with_template("{spinner} {prefix}: {msg} ({elapsed})")
                 .unwrap_or_else(|_| indicatif::ProgressStyle::default_spinner()),
         );
-        bar.set_prefix(format!("smith {}", m.name));
+        bar.set_prefix(format!("smith {name}"));
         bar.enable_steady_tick(std::time::Duration::from_millis(200));
         bar
     });
@@ -124,7 +102,7 @@ pub fn report(
         latex,
         progress: PhaseHook(hook),
     };
-    let r = smith_report(&m.name, &to_matrix(&p.symbols, m), &opts);
+    let r = smith_report(name, a, &opts);
     if let Some(bar) = spinner {
         bar.finish_and_clear();
     }
@@ -173,55 +151,29 @@ pub fn print_report(r: &SmithReport, out: &OutputArgs, w: &mut dyn Write) -> Res
     Ok(())
 }
 
-/// `lambdamat smith FILE`.
+/// `lambdamat smith FILE`: the matrices [`Problem::smith`] would choose
+/// (every one the file asks for, or the λ-matrix of its operator system).
 pub fn smith_command(a: &SmithArgs, w: &mut dyn Write) -> Result<(), CliError> {
     let timings = timings_enabled();
     if timings {
         timing("parsing and lowering");
     }
-    let p = load(&a.file)?;
-    let principal = principal(&p, a.principal.as_deref())?;
-    let targets: Vec<usize> = match &a.matrix {
-        Some(name) => vec![
-            p.matrices
-                .iter()
-                .position(|m| &m.name == name)
-                .ok_or_else(|| {
-                    CliError::Invalid(format!(
-                        "--matrix {name}: no such matrix in the file (defined: {})",
-                        p.matrices
-                            .iter()
-                            .map(|m| m.name.as_str())
-                            .collect::<Vec<_>>()
-                            .join(", ")
-                    ))
-                })?,
-        ],
-        None => {
-            let from_directives: Vec<usize> = p
-                .directives
-                .iter()
-                .filter_map(|d| match d {
-                    Directive::Smith { matrix } => Some(*matrix),
-                    _ => None,
-                })
-                .collect();
-            if from_directives.is_empty() {
-                (0..p.matrices.len()).collect()
-            } else {
-                from_directives
-            }
-        }
+    let (text, name) = read_source(&a.file)?;
+    let problem = Problem::with_sets(text, name, super::overrides().to_vec())
+        .map_err(crate::api::Error::into_cli)?;
+    let opts = crate::api::SmithOptions {
+        principal: a.principal.clone(),
+        matrix: a.matrix.clone(),
     };
-    if targets.is_empty() {
-        return Err(CliError::Invalid(format!(
-            "{}: the file defines no matrix",
-            a.file.display()
-        )));
-    }
+    let targets = problem
+        .smith_targets(&opts)
+        .map_err(crate::api::Error::into_cli)?;
+    let principal = problem
+        .principal(&opts)
+        .map_err(crate::api::Error::into_cli)?;
     let reports = targets
         .iter()
-        .map(|&i| report(&p, i, principal, a.out.latex))
+        .map(|(name, m)| report_of(name, m, principal, a.out.latex))
         .collect::<Result<Vec<_>, _>>()?;
     if timings {
         timing("printing");

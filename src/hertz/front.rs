@@ -704,11 +704,11 @@ pub fn program(src: Source, sets: &[(&str, f64)]) -> Result<Program, PlanError> 
 }
 
 /// Parameter settings `(name, value)` for [`program`].
-type Sets = Vec<(&'static str, f64)>;
+pub(crate) type Sets = Vec<(&'static str, f64)>;
 
 /// Which file runs for `(ν, given)` and with which parameters, after the
 /// physical ranges are checked (bad input is [`PlanError::Invalid`]).
-fn plan(nu: f64, given: Given) -> Result<(Source, Sets), PlanError> {
+pub(crate) fn plan(nu: f64, given: Given) -> Result<(Source, Sets), PlanError> {
     if !(nu > -1.0 && nu <= 0.5) {
         return Err(invalid(format!(
             "Poisson's ratio ν = {nu} is outside (-1, 1/2]: a stable isotropic solid has -1 < ν ≤ 1/2"

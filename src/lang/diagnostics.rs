@@ -28,6 +28,11 @@ impl LangErrors {
         }
     }
 
+    /// The name of the file the errors are in.
+    pub fn filename(&self) -> &str {
+        self.source.name()
+    }
+
     /// The number of errors.
     pub fn len(&self) -> usize {
         self.errors.len()

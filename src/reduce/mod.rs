@@ -115,7 +115,8 @@ pub struct Printed {
 }
 
 impl Printed {
-    fn of(node: &Node) -> Printed {
+    /// `node` in the three notations.
+    pub(crate) fn of(node: &Node) -> Printed {
         Printed {
             text: print(node, PrintOptions::TEXT),
             latex: print(node, PrintOptions::LATEX),

@@ -1,0 +1,949 @@
+//! The library's small entry point: a [`Problem`] is one parsed, validated
+//! source file, and everything the command line does with a file is a
+//! method on it — [`Problem::smith`], [`Problem::reduce`],
+//! [`Problem::codegen`], [`Problem::solve`] — returning values
+//! ([`SmithForm`], [`Reduction`], [`Solution`]) that print through the
+//! crate's one printer, and one [`Error`] whose kind mirrors the command
+//! line's exit codes. The CLI's `smith`, `reduce` and `codegen` commands
+//! and the Python package (`python/`) are clients of this module. It owns
+//! the choices a command makes before the work (which matrix, which
+//! unknown, which parameters are set) and delegates the work itself.
+//!
+//! ```
+//! use lambdamat::{Problem, SolveOptions};
+//! let p = Problem::from_source(
+//!     "unknown f on [0, 1]\noperator k = int(0..x) dt\nequation f + k f = 1\noutput F = int(0..1) f(x) dx",
+//!     "ex.lmx",
+//! )?;
+//! let s = p.solve(&SolveOptions::default())?;
+//! assert!(s.converged);
+//! // f = exp(-x), so F = 1 - 1/e
+//! assert!((s.outputs["F"] - (1.0 - (-1.0f64).exp())).abs() <= s.error_estimates["F"] + 1e-12);
+//! # Ok::<(), lambdamat::Error>(())
+//! ```
+
+use std::collections::BTreeMap;
+use std::path::Path;
+
+use num_rational::BigRational;
+use serde_json::Value;
+
+use crate::algebra::matrix::Matrix;
+use crate::algebra::polyring::PolyRing;
+use crate::algebra::smith::modes::{self, SmithReport};
+use crate::cli::error::CliError;
+pub use crate::hertz::front::Given;
+use crate::lang::Directive;
+pub use crate::plan::Method;
+use crate::plan::{CompiledSystem, PlanError, SplitInput, SplitOptions};
+use crate::system::Program;
+
+/// What kind of failure an [`Error`] is; each kind is one of the command
+/// line's exit codes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ErrorKind {
+    /// Invalid input: the text, a parameter, an option or a path (exit 2);
+    /// nothing was computed.
+    InvalidInput,
+    /// A computation refused or failed, naming the cause (exit 3).
+    ComputationFailed,
+}
+
+/// A place in a source file an [`Error`] points at (1-based).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Location {
+    /// The file name as given to [`Problem::from_source`] or
+    /// [`Problem::from_file`].
+    pub file: String,
+    /// Line, from 1.
+    pub line: usize,
+    /// Column in characters, from 1.
+    pub column: usize,
+}
+
+/// Why a [`Problem`] method failed. Its `Display` is the message the
+/// command line prints on standard error for the same failure (plain
+/// text, with `file:line:column` and a caret for source errors).
+///
+/// ```
+/// use lambdamat::{ErrorKind, Problem};
+/// let e = Problem::from_source("var x\nmatrix A = [y]", "a.lmx").unwrap_err();
+/// assert_eq!(e.kind(), ErrorKind::InvalidInput);
+/// assert_eq!(e.exit_code(), 2);
+/// assert_eq!((e.locations()[0].line, e.locations()[0].column), (2, 13));
+/// assert!(e.to_string().contains("a.lmx:2:13"));
+/// ```
+#[derive(Debug)]
+pub struct Error(CliError);
+
+impl Error {
+    /// The kind (invalid input or failed computation).
+    pub fn kind(&self) -> ErrorKind {
+        if self.exit_code() == crate::cli::error::EXIT_FAILED {
+            ErrorKind::ComputationFailed
+        } else {
+            ErrorKind::InvalidInput
+        }
+    }
+
+    /// The exit code `lambdamat` ends with for this error: 2 or 3.
+    pub fn exit_code(&self) -> i32 {
+        match self.0.exit_code() {
+            crate::cli::error::EXIT_FAILED => crate::cli::error::EXIT_FAILED,
+            _ => crate::cli::error::EXIT_INVALID,
+        }
+    }
+
+    /// The source places the error points at (empty when it names none).
+    pub fn locations(&self) -> Vec<Location> {
+        match &self.0 {
+            CliError::Lang(errs) => errs
+                .errors()
+                .iter()
+                .map(|e| {
+                    let (line, column) = errs.line_col(e.span);
+                    Location {
+                        file: errs.filename().to_string(),
+                        line,
+                        column,
+                    }
+                })
+                .collect(),
+            _ => Vec::new(),
+        }
+    }
+
+    /// The command line's error, for the CLI's own reporting.
+    pub(crate) fn into_cli(self) -> CliError {
+        self.0
+    }
+}
+
+impl From<CliError> for Error {
+    fn from(e: CliError) -> Error {
+        Error(e)
+    }
+}
+
+impl From<PlanError> for Error {
+    fn from(e: PlanError) -> Error {
+        Error(CliError::Plan(e))
+    }
+}
+
+impl std::fmt::Display for Error {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.0.plain_message().trim_end())
+    }
+}
+
+impl std::error::Error for Error {}
+
+fn invalid(msg: String) -> Error {
+    Error(CliError::Invalid(msg))
+}
+
+/// Reads `NAME=VALUE` settings as `--set` does: the value is an integer, a
+/// decimal (`0.1801`, read as the exact rational 1801/10000) or a
+/// fraction (`1/4`).
+///
+/// ```
+/// let s = lambdamat::api::parse_sets(&[("nu".into(), "0.25".into())])?;
+/// assert_eq!(s[0].1.to_string(), "1/4");
+/// # Ok::<(), lambdamat::Error>(())
+/// ```
+pub fn parse_sets(set: &[(String, String)]) -> Result<Vec<(String, BigRational)>, Error> {
+    set.iter()
+        .map(|(n, v)| {
+            let value = crate::lang::parser::parse_exact(v.trim()).ok_or_else(|| {
+                invalid(format!(
+                    "--set {n}={v}: `{v}` is not an exact number (write an integer, a decimal such as 0.1801, or a fraction such as 1/4)"
+                ))
+            })?;
+            Ok((n.trim().to_string(), value))
+        })
+        .collect()
+}
+
+/// One source file, parsed and validated (with its parameters set).
+///
+/// ```
+/// use lambdamat::Problem;
+/// let p = Problem::from_source("param a = 1/2\nvar x\nmatrix A = [x, a; 0, x]", "m.lmx")?;
+/// assert_eq!(p.params(), vec![("a".to_string(), "1/2".to_string())]);
+/// # Ok::<(), lambdamat::Error>(())
+/// ```
+#[derive(Clone, Debug)]
+pub struct Problem {
+    program: Program,
+    text: String,
+    name: String,
+    sets: Vec<(String, BigRational)>,
+}
+
+impl Problem {
+    /// Parses and validates `text`, shown as `name` in messages.
+    pub fn from_source(text: &str, name: &str) -> Result<Problem, Error> {
+        Problem::with_sets(text.to_string(), name.to_string(), Vec::new())
+    }
+
+    /// Reads, parses and validates the file at `path`.
+    ///
+    /// ```
+    /// let p = lambdamat::Problem::from_file("examples/hertz.lmx")?;
+    /// assert_eq!(p.params()[0], ("nu".to_string(), "1/4".to_string()));
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
+    pub fn from_file(path: impl AsRef<Path>) -> Result<Problem, Error> {
+        let (text, name) = crate::cli::read_source(&path.as_ref().to_path_buf())?;
+        Problem::with_sets(text, name, Vec::new())
+    }
+
+    /// The same source with parameters set (each replaces the parameter's
+    /// definition before validation, as `--set` does). A name that is
+    /// not a parameter of the file is invalid input.
+    ///
+    /// ```
+    /// let p = lambdamat::Problem::from_source("param a = 1\nvar x\nmatrix A = [a*x]", "m.lmx")?;
+    /// let q = p.with_set(&[("a".into(), "3/2".into())])?;
+    /// assert_eq!(q.params()[0].1, "3/2");
+    /// assert!(p.with_set(&[("b".into(), "1".into())]).is_err());
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
+    pub fn with_set(&self, set: &[(String, String)]) -> Result<Problem, Error> {
+        let mut sets = self.sets.clone();
+        sets.extend(parse_sets(set)?);
+        Problem::with_sets(self.text.clone(), self.name.clone(), sets)
+    }
+
+    /// `text` with the exact settings `sets` (names checked against the
+    /// file's parameters).
+    pub(crate) fn with_sets(
+        text: String,
+        name: String,
+        sets: Vec<(String, BigRational)>,
+    ) -> Result<Problem, Error> {
+        let lang = |e| Error(CliError::Lang(Box::new(e)));
+        if !sets.is_empty() {
+            let ast = crate::lang::parse_ast(&text, &name).map_err(lang)?;
+            let names = crate::lang::param_names(&ast);
+            for (n, _) in &sets {
+                if !names.contains(n) {
+                    return Err(invalid(format!(
+                        "--set {n}: {name} defines no parameter `{n}` (parameters: {})",
+                        if names.is_empty() {
+                            "none".to_string()
+                        } else {
+                            names.join(", ")
+                        }
+                    )));
+                }
+            }
+        }
+        let program = crate::lang::parse_program_with(&text, &name, &sets).map_err(lang)?;
+        Ok(Problem {
+            program,
+            text,
+            name,
+            sets,
+        })
+    }
+
+    /// The lowered program, the text and the name (for the command line).
+    pub(crate) fn into_parts(self) -> (Program, String, String) {
+        (self.program, self.text, self.name)
+    }
+
+    /// The name the source is shown under.
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+
+    /// The source text (without the settings of [`Problem::with_set`]).
+    pub fn source(&self) -> &str {
+        &self.text
+    }
+
+    /// The parameters in definition order: each name and its value as
+    /// written in the file (or as set by [`Problem::with_set`], printed
+    /// exactly).
+    pub fn params(&self) -> Vec<(String, String)> {
+        let text = crate::lang::strip_bom(&self.text);
+        let Ok(ast) = crate::lang::parse_ast(text, &self.name) else {
+            return Vec::new();
+        };
+        ast.statements
+            .iter()
+            .filter_map(|s| match &s.kind {
+                crate::lang::ast::Stmt::Param { name, value } => {
+                    let set = self.sets.iter().rev().find(|(n, _)| *n == name.name);
+                    let shown = match set {
+                        Some((_, v)) => v.to_string(),
+                        None => text
+                            .get(value.span.start..value.span.end)
+                            .unwrap_or_default()
+                            .to_string(),
+                    };
+                    Some((name.name.clone(), shown))
+                }
+                _ => None,
+            })
+            .collect()
+    }
+
+    /// The matrices [`Problem::smith`] decomposes: `(name, matrix)` for
+    /// the matrix `opts.matrix`, else the file's `smith` directives, else
+    /// every matrix, else the λ-matrix of the operator system (named `A`).
+    pub(crate) fn smith_targets(
+        &self,
+        opts: &SmithOptions,
+    ) -> Result<Vec<(String, Matrix<PolyRing>)>, Error> {
+        let p = &self.program;
+        let as_matrix = |m: &crate::lang::MatrixDef| {
+            Matrix::new(
+                PolyRing::new(p.symbols.clone()),
+                m.rows,
+                m.cols,
+                m.entries.clone(),
+            )
+        };
+        if let Some(name) = &opts.matrix {
+            let m = p.matrices.iter().find(|m| &m.name == name).ok_or_else(|| {
+                invalid(format!(
+                    "--matrix {name}: no such matrix in the file (defined: {})",
+                    if p.matrices.is_empty() {
+                        "none".to_string()
+                    } else {
+                        p.matrices
+                            .iter()
+                            .map(|m| m.name.as_str())
+                            .collect::<Vec<_>>()
+                            .join(", ")
+                    }
+                ))
+            })?;
+            return Ok(vec![(m.name.clone(), as_matrix(m))]);
+        }
+        let from_directives: Vec<usize> = p
+            .directives
+            .iter()
+            .filter_map(|d| match d {
+                Directive::Smith { matrix } => Some(*matrix),
+                _ => None,
+            })
+            .collect();
+        let chosen: Vec<usize> = if from_directives.is_empty() {
+            (0..p.matrices.len()).collect()
+        } else {
+            from_directives
+        };
+        if !chosen.is_empty() {
+            return Ok(chosen
+                .into_iter()
+                .map(|i| (p.matrices[i].name.clone(), as_matrix(&p.matrices[i])))
+                .collect());
+        }
+        if p.equations.is_empty() {
+            return Err(invalid(format!(
+                "{}: the file defines no matrix and no operator system",
+                self.name
+            )));
+        }
+        let a = p.lambda_matrix();
+        Ok(vec![(a.name.clone(), as_matrix(&a))])
+    }
+
+    /// The principal symbol's index: `opts.principal`, else the file's
+    /// `principal` line.
+    pub(crate) fn principal(&self, opts: &SmithOptions) -> Result<Option<usize>, Error> {
+        principal_of(&self.program, opts.principal.as_deref())
+    }
+
+    /// The certified Smith form of the file's matrix (the one named by
+    /// `opts.matrix`, else the first the file asks for with `smith`, else
+    /// its first matrix) or, when it defines none, of the λ-matrix of its
+    /// operator system. The decomposition is certified before it is
+    /// returned; a failed certificate is an error, never a result.
+    ///
+    /// ```
+    /// use lambdamat::{Problem, SmithOptions};
+    /// let p = Problem::from_source("var x\nmatrix A = [x, 1; 0, x]", "m.lmx")?;
+    /// let s = p.smith(&SmithOptions::default())?;
+    /// assert_eq!(s.invariant_factors(), &["1".to_string(), "x^2".to_string()]);
+    /// assert!(s.verified());
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
+    pub fn smith(&self, opts: &SmithOptions) -> Result<SmithForm, Error> {
+        let mut all = self.smith_targets(opts)?;
+        let principal = self.principal(opts)?;
+        let (name, m) = all.swap_remove(0);
+        SmithForm::compute(&name, &m, principal, &modes::PhaseHook::default())
+    }
+
+    /// The reduction of the operator system for `target` (an unknown's
+    /// name; default the file's `solve for`, else the first unknown): the
+    /// commutative eliminant, the ordered form and the commuted pairs.
+    ///
+    /// ```
+    /// let p = lambdamat::Problem::from_file("examples/generic3.lmx")?;
+    /// let r = p.reduce(None)?;
+    /// assert!(!r.eliminant().lmx.is_empty());
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
+    pub fn reduce(&self, target: Option<&str>) -> Result<Reduction, Error> {
+        let p = &self.program;
+        let u = crate::reduce::choose_unknown(p, target).map_err(|e| Error(e.into()))?;
+        if p.contact.is_split() {
+            let pieces = crate::cli::reduce::split_reductions(p, u)?;
+            return Ok(Reduction {
+                pieces: pieces
+                    .into_iter()
+                    .map(|(piece, r)| (Some(piece), r))
+                    .collect(),
+            });
+        }
+        let r = crate::reduce::reduce(p, u).map_err(|e| Error(e.into()))?;
+        Ok(Reduction {
+            pieces: vec![(None, r)],
+        })
+    }
+
+    /// The Rust source of a standalone solver for the system, solving for
+    /// `target` (default as in [`Problem::reduce`]): what `lambdamat
+    /// codegen` writes. The system must pass the input checks `solve`
+    /// makes (a short solve on the first levels runs them; only their
+    /// input errors refuse it).
+    ///
+    /// ```
+    /// let p = lambdamat::Problem::from_file("examples/mms.lmx")?;
+    /// let code = p.codegen(None)?;
+    /// assert!(code.contains("fn main"));
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
+    pub fn codegen(&self, target: Option<&str>) -> Result<String, Error> {
+        let mut command = format!("lambdamat codegen {}", self.name);
+        if let Some(u) = target {
+            command.push_str(&format!(" --for {u}"));
+        }
+        for (name, value) in &self.sets {
+            command.push_str(&format!(" --set {name}={value}"));
+        }
+        command.push_str(" -o FILE.rs");
+        let from = crate::codegen::Provenance {
+            source: self.name.clone(),
+            command,
+        };
+        let prog = &self.program;
+        let code =
+            crate::codegen::solver_source(prog, target, &from).map_err(|e| self.located(e))?;
+        if prog.contact.is_split() {
+            // The split solver's input checks (intervals, scalars against
+            // conditions, operators) run when its problem is made.
+            let input = SplitInput::from_program(prog).map_err(|e| self.located(e))?;
+            crate::plan::split::SplitProblem::from_input(input).map_err(|e| self.located(e))?;
+            return Ok(code);
+        }
+        let sys = CompiledSystem::from_program(prog, target).map_err(|e| self.located(e))?;
+        let quick = crate::plan::SolveOptions {
+            max_level: 2,
+            tol: 1.0,
+            ..crate::plan::SolveOptions::default()
+        };
+        if let Err(e) = crate::plan::solve_system(&sys, &quick)
+            && e.is_input_error()
+        {
+            return Err(self.located(e));
+        }
+        Ok(code)
+    }
+
+    /// Solves the file's system (a split-domain file with the split-domain
+    /// solver) after setting `opts.set`, refining until the error
+    /// estimate is below `opts.tol` or the levels run out. A result that
+    /// did not reach the tolerance is `Ok` with `converged == false`.
+    ///
+    /// ```
+    /// use lambdamat::{Problem, SolveOptions};
+    /// let p = Problem::from_file("examples/mms.lmx")?;
+    /// let s = p.solve(&SolveOptions { tol: 1e-8, ..SolveOptions::default() })?;
+    /// assert!(s.converged);
+    /// assert_eq!(s.unknowns.len(), 2);
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
+    pub fn solve(&self, opts: &SolveOptions) -> Result<Solution, Error> {
+        if !(opts.tol > 0.0 && opts.tol.is_finite()) {
+            return Err(invalid(format!(
+                "--tol {}: the tolerance must be a finite number > 0, e.g. 1e-10",
+                opts.tol
+            )));
+        }
+        let max_level = opts.max_level.unwrap_or(DEFAULT_MAX_LEVEL);
+        if max_level == 0 || max_level > crate::cli::solve::MAX_LEVEL {
+            return Err(invalid(format!(
+                "--max-level {max_level}: must be between 1 and {}",
+                crate::cli::solve::MAX_LEVEL
+            )));
+        }
+        if let Some(bytes) = opts.max_memory {
+            return Err(invalid(format!(
+                "max_memory = {bytes}: no memory limit is implemented for solves; leave it unset"
+            )));
+        }
+        let problem;
+        let me = if opts.set.is_empty() {
+            self
+        } else {
+            problem = self.with_set(&opts.set)?;
+            &problem
+        };
+        let prog = &me.program;
+        if prog.contact.is_split() {
+            if opts.method == Some(Method::Commutative) {
+                return Err(invalid(
+                    "--method commutative: a split-domain file is solved as one collocation system on all its subintervals; the seed's single equations per subinterval are shown by `lambdamat reduce`".into(),
+                ));
+            }
+            let split = SplitOptions {
+                tol: opts.tol,
+                max_level,
+            };
+            let r = crate::plan::solve_split_input(SplitInput::from_program(prog)?, &split)?;
+            return Ok(Solution::from_split(&r));
+        }
+        let sys = CompiledSystem::from_program(prog, opts.unknown.as_deref())
+            .map_err(|e| me.located(e))?;
+        let plan_opts = crate::plan::SolveOptions {
+            method: opts.method.unwrap_or(Method::Ordered),
+            tol: opts.tol,
+            max_level,
+            ..crate::plan::SolveOptions::default()
+        };
+        let r = crate::plan::solve_system(&sys, &plan_opts).map_err(|e| me.located(e))?;
+        Ok(Solution::from_system(&r))
+    }
+
+    /// A plan error pointed at its place in the source, when it has one.
+    fn located(&self, e: PlanError) -> Error {
+        let src = crate::cli::smith::Source {
+            text: self.text.clone(),
+            name: self.name.clone(),
+        };
+        Error(crate::cli::solve::located(e, &src))
+    }
+}
+
+/// The Hertz contact problem for Poisson's ratio `nu` and the given
+/// friction coefficient μ or stick radius c: the file `lambdamat hertz`
+/// runs (`examples/hertz.lmx`, `hertz_given_c.lmx`, or
+/// `hertz_frictionless.lmx` without shear), solved with the parameters set
+/// as `--set` sets them. A parameter outside its physical range is invalid
+/// input. Unlike `lambdamat hertz`, a refusal at a physical limit is the
+/// solver's error, without the limit's asymptotic values.
+///
+/// ```
+/// use lambdamat::api::{hertz, Given};
+/// let s = hertz(0.25, Given::Mu(0.1801), 1e-8)?;
+/// assert!(s.converged);
+/// assert!((s.scalars["c"] - 0.5).abs() < 1e-3);
+/// # Ok::<(), lambdamat::Error>(())
+/// ```
+pub fn hertz(nu: f64, given: Given, tol: f64) -> Result<Solution, Error> {
+    let ((file, text), sets) = crate::hertz::front::plan(nu, given)?;
+    let problem = Problem::from_source(text, file)?;
+    problem.solve(&SolveOptions {
+        set: sets
+            .iter()
+            .map(|(n, v)| (n.to_string(), float_text(*v)))
+            .collect(),
+        tol,
+        ..SolveOptions::default()
+    })
+}
+
+/// A float as `--set` reads it: its shortest decimal (`0.1801`, not the
+/// binary double's exact expansion).
+pub fn float_text(x: f64) -> String {
+    format!("{x}")
+}
+
+/// The index of the principal symbol: `flag`, else the program's
+/// `principal` line; a flag naming no symbol is invalid input.
+pub(crate) fn principal_of(p: &Program, flag: Option<&str>) -> Result<Option<usize>, Error> {
+    match flag {
+        None => Ok(p.principal),
+        Some(s) => p
+            .symbols
+            .iter()
+            .position(|n| n == s)
+            .map(Some)
+            .ok_or_else(|| {
+                invalid(format!(
+                    "--principal {s}: no such symbol in the file (declared: {})",
+                    if p.symbols.is_empty() {
+                        "none".to_string()
+                    } else {
+                        p.symbols.join(", ")
+                    }
+                ))
+            }),
+    }
+}
+
+/// The highest refinement level a solve tries by default (the command
+/// line's `--max-level` default).
+pub const DEFAULT_MAX_LEVEL: usize = 8;
+
+/// Options of [`Problem::solve`].
+///
+/// ```
+/// use lambdamat::{Method, SolveOptions};
+/// let o = SolveOptions {
+///     set: vec![("nu".into(), "0.3".into())],
+///     method: Some(Method::Coupled),
+///     ..SolveOptions::default()
+/// };
+/// assert_eq!(o.tol, 1e-10);
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct SolveOptions {
+    /// Parameter settings `(name, value)`, read exactly as `--set` reads
+    /// them (see [`parse_sets`]).
+    pub set: Vec<(String, String)>,
+    /// Refine until the error estimate is below this (finite, > 0).
+    pub tol: f64,
+    /// The method (default: `ordered`; split-domain files use their own
+    /// collocation and refuse `commutative`).
+    pub method: Option<Method>,
+    /// The highest refinement level (default [`DEFAULT_MAX_LEVEL`], at
+    /// most 14).
+    pub max_level: Option<usize>,
+    /// A memory limit in bytes. No limit is implemented yet: setting it is
+    /// refused as invalid input rather than ignored.
+    pub max_memory: Option<u64>,
+    /// The unknown the eliminations solve for (default: the file's `solve
+    /// for`, else the first unknown).
+    pub unknown: Option<String>,
+}
+
+impl Default for SolveOptions {
+    fn default() -> SolveOptions {
+        SolveOptions {
+            set: Vec::new(),
+            tol: 1e-10,
+            method: None,
+            max_level: None,
+            max_memory: None,
+            unknown: None,
+        }
+    }
+}
+
+/// One unknown function of a [`Solution`] on the output grid.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Field {
+    /// Grid points (a singular end of a weighted unknown is left out).
+    pub x: Vec<f64>,
+    /// Values at the grid points.
+    pub values: Vec<f64>,
+    /// Its weight, e.g. `(1 - x)^(-1/2)`, or `1`.
+    pub weight: String,
+    /// Absolute error estimate of the values (the distance between the
+    /// last two levels).
+    pub error_estimate: f64,
+}
+
+/// A solved problem: what `lambdamat solve --json` prints, as values.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Solution {
+    /// Whether every estimate reached the tolerance.
+    pub converged: bool,
+    /// The unknown scalars (split-domain files), by name.
+    pub scalars: BTreeMap<String, f64>,
+    /// The outputs, by name (an output the method does not compute is
+    /// left out, with a warning).
+    pub outputs: BTreeMap<String, f64>,
+    /// Absolute error estimates of the scalars, outputs and singular
+    /// coefficients, by name.
+    pub error_estimates: BTreeMap<String, f64>,
+    /// The unknown functions on the output grid, by name (empty for
+    /// split-domain files).
+    pub unknowns: BTreeMap<String, Field>,
+    /// Warnings (large commutator defects, a model, no convergence).
+    pub warnings: Vec<String>,
+    json: Value,
+}
+
+impl Solution {
+    fn from_system(r: &crate::plan::SolveReport) -> Solution {
+        let mut warnings = r.warnings.clone();
+        let mut outputs = BTreeMap::new();
+        let mut error_estimates = BTreeMap::new();
+        for (name, v) in &r.outputs {
+            match v {
+                Some(v) => {
+                    outputs.insert(name.clone(), *v);
+                    error_estimates.insert(name.clone(), r.error_estimate);
+                }
+                None => warnings.push(format!(
+                    "output {name}: needs an unknown this method does not compute"
+                )),
+            }
+        }
+        Solution {
+            converged: r.converged,
+            scalars: BTreeMap::new(),
+            outputs,
+            error_estimates,
+            unknowns: r
+                .unknowns
+                .iter()
+                .map(|u| {
+                    (
+                        u.name.clone(),
+                        Field {
+                            x: u.x.clone(),
+                            values: u.values.clone(),
+                            weight: u.weight.clone(),
+                            error_estimate: r.error_estimate,
+                        },
+                    )
+                })
+                .collect(),
+            warnings,
+            json: crate::cli::solve::to_json(r),
+        }
+    }
+
+    fn from_split(r: &crate::plan::SplitReport) -> Solution {
+        let map = |l: &[crate::plan::split_solve::Estimate]| -> BTreeMap<String, f64> {
+            l.iter().map(|e| (e.name.clone(), e.value)).collect()
+        };
+        let mut warnings = Vec::new();
+        if let Some(c) = r.end_check.as_ref().filter(|c| c.graded) {
+            warnings.push(crate::cli::split::end_grading_line(c));
+        }
+        Solution {
+            converged: r.converged,
+            scalars: map(&r.scalars),
+            outputs: map(&r.outputs),
+            error_estimates: r
+                .scalars
+                .iter()
+                .chain(&r.outputs)
+                .chain(&r.coefficients)
+                .map(|e| (e.name.clone(), e.error))
+                .collect(),
+            unknowns: BTreeMap::new(),
+            warnings,
+            json: crate::cli::split::to_json(r),
+        }
+    }
+
+    /// The JSON object `lambdamat solve --json` prints for the same solve.
+    pub fn to_json(&self) -> String {
+        serde_json::to_string_pretty(&self.json).unwrap_or_default()
+    }
+}
+
+/// Options of [`Problem::smith`].
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct SmithOptions {
+    /// The principal symbol λ (overrides the file's `principal` line).
+    pub principal: Option<String>,
+    /// The matrix to decompose (default: the first the file asks for).
+    pub matrix: Option<String>,
+}
+
+/// A certified Smith decomposition `U·A·V = D`. Entries are exact: each is
+/// the one printer's output in the language's syntax (it parses back with
+/// [`crate::lang::formula`]), with LaTeX beside it.
+///
+/// ```
+/// use lambdamat::{Problem, SmithOptions};
+/// let p = Problem::from_source("var x\nmatrix A = [x, 1; 0, x]", "m.lmx")?;
+/// let s = p.smith(&SmithOptions::default())?;
+/// assert_eq!(s.d()[1][1], "x^2");
+/// assert!(s.latex().contains("\\begin{pmatrix}"));
+/// assert!(s.text().contains("verified: yes"));
+/// # Ok::<(), lambdamat::Error>(())
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct SmithForm {
+    report: SmithReport,
+}
+
+impl SmithForm {
+    pub(crate) fn compute(
+        name: &str,
+        a: &Matrix<PolyRing>,
+        principal: Option<usize>,
+        progress: &modes::PhaseHook,
+    ) -> Result<SmithForm, Error> {
+        let opts = modes::SmithOptions {
+            principal,
+            latex: true,
+            progress: progress.clone(),
+        };
+        let report = modes::smith_report(name, a, &opts).map_err(|e| Error(e.into()))?;
+        Ok(SmithForm { report })
+    }
+
+    /// The full report (mode, algorithm, certificate, denominator-free
+    /// form), as `lambdamat smith --json` prints it.
+    pub fn report(&self) -> &SmithReport {
+        &self.report
+    }
+
+    /// The matrix's name (`A` for an operator system's λ-matrix).
+    pub fn name(&self) -> &str {
+        &self.report.matrix
+    }
+
+    /// The ring, e.g. `Q[x]` or `Q(k1, k2, k3)[k4]`.
+    pub fn ring(&self) -> &str {
+        &self.report.ring
+    }
+
+    /// The input matrix A.
+    pub fn a(&self) -> &[Vec<String>] {
+        &self.report.a
+    }
+
+    /// The nonzero invariant factors.
+    pub fn invariant_factors(&self) -> &[String] {
+        &self.report.invariant_factors
+    }
+
+    /// D.
+    pub fn d(&self) -> &[Vec<String>] {
+        &self.report.d
+    }
+
+    /// U (None in the determinantal-divisor mode, which gives D only).
+    pub fn u(&self) -> Option<&[Vec<String>]> {
+        self.report.u.as_deref()
+    }
+
+    /// V (None in the determinantal-divisor mode).
+    pub fn v(&self) -> Option<&[Vec<String>]> {
+        self.report.v.as_deref()
+    }
+
+    /// Whether every check of the certificate passed (always true for a
+    /// returned form: a failure is an [`Error`]).
+    pub fn verified(&self) -> bool {
+        self.report.verified
+    }
+
+    /// The certificate: each property checked, recomputed from A, U, D, V.
+    pub fn certificate(&self) -> &[crate::algebra::smith::certify::Check] {
+        &self.report.certificate
+    }
+
+    /// The text `lambdamat smith` prints.
+    pub fn text(&self) -> String {
+        crate::cli::render::smith_text(&self.report)
+    }
+
+    /// The LaTeX `lambdamat smith --latex` prints.
+    pub fn latex(&self) -> String {
+        crate::cli::render::smith_latex(&self.report)
+    }
+
+    /// The JSON `lambdamat smith --json` prints.
+    pub fn to_json(&self) -> String {
+        serde_json::to_string_pretty(&self.report).unwrap_or_default()
+    }
+}
+
+/// The reduction of an operator system for one unknown: for a
+/// split-domain file one per subinterval ([`Reduction::pieces`]).
+///
+/// ```
+/// let p = lambdamat::Problem::from_file("examples/generic3.lmx")?;
+/// let r = p.reduce(None)?;
+/// assert!(r.text().contains(&r.eliminant().text));
+/// # Ok::<(), lambdamat::Error>(())
+/// ```
+#[derive(Clone, Debug)]
+pub struct Reduction {
+    pieces: Vec<(
+        Option<crate::reduce::split::Piece>,
+        crate::reduce::Reduction,
+    )>,
+}
+
+impl Reduction {
+    /// The reduction (of the first subinterval, for a split-domain file).
+    pub fn value(&self) -> &crate::reduce::Reduction {
+        &self.pieces[0].1
+    }
+
+    /// Each subinterval's label and reduction (one unlabelled piece for a
+    /// file on one interval).
+    pub fn pieces(&self) -> Vec<(Option<&str>, &crate::reduce::Reduction)> {
+        self.pieces
+            .iter()
+            .map(|(p, r)| (p.as_ref().map(|p| p.label.as_str()), r))
+            .collect()
+    }
+
+    /// The unknown solved for.
+    pub fn unknown(&self) -> &str {
+        &self.value().unknown
+    }
+
+    /// The commutative eliminant's operator on the unknown, printed.
+    pub fn eliminant(&self) -> crate::reduce::Printed {
+        crate::reduce::Printed::of(&self.value().lhs_node)
+    }
+
+    /// The ordered elimination's form, or why there is none.
+    pub fn ordered(&self) -> Result<&crate::reduce::OrderedForm, &str> {
+        self.value().ordered.as_ref().map_err(String::as_str)
+    }
+
+    /// The pairs of operators the commutative eliminant treats as
+    /// commuting.
+    pub fn commuted_pairs(&self) -> Vec<[String; 2]> {
+        self.value()
+            .commuted_pairs
+            .iter()
+            .map(|p| p.pair.clone())
+            .collect()
+    }
+
+    /// The text `lambdamat reduce` prints.
+    pub fn text(&self) -> String {
+        self.print(false)
+    }
+
+    /// The LaTeX `lambdamat reduce --latex` prints.
+    pub fn latex(&self) -> String {
+        self.print(true)
+    }
+
+    fn print(&self, latex: bool) -> String {
+        match self.split_list() {
+            Some(list) => crate::cli::reduce::split_text(&list, latex),
+            None if latex => crate::cli::reduce::latex(self.value()),
+            None => crate::cli::reduce::text(self.value()),
+        }
+    }
+
+    fn split_list(&self) -> Option<Vec<(crate::reduce::split::Piece, crate::reduce::Reduction)>> {
+        self.pieces
+            .iter()
+            .map(|(p, r)| p.clone().map(|p| (p, r.clone())))
+            .collect()
+    }
+
+    /// The JSON `lambdamat reduce --json` prints.
+    pub fn to_json(&self) -> String {
+        let v = match self.split_list() {
+            Some(list) => crate::cli::reduce::split_json(&list),
+            None => crate::cli::reduce::to_json(self.value()),
+        };
+        serde_json::to_string_pretty(&v).unwrap_or_default()
+    }
+}
