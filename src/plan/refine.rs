@@ -615,7 +615,7 @@ fn report(
     let converged = est <= opts.tol;
     if !converged {
         warnings.push(format!(
-            "refinement stopped at level {level} before two answers agreed to {:.1e} (estimate {est:.1e})",
+            "refinement stopped at level {level} before every estimate was within {:.1e}·max(1, |value|)",
             opts.tol
         ));
     }

@@ -33,11 +33,7 @@ impl Report {
             ),
             _ => format!("{dim} coefficients"),
         };
-        writeln!(
-            w,
-            "levels: {}, {size}, condition ≈ {cond:.2e}",
-            self.levels
-        )?;
+        writeln!(w, "levels: {}, {size}, condition ≈ {cond:.2e}", self.levels)?;
         writeln!(
             w,
             "tolerance {:.1e}·max(1, |value|) (estimates ± are absolute): {}",
