@@ -15,6 +15,7 @@ Usage: stall_families.py BIN OUTDIR [--only NAME,...] [--timeout 30]
 """
 import argparse
 import fractions
+import json
 import os
 import random
 import re
@@ -190,6 +191,24 @@ def pari_like(cmd, prog, timeout, pari):
     return {"cpu": int(lines[0]) / 1000.0, "degs": sorted(d for d in degs if d >= 0)}
 
 
+def run_ours(binary, path, timeout):
+    """`lambdamat smith F --json` under a CPU limit of `timeout` seconds
+    (RLIMIT_CPU, so nothing is left running); CPU time from wait4."""
+    p = subprocess.Popen([binary, "smith", path, "--json"], stdout=subprocess.PIPE,
+                         stderr=subprocess.DEVNULL, preexec_fn=pg.cpu_limit(timeout))
+    stdout = p.stdout.read()
+    _, status, ru = os.wait4(p.pid, 0)
+    p.returncode = os.waitstatus_to_exitcode(status)
+    if p.returncode < 0:
+        return {"cpu": None}
+    out = {"cpu": ru.ru_utime + ru.ru_stime, "kb": ru.ru_maxrss, "rc": p.returncode}
+    if p.returncode == 0:
+        v = json.loads(stdout)
+        out["degs"] = [pg.poly_degree(f) for f in v["invariant_factors"]]
+        out["uv"] = v.get("U") is not None
+    return out
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("binary")
@@ -214,7 +233,7 @@ def main():
         if a.emit_only:
             print(path)
             continue
-        ours = pg.run_lambdamat(a.binary, path, a.ours_timeout)
+        ours = run_ours(a.binary, path, a.ours_timeout)
         pari = {"cpu": None, "skipped": True} if a.no_pari else run_pari(m, a.timeout)
         sing = {"cpu": None, "skipped": True} if a.no_singular else run_singular(m, a.timeout)
         agree = []

@@ -296,6 +296,113 @@ impl<R: GcdDomain> Matrix<R> {
         Some(if sign_negative { r.neg(&d) } else { d })
     }
 
+    /// `det(A)` and row `i` of `adj(A)` from one fraction-free elimination:
+    /// Bareiss on `[Aᵀ | e_i]` gives `det(A)` as its last pivot, and the
+    /// fraction-free back substitution `y_k = (det·b_k − Σ_{j>k} u_kj y_j)
+    /// / u_kk` (exact divisions) gives `y = det(A)·A⁻ᵀ·e_i`, which is row
+    /// `i` of `adj(A)`. `O(n³)` ring operations instead of the `n²`
+    /// determinants of [`Matrix::adjugate`]; rows whose entry in the pivot
+    /// column is zero are only rescaled (and not at all when consecutive
+    /// pivots are equal, e.g. unit pivots of a sparse system). The row is
+    /// `None` when `det(A) = 0`; `None` overall for a non-square matrix or
+    /// `i` out of range.
+    pub fn det_adjugate_row(&self, i: usize) -> Option<(R::Elem, Option<Vec<R::Elem>>)> {
+        if self.rows != self.cols || i >= self.rows {
+            return None;
+        }
+        let r = &self.ring;
+        let n = self.rows;
+        if n == 1 {
+            return Some((self.get(0, 0).clone(), Some(vec![r.one()])));
+        }
+        // Augmented Aᵀ with the column e_i, n × (n + 1).
+        let w = n + 1;
+        let mut m: Vec<R::Elem> = Vec::with_capacity(n * w);
+        for row in 0..n {
+            for col in 0..n {
+                m.push(self.get(col, row).clone());
+            }
+            m.push(if row == i { r.one() } else { r.zero() });
+        }
+        let mut negative = false;
+        let mut prev = r.one();
+        for k in 0..n {
+            let Some(p) = (k..n).find(|&row| !r.is_zero(&m[row * w + k])) else {
+                return Some((r.zero(), None));
+            };
+            if p != k {
+                for col in 0..w {
+                    m.swap(p * w + col, k * w + col);
+                }
+                negative = !negative;
+            }
+            if k + 1 == n {
+                break;
+            }
+            let pivot = m[k * w + k].clone();
+            let same = pivot == prev;
+            for row in k + 1..n {
+                let factor = m[row * w + k].clone();
+                if r.is_zero(&factor) {
+                    if !same {
+                        for col in k + 1..w {
+                            let e = &m[row * w + col];
+                            if !r.is_zero(e) {
+                                let t = r.mul(&pivot, e);
+                                m[row * w + col] =
+                                    r.div_exact(&t, &prev).expect("Bareiss division is exact");
+                            }
+                        }
+                    }
+                    continue;
+                }
+                for col in k + 1..w {
+                    let (a_kc, a_rc) = (&m[k * w + col], &m[row * w + col]);
+                    let t = match (r.is_zero(a_kc), r.is_zero(a_rc)) {
+                        (true, true) => continue,
+                        (true, false) => r.mul(&pivot, a_rc),
+                        (false, true) => r.neg(&r.mul(&factor, a_kc)),
+                        (false, false) => r.sub(&r.mul(&pivot, a_rc), &r.mul(&factor, a_kc)),
+                    };
+                    m[row * w + col] = if r.is_one(&prev) {
+                        t
+                    } else {
+                        r.div_exact(&t, &prev).expect("Bareiss division is exact")
+                    };
+                }
+                m[row * w + k] = r.zero();
+            }
+            prev = pivot;
+        }
+        let last = m[(n - 1) * w + (n - 1)].clone();
+        if r.is_zero(&last) {
+            return Some((r.zero(), None));
+        }
+        let det = if negative { r.neg(&last) } else { last };
+        let mut y: Vec<R::Elem> = vec![r.zero(); n];
+        for k in (0..n).rev() {
+            let b = &m[k * w + n];
+            let mut acc = if r.is_zero(b) {
+                r.zero()
+            } else {
+                r.mul(&det, b)
+            };
+            for (j, yj) in y.iter().enumerate().skip(k + 1) {
+                let u = &m[k * w + j];
+                if !r.is_zero(u) && !r.is_zero(yj) {
+                    acc = r.sub(&acc, &r.mul(u, yj));
+                }
+            }
+            y[k] = if r.is_zero(&acc) {
+                acc
+            } else {
+                r.div_exact(&acc, &m[k * w + k])
+                    .expect("Cramer's numerators are divisible by the pivots")
+            };
+        }
+        Some((det, Some(y)))
+    }
+
     /// The adjugate (transposed cofactor matrix): `A·adj(A) = det(A)·I`.
     pub fn adjugate(&self) -> Option<Matrix<R>> {
         if self.rows != self.cols {
@@ -419,6 +526,65 @@ mod tests {
         );
         assert_eq!(prod, expect);
         assert_eq!(a.rank(), 2);
+    }
+
+    /// A seeded n×n over Q[k1, k2] with entries c0 + c1·k1 + c2·k2·k1, a
+    /// third of them zero (so pivots need row swaps).
+    fn sparse_xy(n: usize, seed: u64) -> Matrix<PolyRing> {
+        let mut s = seed;
+        let mut next = || {
+            s = s
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            ((s >> 33) % 7) as i64 - 3
+        };
+        let (x, y) = (MPoly::var(0, 2), MPoly::var(1, 2));
+        let c = |v: i64| MPoly::constant(crate::algebra::rational::qi(v), 2);
+        let data = (0..n * n)
+            .map(|_| {
+                if next() < -1 {
+                    MPoly::zero(2)
+                } else {
+                    c(next()) + &x * &c(next()) + &(&x * &y) * &c(next())
+                }
+            })
+            .collect();
+        Matrix::new(PolyRing::new(vec!["k1".into(), "k2".into()]), n, n, data)
+    }
+
+    #[test]
+    fn adjugate_row_from_one_elimination_is_the_adjugates_row() {
+        let mut nonsingular = 0;
+        for seed in 0..12u64 {
+            let n = 2 + (seed % 4) as usize;
+            let a = sparse_xy(n, seed);
+            let det = a.det().unwrap();
+            let adj = a.adjugate().unwrap();
+            for i in 0..n {
+                let (d, row) = a.det_adjugate_row(i).unwrap();
+                assert_eq!(d, det, "seed {seed} row {i}");
+                match row {
+                    Some(row) => {
+                        assert!(!det.is_zero());
+                        assert_eq!(row, adj.row(i).to_vec(), "seed {seed} row {i}");
+                        nonsingular += 1;
+                    }
+                    None => assert!(det.is_zero()),
+                }
+            }
+        }
+        assert!(
+            nonsingular >= 20,
+            "only {nonsingular} nonsingular rows checked"
+        );
+        // A permutation-like matrix needs a swap at the first pivot.
+        let r = seed().ring;
+        let k = |i| MPoly::var(i, 4);
+        let z = || MPoly::zero(4);
+        let m = Matrix::new(r, 2, 2, vec![z(), k(0), k(1), z()]);
+        let (d, row) = m.det_adjugate_row(1).unwrap();
+        assert_eq!(d, -(&k(0) * &k(1)));
+        assert_eq!(row.unwrap(), vec![-k(1), z()]);
     }
 
     #[test]

@@ -922,7 +922,7 @@ impl OrderedElimination {
             names: a.ring.names.clone(),
             shown: a.ring.names.clone(),
         };
-        let (Some(det), Some(adj)) = (a.det(), a.adjugate()) else {
+        let Some((det, Some(adj_row))) = a.det_adjugate_row(self.unknown) else {
             return false;
         };
         if det.is_zero() {
@@ -941,7 +941,7 @@ impl OrderedElimination {
             };
             let lhs = k.mul(&r, &linv);
             let want = k.mul(
-                &RatFunc::from_poly(adj.get(self.unknown, j).clone()),
+                &RatFunc::from_poly(adj_row[j].clone()),
                 &k.inv(&d).unwrap_or_else(|| k.zero()),
             );
             lhs == want

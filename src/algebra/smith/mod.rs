@@ -21,6 +21,7 @@ pub mod fraction_free;
 pub mod hermite_cert;
 pub mod minors_cert;
 pub mod modes;
+pub mod monomial;
 pub mod nonsingular;
 pub mod principal_form;
 pub mod several;

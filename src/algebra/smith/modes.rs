@@ -624,6 +624,9 @@ fn one_symbol(
     };
     opts.progress
         .phase(&format!("Smith form over {}", au.ring.name()));
+    if let Some(report) = monomial_report(name, a, &au, &ring, &note, opts)? {
+        return Ok(report);
+    }
     let diag = (au.rows() >= DIAGONAL_FORM_ONLY)
         .then(|| super::nonsingular::diagonal_adjugate(&au))
         .flatten();
@@ -653,6 +656,38 @@ fn one_symbol(
         return Ok(form_only_report(
             name, a, &au, f, cert, ring, alg, why, opts,
         ));
+    }
+    if let Some(bits) = super::two_by_two::bezout_height_bits(&au)
+        && bits > super::two_by_two::MAX_BEZOUT_BITS
+    {
+        // A·adj(A) = det(A)·I: D alone, as for the other oversized inputs.
+        let r = &au.ring;
+        let (p, q, s, t) = (au.get(0, 0), au.get(0, 1), au.get(1, 0), au.get(1, 1));
+        let c = r.sub(&r.mul(p, t), &r.mul(q, s));
+        let b = Matrix::new(
+            r.clone(),
+            2,
+            2,
+            vec![t.clone(), r.neg(q), r.neg(s), p.clone()],
+        );
+        if !c.is_zero()
+            && let Some(report) = last_factor_report(
+                name,
+                a,
+                &au,
+                (&c, &b),
+                &ring,
+                "2×2: c = det A, B = adj A; invariant factors from A·B = c·I, the gcd of B's entries and deg c",
+                format!(
+                    "{note}; transforms omitted: the Bezout coefficients of the first row would have about {:.1e} digits each (beyond {:.1e}, the reach of the modular routes); the invariant factors alone are certified",
+                    bits * std::f64::consts::LOG10_2,
+                    super::two_by_two::MAX_BEZOUT_BITS * std::f64::consts::LOG10_2
+                ),
+                opts,
+            )
+        {
+            return Ok(report);
+        }
     }
     if let Some(d) = super::two_by_two::bezout_2x2(&au) {
         let alg = super::two_by_two::ALGORITHM;
@@ -770,6 +805,119 @@ fn one_symbol(
         &super::certify::ClearedQx,
     )?
     .0)
+}
+
+const MONOMIAL_ALGORITHM: &str = "monomial-shaped input (at most one nonzero entry per row and column): A = Pᵀ·[[Δ, 0], [0, 0]]·Qᵀ for permutations P, Q and the diagonal Δ of its entries; Δ's Smith form by the diagonal routes, lifted by P and Q";
+
+/// Monomial-shaped inputs that are not square diagonal (permuted, or
+/// padded with zero rows or columns): Δ's Smith form, lifted by the
+/// permutations ([`super::monomial`]). From [`DIAGONAL_FORM_ONLY`] nonzero
+/// entries on, D alone when `A·B = c·I` for Δ certifies it (as for square
+/// diagonal inputs: the transforms would be dense with Bezout coefficients
+/// of huge height); otherwise Δ's decomposition, lifted and certified
+/// against A. `None` when A is not monomial-shaped, is square diagonal, or
+/// is zero (the other routes take those).
+fn monomial_report(
+    name: &str,
+    a_poly: &Matrix<PolyRing>,
+    au: &Matrix<QxRing>,
+    ring: &str,
+    note: &str,
+    opts: &SmithOptions,
+) -> Result<Option<SmithReport>, SmithError> {
+    let Some(shape) = super::monomial::MonomialShape::of(au) else {
+        return Ok(None);
+    };
+    if shape.places.is_empty() || shape.is_square_diagonal(au) {
+        return Ok(None);
+    }
+    let delta = shape.delta(au);
+    let r = delta.rows();
+    // Re-read A against Δ and the places: every entry is Δ's at its place
+    // and zero elsewhere.
+    let mut at = std::collections::HashMap::with_capacity(r);
+    for (k, &ij) in shape.places.iter().enumerate() {
+        at.insert(ij, k);
+    }
+    let ok = (0..au.rows()).all(|i| {
+        (0..au.cols()).all(|j| match at.get(&(i, j)) {
+            Some(&k) => au.get(i, j) == delta.get(k, k) && !delta.get(k, k).is_zero(),
+            None => au.get(i, j).is_zero(),
+        })
+    });
+    let structure = Check {
+        property: "A is a row and column permutation of [[Δ, 0], [0, 0]]".into(),
+        ok,
+        detail: format!(
+            "{r} nonzero entries, at most one in every row and column of the {}×{} input (checked entry by entry); Δ = their diagonal",
+            au.rows(),
+            au.cols()
+        ),
+    };
+    if r >= DIAGONAL_FORM_ONLY
+        && let Some((c, b)) = super::nonsingular::diagonal_adjugate(&delta)
+    {
+        opts.progress
+            .phase("certifying the invariant factors of Δ (Δ·B = c·I)");
+        let (mut cert, f) = super::certify::certify_last_factor(&delta, &c, &b);
+        if cert.verified() && ok {
+            cert.checks.insert(0, structure);
+            let qr = &au.ring;
+            let (m, n) = (au.rows(), au.cols());
+            let mut d = Matrix::zeros(qr.clone(), m, n);
+            for k in 0..r - 1 {
+                d.set(k, k, qr.one());
+            }
+            d.set(r - 1, r - 1, f);
+            let inv: Vec<QPoly> = d.diagonal().into_iter().filter(|e| !e.is_zero()).collect();
+            let latex = opts.latex.then(|| LatexForms {
+                a: rows_of(a_poly, true),
+                invariant_factors: inv.iter().map(|e| qr.latex(e)).collect(),
+                d: Some(rows_of(&d, true)),
+                u: None,
+                v: None,
+            });
+            return Ok(Some(SmithReport {
+                matrix: name.to_string(),
+                ring: ring.to_string(),
+                mode: Mode::OneSymbol,
+                mode_note: format!(
+                    "{note}; transforms omitted for a {m}×{n} input with {r} nonzero entries, at most one per row and column (they would be dense with Bezout coefficients of huge height): the invariant factors alone are certified"
+                ),
+                algorithm: format!(
+                    "{MONOMIAL_ALGORITHM}; c = product of Δ's diagonal, B = diag(product of the others); invariant factors from Δ·B = c·I, the gcd of B's entries and deg c"
+                ),
+                a: rows_of(a_poly, false),
+                invariant_factors: inv.iter().map(|e| qr.lmx(e)).collect(),
+                rank: r,
+                d: rows_of(&d, false),
+                u: None,
+                v: None,
+                verified: true,
+                certificate: cert.checks,
+                invariant_factor_coefficients: None,
+                denominator_free: None,
+                latex,
+            }));
+        }
+    }
+    opts.progress
+        .phase("Smith form of Δ, lifted by the permutations");
+    let (dec, _) = decompose_qx(&delta);
+    let lifted = shape.lift(au, &dec);
+    let (report, _) = generic_report(
+        name,
+        a_poly,
+        au,
+        lifted,
+        MONOMIAL_ALGORITHM,
+        Mode::OneSymbol,
+        ring.to_string(),
+        note.to_string(),
+        opts,
+        &super::certify::ClearedQx,
+    )?;
+    Ok(Some(report))
 }
 
 fn coefficient_field(a: &PolyRing, p: usize) -> RatFuncField {
@@ -1738,6 +1886,134 @@ mod tests {
         let z = MPoly::zero(2);
         let a = Matrix::new(r, 2, 2, vec![x.clone(), z.clone(), z, &x * &y]);
         assert!(divisors_generic("A", &a, &SmithOptions::default()).is_none());
+    }
+
+    fn qx_ring() -> PolyRing {
+        PolyRing::new(vec!["x".into()])
+    }
+
+    /// x − c in Q[x] (as a one-symbol MPoly).
+    fn x_minus(c: i64) -> MPoly {
+        &MPoly::var(0, 1) - &MPoly::constant(crate::algebra::rational::qi(c), 1)
+    }
+
+    /// The invariant factors from the k×k minors, printed like a report's.
+    fn from_minors(a: &Matrix<PolyRing>) -> Vec<String> {
+        let au = to_univariate(a);
+        let dv = determinantal_divisors(&au, MINOR_LIMIT).expect("few minors");
+        dv.invariant.iter().map(|f| au.ring.lmx(f)).collect()
+    }
+
+    #[test]
+    fn monomial_route_lifts_transforms_and_agrees_with_the_minors() {
+        // 3×5 and 5×4, entries at scattered places, some factors shared.
+        let shapes: [(usize, usize, Vec<(usize, usize, MPoly)>); 2] = [
+            (
+                3,
+                5,
+                vec![
+                    (0, 3, &x_minus(1) * &x_minus(2)),
+                    (1, 0, x_minus(1)),
+                    (2, 4, &x_minus(1) * &x_minus(1)),
+                ],
+            ),
+            (
+                5,
+                4,
+                vec![
+                    (0, 2, x_minus(3)),
+                    (2, 0, &x_minus(3) * &x_minus(0)),
+                    (3, 1, x_minus(5)),
+                    (4, 3, MPoly::constant(crate::algebra::rational::qi(7), 1)),
+                ],
+            ),
+        ];
+        for (m, n, places) in shapes {
+            let mut a = Matrix::zeros(qx_ring(), m, n);
+            for (i, j, e) in places {
+                a.set(i, j, e);
+            }
+            let r = smith_report("A", &a, &SmithOptions::default()).expect("certified");
+            assert!(r.verified);
+            assert!(
+                r.algorithm.starts_with("monomial-shaped"),
+                "{}",
+                r.algorithm
+            );
+            assert!(r.u.is_some() && r.v.is_some());
+            assert_eq!(r.invariant_factors, from_minors(&a));
+            assert_eq!(r.d.len(), m);
+            assert_eq!(r.d[0].len(), n);
+        }
+    }
+
+    #[test]
+    fn large_non_square_diagonal_gets_its_factors_alone() {
+        // diag(x − 1, …, x − 33) with a zero column, transposed too.
+        let k = DIAGONAL_FORM_ONLY + 1;
+        let mut f = MPoly::one(1);
+        for i in 0..k {
+            f = &f * &x_minus(i as i64 + 1);
+        }
+        for transpose in [false, true] {
+            let mut a = Matrix::zeros(qx_ring(), k, k + 1);
+            for i in 0..k {
+                a.set(i, (i + 1) % (k + 1), x_minus(i as i64 + 1));
+            }
+            let a = if transpose { a.transpose() } else { a };
+            let r = smith_report("A", &a, &SmithOptions::default()).expect("certified");
+            assert!(r.verified && r.u.is_none());
+            assert_eq!(r.rank, k);
+            assert_eq!(r.invariant_factors.len(), k);
+            let au = to_univariate(&a);
+            let fu = to_univariate(&Matrix::new(qx_ring(), 1, 1, vec![f.clone()]));
+            assert_eq!(r.invariant_factors[k - 1], au.ring.lmx(fu.get(0, 0)));
+            assert!(r.invariant_factors[..k - 1].iter().all(|e| e == "1"));
+            assert!(r.certificate.iter().all(|c| c.ok));
+            assert_eq!(
+                r.certificate[0].property,
+                "A is a row and column permutation of [[Δ, 0], [0, 0]]"
+            );
+        }
+    }
+
+    #[test]
+    fn two_by_two_with_a_huge_coefficient_gets_d_alone_agreeing_with_the_minors() {
+        // Degree 40 with one 1 000-bit coefficient: Res(a, b) has about
+        // 40 000 bits, beyond the modular routes.
+        let big = num_bigint::BigInt::from(3u8).pow(631);
+        let mut s = 7u64;
+        let mut next = || {
+            s = s
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            ((s >> 33) % 19) as i64 - 9
+        };
+        let x = MPoly::var(0, 1);
+        let mut entries = Vec::new();
+        for e in 0..4 {
+            let mut p = MPoly::zero(1);
+            let mut xk = MPoly::one(1);
+            for k in 0..=40 {
+                let c = if e == 0 && k == 20 {
+                    crate::algebra::rational::Q::from(big.clone())
+                } else {
+                    crate::algebra::rational::qi(next())
+                };
+                p = &p + &(&xk * &MPoly::constant(c, 1));
+                xk = &xk * &x;
+            }
+            entries.push(p);
+        }
+        let a = Matrix::new(qx_ring(), 2, 2, entries);
+        let r = smith_report("A", &a, &SmithOptions::default()).expect("certified");
+        assert!(r.verified && r.u.is_none(), "{}", r.algorithm);
+        assert!(
+            r.mode_note.contains("Bezout coefficients"),
+            "{}",
+            r.mode_note
+        );
+        assert_eq!(r.invariant_factors, from_minors(&a));
     }
 
     #[test]

@@ -29,6 +29,35 @@ pub const ALGORITHM: &str = "2×2 with a coprime first row: Bezout s·a + t·b =
 /// it the general nonsingular path is as fast).
 pub const MIN_DEGREE: usize = 32;
 
+/// Above this estimated height of the Bezout coefficients s, t (bits of
+/// Res(a, b), from Hadamard's bound on the first row's integer numerators)
+/// the modular routes cannot reach them: their images stop at
+/// [`crate::algebra::modular::NPRIMES`] word primes (about 31 000 bits),
+/// and the exact extended Euclid over Q that remains took 17 s on a 2×2 of
+/// degree 50 with one 2 322-bit coefficient, for transforms of millions of
+/// digits. `modes.rs` then certifies D alone from `A·adj(A) = det(A)·I`.
+pub const MAX_BEZOUT_BITS: f64 = (crate::algebra::modular::NPRIMES * 61) as f64;
+
+/// The estimated height (bits) of the Bezout coefficients of the first
+/// row of a 2×2 `A` that [`bezout_2x2`] would take (`None` when it would
+/// not): `deg b·log₂‖a‖ + deg a·log₂‖b‖` for the rows' integer numerators.
+pub fn bezout_height_bits(a: &Matrix<QxRing>) -> Option<f64> {
+    if a.rows() != 2 || a.cols() != 2 {
+        return None;
+    }
+    let max_deg = a.entries().iter().filter_map(|e| e.degree()).max()?;
+    if max_deg < MIN_DEGREE {
+        return None;
+    }
+    let (pa, pb) = (a.get(0, 0), a.get(0, 1));
+    let (da, db) = (pa.degree()?, pb.degree()?);
+    let norm = |p: &QPoly| -> f64 {
+        let mx = p.num().iter().map(|c| c.bits()).max().unwrap_or(0) as f64;
+        mx + 0.5 * (p.num().len() as f64).log2() + 1.0
+    };
+    Some(db as f64 * norm(pa) + da as f64 * norm(pb))
+}
+
 /// The decomposition described in the module documentation, or `None`
 /// (A not 2×2, singular, of low degree, or with a non-coprime first row).
 pub fn bezout_2x2(a: &Matrix<QxRing>) -> Option<SmithDecomposition<QxRing>> {
