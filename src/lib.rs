@@ -20,8 +20,13 @@
 //!   ordered elimination), built from [`algebra`] and [`system`];
 //! * [`codegen`]: a language system → a standalone Rust solver module
 //!   (kernels as Rust functions, solved through [`plan`] and [`numeric`]);
-//! * [`cli`]: the `lambdamat` command line and its text/LaTeX/JSON reports.
+//! * [`standalone`]: the `main` of generated solvers and the text/JSON/CSV
+//!   reports of a numerical solve (no command-line crates);
+//! * `cli` (feature `cli`, on by default): the `lambdamat` command line and
+//!   its text/LaTeX/JSON reports (clap, miette's fancy output, plotters,
+//!   indicatif). Generated solvers build with `default-features = false`.
 pub mod algebra;
+#[cfg(feature = "cli")]
 pub mod cli;
 pub mod codegen;
 pub mod hertz;
@@ -29,4 +34,5 @@ pub mod lang;
 pub mod numeric;
 pub mod plan;
 pub mod reduce;
+pub mod standalone;
 pub mod system;

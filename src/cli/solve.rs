@@ -1,13 +1,12 @@
 //! The `solve` command: parses the file, asks [`crate::plan`] to solve its
 //! system and prints the answer as text or one JSON object, optionally
 //! with a CSV table and an SVG plot (plotters) of the unknowns. The same
-//! report is the `main` of solvers written by `lambdamat codegen`
-//! ([`solver_main`]). It does no numerics itself.
+//! report ([`crate::standalone::report`]) is printed by the solvers
+//! `lambdamat codegen` writes. It does no numerics itself.
 use std::io::Write;
 use std::path::Path;
 
 use plotters::prelude::*;
-use serde_json::{Map, Value, json};
 
 use super::error::CliError;
 use super::output::{check_writable, write_file};
@@ -31,9 +30,8 @@ pub fn solve_command(a: &SolveArgs, w: &mut dyn Write) -> Result<(), CliError> {
     })
 }
 
-/// The highest refinement level `--max-level` accepts: beyond it the
-/// geometric grading makes panels too small for the quadrature rules.
-pub const MAX_LEVEL: usize = 14;
+pub use crate::standalone::MAX_LEVEL;
+pub use crate::standalone::report::{csv, solve_json as to_json, solve_text as write_text};
 
 /// Checks the flags before any work: a finite positive tolerance, a
 /// refinement level the numerics support.
@@ -113,143 +111,6 @@ pub fn located(e: PlanError, src: &Source) -> CliError {
         Some(errs) => CliError::Lang(Box::new(errs)),
         None => CliError::Plan(e),
     }
-}
-
-/// The flags of a generated solver (the `solve` flags without a file).
-#[derive(clap::Parser, Debug)]
-#[command(about = "A solver written by `lambdamat codegen`: solves its system and prints the report of `lambdamat solve`.", long_about = None)]
-#[command(after_help = super::AFTER_HELP)]
-pub(super) struct SolverCli {
-    #[command(flatten)]
-    pub(super) flags: SolveFlags,
-}
-
-/// The `main` of a solver written by `lambdamat codegen`: parses the
-/// `solve` flags, builds the system, solves and prints; returns the exit
-/// code (0 ok, 1 usage, 2 invalid system, 3 failed computation).
-pub fn solver_main(system: fn() -> Result<CompiledSystem, PlanError>) -> i32 {
-    let cli = match super::parse_args::<SolverCli>() {
-        Ok(c) => c,
-        Err(code) => return code,
-    };
-    let mut stdout = super::output::Stdout::new();
-    let result = system()
-        .map_err(CliError::from)
-        .and_then(|sys| solve_and_report(&sys, &cli.flags, &[], &mut stdout));
-    let _ = stdout.flush();
-    super::exit_code(result)
-}
-
-/// The JSON object: `method`, `unknowns`, `outputs`, `error_estimate`,
-/// `commutator_defects` and a few diagnostics.
-pub fn to_json(r: &SolveReport) -> Value {
-    let mut unknowns = Map::new();
-    for u in &r.unknowns {
-        unknowns.insert(
-            u.name.clone(),
-            json!({"x": u.x, "values": u.values, "weight": u.weight}),
-        );
-    }
-    let mut outputs = Map::new();
-    for (name, v) in &r.outputs {
-        outputs.insert(name.clone(), json!(v));
-    }
-    json!({
-        "method": r.method,
-        "model": r.model,
-        "target": r.target,
-        "unknowns": unknowns,
-        "outputs": outputs,
-        "error_estimate": r.error_estimate,
-        "converged": r.converged,
-        "level": r.level,
-        "dim": r.dim,
-        "cond": r.cond,
-        "commutator_defects": r.commutator_defects,
-        "warnings": r.warnings,
-        "pivots": r.pivots.iter().map(|(e, u)| json!({"equation": e, "unknown": u})).collect::<Vec<_>>(),
-    })
-}
-
-/// The text report.
-pub fn write_text(r: &SolveReport, w: &mut dyn Write) -> Result<(), CliError> {
-    let label = if r.model {
-        " (a MODEL: operators treated as commuting)"
-    } else {
-        ""
-    };
-    writeln!(w, "method: {}{label}", r.method)?;
-    writeln!(
-        w,
-        "level {}: {} coefficients per unknown on [{}, {}], condition ≈ {:.2e}",
-        r.level, r.dim, r.domain.0, r.domain.1, r.cond
-    )?;
-    writeln!(
-        w,
-        "error estimate: {:.2e}{}",
-        r.error_estimate,
-        if r.converged { "" } else { " (not converged)" }
-    )?;
-    for (name, v) in &r.outputs {
-        match v {
-            Some(v) => writeln!(w, "output {name} = {v:.15}")?,
-            None => writeln!(
-                w,
-                "output {name}: needs an unknown this method does not compute"
-            )?,
-        }
-    }
-    if !r.commutator_defects.is_empty() {
-        writeln!(
-            w,
-            "commutator defects ‖KaKb f - KbKa f‖/‖KaKb f‖ (f = 1 + x; f = the system's {}):",
-            r.target
-        )?;
-        let show = |v: Option<f64>| v.map_or("undefined".to_string(), |v| format!("{v:.3e}"));
-        for d in &r.commutator_defects {
-            writeln!(
-                w,
-                "  {} {}: {}; {}",
-                d.pair[0],
-                d.pair[1],
-                show(d.defect),
-                show(d.defect_on_solution)
-            )?;
-        }
-    }
-    for u in &r.unknowns {
-        writeln!(w, "{} (weight {}):", u.name, u.weight)?;
-        let step = (u.x.len() / 10).max(1);
-        for (x, v) in u.x.iter().zip(&u.values).step_by(step) {
-            writeln!(w, "  x = {x:<6} {v:.12}")?;
-        }
-    }
-    Ok(())
-}
-
-/// The unknowns as CSV: `x` and one column per unknown.
-fn csv(r: &SolveReport) -> String {
-    let mut s = String::from("x");
-    for u in &r.unknowns {
-        s.push(',');
-        s.push_str(&u.name);
-    }
-    s.push('\n');
-    // The union of the unknowns' grids (weighted unknowns skip a singular end).
-    let mut xs: Vec<f64> = r.unknowns.iter().flat_map(|u| u.x.clone()).collect();
-    xs.sort_by(f64::total_cmp);
-    xs.dedup();
-    for x in xs {
-        s.push_str(&format!("{x}"));
-        for u in &r.unknowns {
-            s.push(',');
-            if let Some(i) = u.x.iter().position(|&y| y == x) {
-                s.push_str(&format!("{:e}", u.values[i]));
-            }
-        }
-        s.push('\n');
-    }
-    s
 }
 
 /// The unknowns as an SVG plot (written by the caller to `path`).
