@@ -22,13 +22,18 @@
 //!   (kernels as Rust functions, solved through [`plan`] and [`numeric`]);
 //! * [`report`]: the one report of a numerical solve (every file, one
 //!   entry [`report::solve`]) and its text, JSON, CSV and SVG;
-//! * [`api`]: the small entry point — [`Problem`] with its methods
-//!   `smith`, `reduce`, `codegen` and `solve`, their values and one
-//!   [`Error`] — re-exported here; the CLI and the Python package are its
-//!   clients;
-//! * [`cli`]: the `lambdamat` command line and its text/LaTeX/JSON reports.
+//! * [`standalone`]: the `main` of generated solvers (no command-line
+//!   crates: they build with `default-features = false`);
+//! * `api` (feature `cli`, on by default): the small entry point —
+//!   `Problem` with its methods `smith`, `reduce`, `codegen` and `solve`,
+//!   their values and one `Error` — re-exported here; the CLI and the
+//!   Python package are its clients;
+//! * `cli` (feature `cli`): the `lambdamat` command line (clap, miette's
+//!   fancy output, plotters, indicatif).
 pub mod algebra;
+#[cfg(feature = "cli")]
 pub mod api;
+#[cfg(feature = "cli")]
 pub mod cli;
 pub mod codegen;
 pub mod hertz;
@@ -37,8 +42,10 @@ pub mod numeric;
 pub mod plan;
 pub mod reduce;
 pub mod report;
+pub mod standalone;
 pub mod system;
 
+#[cfg(feature = "cli")]
 pub use api::{
     Error, ErrorKind, Field, Location, Method, Problem, Reduction, SmithForm, SmithOptions,
     Solution, SolveOptions,

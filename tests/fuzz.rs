@@ -8,7 +8,7 @@
 //! input is measured and the slowest is reported.
 //!
 //! * CI runs a short seeded slice (`fuzz_slice`, a few seconds);
-//! * the long run is a documented command (README, "Fuzzing"):
+//! * the long run is a documented command (docs/history.md, "Fuzzing"):
 //!   `LAMBDAMAT_FUZZ_CASES=1000000 cargo test --release --test fuzz -- --ignored --nocapture --test-threads 1`
 //!   with `LAMBDAMAT_FUZZ_SEED` to start elsewhere; it fails on a panic or
 //!   on an input slower than `LAMBDAMAT_FUZZ_MAX_SECS` (default 10) and

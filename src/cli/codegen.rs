@@ -26,7 +26,7 @@ fn write_code(a: &CodegenArgs, code: &str, w: &mut dyn Write) -> Result<(), CliE
     match &a.output {
         Some(path) => {
             let note = format!(
-                "({} lines): build it as a binary of a crate that depends on lambdamat, or include it as a module",
+                "({} lines): build it as a binary of a crate that depends on lambdamat (default-features = false is enough), or include it as a module",
                 code.lines().count()
             );
             write_file(path, code.as_bytes(), &[a.file.as_path()], &note)?;

@@ -48,91 +48,17 @@ pub fn check_not_input(path: &Path, inputs: &[&Path]) -> Result<(), CliError> {
 
 /// Checks, before any work, that `path` can be written: not one of
 /// `inputs`, not a directory, and its directory exists and accepts the
-/// file (tried by opening it for appending, or by creating and removing
-/// it, so nothing is truncated and no file is left behind).
+/// file ([`crate::standalone::probe_writable`]: nothing is truncated and no
+/// file is left behind).
 pub fn check_writable(path: &Path, inputs: &[&Path]) -> Result<(), CliError> {
     check_not_input(path, inputs)?;
-    let refuse = |reason: String| CliError::Write {
+    crate::standalone::probe_writable(path).map_err(|reason| CliError::Write {
         path: path.display().to_string(),
         reason,
-    };
-    if path.is_dir() {
-        return Err(refuse("it is a directory".into()));
-    }
-    if path.exists() {
-        std::fs::OpenOptions::new()
-            .append(true)
-            .open(path)
-            .map_err(|e| refuse(e.to_string()))?;
-        return Ok(());
-    }
-    std::fs::OpenOptions::new()
-        .write(true)
-        .create_new(true)
-        .open(path)
-        .map_err(|e| refuse(e.to_string()))?;
-    let _ = std::fs::remove_file(path);
-    Ok(())
+    })
 }
 
-/// Prints one line on standard error; a closed or failing standard error
-/// is ignored (a message must never turn an exit code into a panic).
-pub fn note(line: &str) {
-    use std::io::Write as _;
-    let _ = writeln!(std::io::stderr(), "{line}");
-}
-
-/// Standard output for a command's report. Once the reader has gone away
-/// (a broken pipe: `lambdamat … | head -1`) further bytes are dropped
-/// and the command runs on, so its exit code is that of its result.
-pub struct Stdout {
-    inner: std::io::StdoutLock<'static>,
-    closed: bool,
-}
-
-impl Stdout {
-    /// The locked standard output.
-    pub fn new() -> Self {
-        Stdout {
-            inner: std::io::stdout().lock(),
-            closed: false,
-        }
-    }
-}
-
-impl Default for Stdout {
-    fn default() -> Self {
-        Self::new()
-    }
-}
-
-impl std::io::Write for Stdout {
-    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
-        if self.closed {
-            return Ok(buf.len());
-        }
-        match self.inner.write(buf) {
-            Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => {
-                self.closed = true;
-                Ok(buf.len())
-            }
-            other => other,
-        }
-    }
-
-    fn flush(&mut self) -> std::io::Result<()> {
-        if self.closed {
-            return Ok(());
-        }
-        match self.inner.flush() {
-            Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => {
-                self.closed = true;
-                Ok(())
-            }
-            other => other,
-        }
-    }
-}
+pub use crate::standalone::{Stdout, note};
 
 /// Writes `bytes` to `path` (never over one of `inputs`) and reports
 /// `wrote PATH` (with `note`, if any) on standard error.

@@ -1,9 +1,9 @@
 //! The `solve` command: parses the file, solves it through the one entry
 //! [`crate::report::solve`] and prints its [`Report`] as text or one JSON
 //! object, optionally with a CSV table and an SVG plot of the unknowns.
-//! The same report is the `main` of solvers written by `lambdamat
-//! codegen` ([`solver_main`], [`split_solver_main`]). It does no numerics
-//! and no formatting of its own.
+//! Solvers written by `lambdamat codegen` print the same report through
+//! [`crate::standalone`]. It does no numerics and no formatting of its
+//! own.
 use std::io::Write;
 use std::path::Path;
 
@@ -11,7 +11,7 @@ use super::error::CliError;
 use super::output::{check_writable, write_file};
 use super::smith::{Source, load_with_source};
 use super::{SolveArgs, SolveFlags};
-use crate::plan::{CompiledSystem, Method, PlanError, SplitInput};
+use crate::plan::{Method, PlanError};
 use crate::report::{Report, SolveSettings};
 
 /// `lambdamat solve FILE …`.
@@ -90,12 +90,7 @@ pub fn converged(r: &Report) -> Result<(), CliError> {
     if r.converged {
         Ok(())
     } else {
-        Err(CliError::NotConverged(format!(
-            "after {} levels an error estimate (largest {:.1e}) is above tol·max(1, |value|) with tol {:.1e}; the result above is marked \"not converged\"",
-            r.levels,
-            r.largest_estimate(),
-            r.tol
-        )))
+        Err(CliError::NotConverged(r.not_converged_message()))
     }
 }
 
@@ -106,46 +101,4 @@ pub fn located(e: PlanError, src: &Source) -> CliError {
         Some(errs) => CliError::Lang(Box::new(errs)),
         None => CliError::Plan(e),
     }
-}
-
-/// The flags of a generated solver (the `solve` flags without a file).
-#[derive(clap::Parser, Debug)]
-#[command(about = "A solver written by `lambdamat codegen`: solves its system and prints the report of `lambdamat solve`.", long_about = None)]
-#[command(after_help = super::AFTER_HELP)]
-pub(super) struct SolverCli {
-    #[command(flatten)]
-    pub(super) flags: SolveFlags,
-}
-
-/// The `main` of a solver `lambdamat codegen` wrote: parses the `solve`
-/// flags, builds the system with `solve`, solves and prints the report
-/// of `lambdamat solve`; returns the exit code (0 ok, 1 usage, 2 invalid
-/// system, 3 failed computation, 4 not converged).
-fn generated_main(solve: impl FnOnce(&SolveSettings) -> Result<Report, CliError>) -> i32 {
-    let cli = match super::parse_args::<SolverCli>() {
-        Ok(c) => c,
-        Err(code) => return code,
-    };
-    let mut stdout = super::output::Stdout::new();
-    let result = settings(&cli.flags)
-        .and_then(|s| check_outputs(&cli.flags, &[]).map(|()| s))
-        .and_then(|s| solve(&s))
-        .and_then(|r| print(&r, &cli.flags, &[], &mut stdout));
-    let _ = stdout.flush();
-    super::exit_code(result)
-}
-
-/// The `main` of a solver `lambdamat codegen` wrote for a file on one
-/// interval.
-pub fn solver_main(system: fn() -> Result<CompiledSystem, PlanError>) -> i32 {
-    generated_main(|s| Ok(crate::report::solve_compiled(&system()?, s)?))
-}
-
-/// The `main` of a solver `lambdamat codegen` wrote for a split-domain
-/// file.
-pub fn split_solver_main(input: fn() -> Result<SplitInput, PlanError>) -> i32 {
-    generated_main(|s| {
-        crate::report::split_method(s.method)?;
-        Ok(crate::report::solve_split(input()?, s)?)
-    })
 }

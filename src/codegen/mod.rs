@@ -55,9 +55,10 @@ pub fn solver_source(
     out.push_str(
         "\n/// Solves the system and prints the report of `lambdamat solve`; takes\n\
          /// `[--method coupled|ordered|commutative] [--tol T] [--max-level N] [--json]`\n\
-         /// `[--csv FILE] [--plot FILE.svg]` (see `--help`).\n\
+         /// `[--csv FILE]` (see `--help`). It needs lambdamat without its command line:\n\
+         /// `lambdamat = { path = \"…\", default-features = false }`.\n\
          pub fn main() {\n    \
-         std::process::exit(lambdamat::cli::solve::solver_main(system));\n}\n",
+         std::process::exit(lambdamat::standalone::solver_main(system));\n}\n",
     );
     Ok(out)
 }

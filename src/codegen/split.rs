@@ -42,9 +42,10 @@ pub fn split_solver_source(prog: &Program, from: &Provenance) -> Result<String, 
     out.push_str(&code);
     out.push_str(
         "\n/// Solves the problem and prints the report of `lambdamat solve`; takes\n\
-         /// `[--tol T] [--max-level N] [--json]` (see `--help`).\n\
+         /// `[--tol T] [--max-level N] [--json]` (see `--help`). It needs lambdamat without\n\
+         /// its command line: `lambdamat = { path = \"…\", default-features = false }`.\n\
          pub fn main() {\n    \
-         std::process::exit(lambdamat::cli::solve::split_solver_main(input));\n}\n",
+         std::process::exit(lambdamat::standalone::split_solver_main(input));\n}\n",
     );
     Ok(out)
 }

@@ -26,6 +26,7 @@
 //! * [`text`]: the text report;
 //! * [`svg`]: the plot of the unknowns.
 
+#[cfg(feature = "cli")]
 pub mod svg;
 pub mod text;
 
@@ -475,6 +476,17 @@ impl Report {
             s.push('\n');
         }
         s
+    }
+
+    /// The message of a result that did not reach its tolerance (exit 4),
+    /// the same for `lambdamat solve` and generated solvers.
+    pub fn not_converged_message(&self) -> String {
+        format!(
+            "after {} levels an error estimate (largest {:.1e}) is above tol·max(1, |value|) with tol {:.1e}; the result above is marked \"not converged\"",
+            self.levels,
+            self.largest_estimate(),
+            self.tol
+        )
     }
 
     /// The largest estimate of every reported quantity (0 with none).

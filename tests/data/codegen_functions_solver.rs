@@ -146,7 +146,8 @@ pub fn system() -> Result<CompiledSystem, PlanError> {
 
 /// Solves the system and prints the report of `lambdamat solve`; takes
 /// `[--method coupled|ordered|commutative] [--tol T] [--max-level N] [--json]`
-/// `[--csv FILE] [--plot FILE.svg]` (see `--help`).
+/// `[--csv FILE]` (see `--help`). It needs lambdamat without its command line:
+/// `lambdamat = { path = "…", default-features = false }`.
 pub fn main() {
-    std::process::exit(lambdamat::cli::solve::solver_main(system));
+    std::process::exit(lambdamat::standalone::solver_main(system));
 }
