@@ -344,7 +344,6 @@ impl Validator {
                 Stmt::Var(_) | Stmt::Param { .. } | Stmt::Unknown(_, None) => {}
             }
         }
-        self.side_conditions_on_one_interval(file);
         self.square(file);
     }
 

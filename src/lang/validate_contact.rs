@@ -5,7 +5,7 @@
 //! program (that is `lower_contact.rs`) or touches the operator part.
 use num_traits::Signed;
 
-use super::ast::{BinOp, Expr, ExprKind, File, Ident, Interval, Span, Stmt};
+use super::ast::{BinOp, Expr, ExprKind, Ident, Interval};
 use super::error::{ErrorKind, LangError};
 use super::scope::{Entry, Sort};
 use super::validate::Validator;
@@ -376,44 +376,5 @@ impl Validator {
             ));
         }
         self.real_expr(rhs, false);
-    }
-
-    /// Side conditions are rows of the one-interval solver: a file with
-    /// split-domain statements cannot have them.
-    pub(super) fn side_conditions_on_one_interval(&mut self, file: &File) {
-        let split = file.statements.iter().any(|s| match &s.kind {
-            Stmt::Relation { .. } | Stmt::Scalar { .. } | Stmt::Singular { .. } => true,
-            Stmt::Equation { domain, .. } => domain.is_some(),
-            Stmt::Condition { lhs, .. } => {
-                !super::validate_system::is_side_condition(lhs, &self.scope)
-            }
-            _ => false,
-        });
-        if !split {
-            return;
-        }
-        let sides: Vec<Span> = file
-            .statements
-            .iter()
-            .filter_map(|s| match &s.kind {
-                Stmt::Condition { lhs, .. }
-                    if super::validate_system::is_side_condition(lhs, &self.scope) =>
-                {
-                    Some(lhs.span)
-                }
-                _ => None,
-            })
-            .collect();
-        for span in sides {
-            self.err(
-                LangError::new(
-                    ErrorKind::Unsupported,
-                    "side conditions on the unknowns are for systems on one interval; this file has split-domain statements",
-                    span,
-                    "side condition",
-                )
-                .with_help("remove the `on` intervals, relations, scalars and singular declarations, or the side condition"),
-            );
-        }
     }
 }

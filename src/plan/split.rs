@@ -10,8 +10,12 @@
 //! each equation at the nodes of the unknown it is paired with on each
 //! subinterval (in written order), and one extra collocation point per
 //! singular term at the point's side (the one-sided limit of the paired
-//! equation there). Owns this discretisation; root finding and the
-//! refinement ladder are `split_solve.rs`'s.
+//! equation there). Products of operators are applied in written order
+//! through an unweighted intermediate basis on the whole mesh (as on one
+//! interval, `discrete.rs`); each side condition (`condition int(..) f =
+//! C`, a point value) is one more functional row, and with such rows the
+//! system is solved by least squares. Owns this discretisation; root
+//! finding and the refinement ladder are `split_solve.rs`'s.
 //!
 //! The Hertz problem (`examples/hertz.lmx`) gets exactly the
 //! discretisation of the hand-written solver (the tests' oracle,
@@ -25,7 +29,7 @@ use super::compiled::{CompiledSystem, Fn1, OutputTerm};
 use super::error::PlanError;
 use super::split_input::{SplitContact, SplitInput, SplitInterval, SplitKind};
 use crate::numeric::operator::Term as NTerm;
-use crate::numeric::solve::{CheckedLu, DEFAULT_MAX_COND};
+use crate::numeric::solve::{CheckedLu, DEFAULT_MAX_COND, least_squares};
 use crate::numeric::{
     Assembler, Factor, Grading, Limits, Mesh, Operator, PanelBasis, Side, Singularity,
 };
@@ -89,6 +93,10 @@ impl SplitLevel {
     }
 }
 
+/// Where the block cache's keys for single operator symbols start
+/// (equation indices stay below it).
+const SYMBOL_KEY: usize = 1 << 32;
+
 /// Most grading layers per side of a graded point: the smallest panel
 /// stays above `0.25^20 ≈ 1e-12` of its neighbourhood.
 pub const MAX_LAYERS: usize = 20;
@@ -101,8 +109,12 @@ pub struct SplitProblem {
     pub contact: SplitContact,
     /// The unknowns' interval.
     pub domain: (f64, f64),
-    /// `ops[e][j]`: the operator of equation `e` on unknown `j`.
+    /// `ops[e][j]`: the linear part (identity and single symbols) of the
+    /// operator of equation `e` on unknown `j`.
     ops: Vec<Vec<Option<Operator>>>,
+    /// `words[e][j]`: its products of two or more symbols, each with its
+    /// coefficient, symbols in written order (the last applied first).
+    words: Vec<Vec<Vec<Product>>>,
     /// Ends of the unknowns' interval toward which the mesh is graded
     /// although no `singular` declaration names them: set by the end
     /// check of the ladder (`split_ends.rs`) when grading them moved an
@@ -117,6 +129,10 @@ pub struct SplitProblem {
     /// [`SplitProblem::block`]).
     cache: std::sync::Mutex<std::collections::HashMap<Vec<u64>, Arc<DMatrix<f64>>>>,
 }
+
+/// A product of two or more operator symbols with its coefficient,
+/// symbols in written order (the last applied first).
+type Product = (f64, Vec<usize>);
 
 /// How an unknown is represented on one subinterval.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -151,6 +167,9 @@ pub struct Discrete {
     pub breaks: Vec<f64>,
     /// Per unknown, its basis on the subintervals where it is free.
     pub bases: Vec<Option<PanelBasis>>,
+    /// The intermediate basis of operator products (unweighted, on the
+    /// whole mesh), when an equation has one.
+    pub mid: Option<PanelBasis>,
     status: Vec<Vec<Status>>,
     /// The exact singular terms.
     pub terms: Vec<SingularTerm>,
@@ -161,6 +180,11 @@ pub struct Discrete {
     pub residuals: Vec<f64>,
     /// Condition estimate.
     pub cond: f64,
+    /// With side conditions, the relative least-squares residual of the
+    /// collocation and condition rows together (rounding-small when they
+    /// are consistent; 0 without side conditions): the answer is no more
+    /// accurate than it.
+    pub consistency: f64,
 }
 
 /// Read-only access for `split_fields.rs` (field sampling), kept apart
@@ -236,13 +260,82 @@ impl SplitProblem {
         self.end_check = Some(c);
     }
 
-    /// The operator of equation `e` on unknown `j` (`None` where the
-    /// unknown does not appear).
+    /// The linear part (identity and single symbols) of the operator of
+    /// equation `e` on unknown `j` (`None` where it has none); its
+    /// products are [`SplitProblem::products`].
     pub fn operator(&self, e: usize, j: usize) -> Option<&Operator> {
         self.ops
             .get(e)
             .and_then(|r| r.get(j))
             .and_then(Option::as_ref)
+    }
+
+    /// Whether equation `e` applies a product of operators to unknown `j`.
+    pub fn has_products_in(&self, e: usize, j: usize) -> bool {
+        self.words
+            .get(e)
+            .and_then(|r| r.get(j))
+            .is_some_and(|w| !w.is_empty())
+    }
+
+    /// Whether some equation applies a product of operators.
+    pub fn has_products(&self) -> bool {
+        self.words.iter().flatten().any(|w| !w.is_empty())
+    }
+
+    /// The collocation matrix at `xs` of the products of operators in
+    /// equation `e` on unknown `j`, applied to the functions of `asm`'s
+    /// basis restricted to `window` (`None` when there are none). Each
+    /// word is applied in written order, its last symbol first, through
+    /// the level's intermediate basis `mid` (unweighted, on the whole
+    /// mesh): the innermost symbol's values at `mid`'s nodes are its
+    /// coefficients there, every further symbol maps them to its values at
+    /// the same nodes, and the outermost is collocated at `xs`, as the
+    /// one-interval products are (`discrete.rs`). With `cached`, the
+    /// blocks are remembered ([`SplitProblem::block`]).
+    pub(super) fn products(
+        &self,
+        (e, j): (usize, usize),
+        asm: &Assembler,
+        xs: &[f64],
+        window: (f64, f64),
+        mid: Option<&Assembler>,
+        cached: bool,
+    ) -> Result<Option<DMatrix<f64>>, PlanError> {
+        let words = &self.words[e][j];
+        if words.is_empty() {
+            return Ok(None);
+        }
+        let mid = mid
+            .ok_or_else(|| invalid("a product of operators needs the intermediate basis".into()))?;
+        let mid_nodes = mid.basis().nodes();
+        let mid_sup = mid.basis().support();
+        let symbol = |s: usize| -> Result<&Operator, PlanError> {
+            self.sys.operators[s]
+                .as_ref()
+                .ok_or_else(|| invalid(format!("operator #{s} has no definition")))
+        };
+        let block = |s: usize, asm: &Assembler, pts: &[f64], win: (f64, f64), keep: bool| {
+            let op = symbol(s)?;
+            if keep {
+                self.block((SYMBOL_KEY + s, 0, 0), asm, op, pts, win)
+            } else {
+                asm.matrix_on(op, pts, win)
+                    .map(Arc::new)
+                    .map_err(num("assembly"))
+            }
+        };
+        let mut out = DMatrix::zeros(xs.len(), asm.basis().dim());
+        for (c, word) in words {
+            let (&inner, outer) = word.split_last().expect("a product has two symbols");
+            let (&first, middle) = outer.split_first().expect("a product has two symbols");
+            let mut m = (*block(inner, asm, &mid_nodes, window, true)?).clone();
+            for &s in middle.iter().rev() {
+                m = &*block(s, mid, &mid_nodes, mid_sup, true)? * m;
+            }
+            out += &*block(first, mid, xs, mid_sup, cached)? * m * *c;
+        }
+        Ok(Some(out))
     }
 }
 
@@ -289,30 +382,31 @@ impl SplitProblem {
         };
         let n = sys.unknowns.len();
         let mut ops = Vec::new();
+        let mut words = Vec::new();
+        let defined = |s: usize| {
+            sys.operators
+                .get(s)
+                .cloned()
+                .flatten()
+                .ok_or_else(|| invalid(format!("operator #{s} has no definition")))
+        };
         for eq in &sys.equations {
             let mut row = Vec::with_capacity(n);
+            let mut row_words = Vec::with_capacity(n);
             for p in &eq.lhs {
                 let mut op: Option<Operator> = None;
+                let mut products = Vec::new();
                 for (word, c) in p.terms() {
                     let c = super::compile::rational(c);
                     let piece = match word.as_slice() {
                         [] => Operator::identity().scaled(c),
-                        [s] => sys
-                            .operators
-                            .get(*s)
-                            .cloned()
-                            .flatten()
-                            .ok_or_else(|| invalid(format!("operator #{s} has no definition")))?
-                            .scaled(c),
+                        [s] => defined(*s)?.scaled(c),
                         _ => {
-                            return Err(PlanError::Unsupported {
-                                operator: word
-                                    .iter()
-                                    .map(|&i| sys.symbols[i].clone())
-                                    .collect::<Vec<_>>()
-                                    .join("*"),
-                                reason: "products of operators in a split-domain problem are not supported yet".into(),
-                            });
+                            for &s in word {
+                                defined(s)?;
+                            }
+                            products.push((c, word.clone()));
+                            continue;
                         }
                     };
                     op = Some(match op {
@@ -321,8 +415,10 @@ impl SplitProblem {
                     });
                 }
                 row.push(op);
+                row_words.push(products);
             }
             ops.push(row);
+            words.push(row_words);
         }
         if contact.conditions.len() != contact.scalars.len() {
             return Err(invalid(format!(
@@ -336,6 +432,7 @@ impl SplitProblem {
             contact,
             domain,
             ops,
+            words,
             graded_ends: Vec::new(),
             end_check: None,
             probe: None,
@@ -498,6 +595,12 @@ impl SplitProblem {
             bases[u] = Some(PanelBasis::new(&m, &cnt, weight).map_err(num("basis"))?);
             supports[u] = Some((lo, hi));
         }
+        // The intermediate basis of operator products.
+        let mid_basis = if self.has_products() {
+            Some(PanelBasis::new(&mesh, &counts, Vec::new()).map_err(num("basis"))?)
+        } else {
+            None
+        };
         // Exact singular terms.
         let mut terms = Vec::new();
         for s in &c.singulars {
@@ -623,6 +726,11 @@ impl SplitProblem {
             .map(|t| Assembler::new(&t.basis))
             .collect::<Result<_, _>>()
             .map_err(num("assembly"))?;
+        let mid_asm = mid_basis
+            .as_ref()
+            .map(Assembler::new)
+            .transpose()
+            .map_err(num("assembly"))?;
         let mut mat = DMatrix::zeros(nrows, ncols);
         let mut rhs = DVector::zeros(nrows);
         let mut r0 = 0;
@@ -635,25 +743,42 @@ impl SplitProblem {
                 rhs[r0 + i] = f(x);
             }
             for j in 0..nu {
-                let Some(op) = &self.ops[e][j] else { continue };
+                let op = self.ops[e][j].as_ref();
+                if op.is_none() && self.words[e][j].is_empty() {
+                    continue;
+                }
+                // The linear part's block plus the products' block.
+                let applied = |key: usize,
+                               asm: &Assembler,
+                               win: (f64, f64)|
+                 -> Result<DMatrix<f64>, PlanError> {
+                    let mut m = match op {
+                        Some(op) => (*self.block((e, j, key), asm, op, xs, win)?).clone(),
+                        None => DMatrix::zeros(xs.len(), asm.basis().dim()),
+                    };
+                    if let Some(p) = self.products((e, j), asm, xs, win, mid_asm.as_ref(), true)? {
+                        m += p;
+                    }
+                    Ok(m)
+                };
                 if let (Some(asm), Some(sup)) = (&asms[j], supports[j]) {
-                    let blk = self.block((e, j, 0), asm, op, xs, sup)?;
+                    let blk = applied(0, asm, sup)?;
                     let mut v = mat.view_mut((r0, offsets[j]), (xs.len(), blk.ncols()));
-                    v += &*blk;
+                    v += &blk;
                 }
                 for k in 0..npieces {
                     if let Status::Related { coeff, other } = status[j][k] {
                         let win = (breaks[k], breaks[k + 1]);
                         let asm = self.related_basis(&asms, &status, other, k, j)?;
-                        let blk = &*self.block((e, j, 1), asm, op, xs, win)? * coeff;
+                        let blk = applied(1, asm, win)? * coeff;
                         let mut v = mat.view_mut((r0, offsets[other]), (xs.len(), blk.ncols()));
                         v += &blk;
                     }
                 }
                 for (ti, t) in terms.iter().enumerate().filter(|(_, t)| t.unknown == j) {
                     let sup = t.basis.support();
-                    let blk = self.block((e, j, 2 + ti), &term_asms[ti], op, xs, sup)?;
-                    let col = &*blk * DVector::from_column_slice(&t.phi);
+                    let blk = applied(2 + ti, &term_asms[ti], sup)?;
+                    let col = &blk * DVector::from_column_slice(&t.phi);
                     let mut v = mat.view_mut((r0, dim + ti), (xs.len(), 1));
                     v += &col;
                 }
@@ -683,11 +808,28 @@ impl SplitProblem {
             })?;
             rhs[row] = (self.sys.equations[e].rhs)(t.at);
             for j in 0..nu {
-                let Some(op) = &self.ops[e][j] else { continue };
-                if let (Some(asm), Some(sup)) = (&asms[j], supports[j]) {
+                let op = self.ops[e][j].as_ref();
+                if op.is_none() && self.words[e][j].is_empty() {
+                    continue;
+                }
+                // The row of the linear part plus the products' row at the
+                // point (their inner operators smooth the singular term,
+                // so the outer one is evaluated at the point itself).
+                let row_at = |asm: &Assembler, win: (f64, f64)| -> Result<Vec<f64>, PlanError> {
                     let mut r = vec![0.0; asm.basis().dim()];
-                    asm.row_into(op, t.at, sup, &mut r)
-                        .map_err(num("assembly"))?;
+                    if let Some(op) = op {
+                        asm.row_into(op, t.at, win, &mut r)
+                            .map_err(num("assembly"))?;
+                    }
+                    if let Some(p) =
+                        self.products((e, j), asm, &[t.at], win, mid_asm.as_ref(), false)?
+                    {
+                        r.iter_mut().zip(p.iter()).for_each(|(a, b)| *a += b);
+                    }
+                    Ok(r)
+                };
+                if let (Some(asm), Some(sup)) = (&asms[j], supports[j]) {
+                    let r = row_at(asm, sup)?;
                     for (q, v) in r.iter().enumerate() {
                         mat[(row, offsets[j] + q)] += v;
                     }
@@ -695,9 +837,7 @@ impl SplitProblem {
                 for kk in 0..npieces {
                     if let Status::Related { coeff, other } = status[j][kk] {
                         let asm = self.related_basis(&asms, &status, other, kk, j)?;
-                        let mut r = vec![0.0; asm.basis().dim()];
-                        asm.row_into(op, t.at, (breaks[kk], breaks[kk + 1]), &mut r)
-                            .map_err(num("assembly"))?;
+                        let r = row_at(asm, (breaks[kk], breaks[kk + 1]))?;
                         for (q, v) in r.iter().enumerate() {
                             mat[(row, offsets[other] + q)] += coeff * v;
                         }
@@ -705,20 +845,67 @@ impl SplitProblem {
                 }
                 for (tj, u) in terms.iter().enumerate().filter(|(_, u)| u.unknown == j) {
                     let v = if tj == ti {
-                        one_sided_limit(op, t, &term_asms[tj])?
+                        let linear = match op {
+                            Some(op) => one_sided_limit(op, t, &term_asms[tj])?,
+                            None => 0.0,
+                        };
+                        let products = self
+                            .products(
+                                (e, j),
+                                &term_asms[tj],
+                                &[t.at],
+                                u.basis.support(),
+                                mid_asm.as_ref(),
+                                false,
+                            )?
+                            .map_or(0.0, |p| {
+                                p.iter().zip(&u.phi).map(|(a, b)| a * b).sum::<f64>()
+                            });
+                        linear + products
                     } else {
-                        let mut r = vec![0.0; u.basis.dim()];
-                        term_asms[tj]
-                            .row_into(op, t.at, u.basis.support(), &mut r)
-                            .map_err(num("assembly"))?;
+                        let r = row_at(&term_asms[tj], u.basis.support())?;
                         r.iter().zip(&u.phi).map(|(a, b)| a * b).sum()
                     };
                     mat[(row, dim + tj)] += v;
                 }
             }
         }
-        let lu = CheckedLu::new(&mat, DEFAULT_MAX_COND).map_err(num("split-domain system"))?;
-        let solution = lu.solve(&rhs).map_err(num("split-domain system"))?;
+        // Side conditions: one functional row each, solved with the
+        // collocation rows by least squares.
+        let (solution, cond, consistency) = if self.sys.conditions.is_empty() {
+            let lu = CheckedLu::new(&mat, DEFAULT_MAX_COND).map_err(num("split-domain system"))?;
+            (
+                lu.solve(&rhs).map_err(num("split-domain system"))?,
+                lu.cond(),
+                0.0,
+            )
+        } else {
+            let layout = Layout {
+                breaks: &breaks,
+                bases: &bases,
+                status: &status,
+                terms: &terms,
+                offsets: &offsets,
+            };
+            let nc = self.sys.conditions.len();
+            let mut big = DMatrix::zeros(nrows + nc, ncols);
+            big.rows_mut(0, nrows).copy_from(&mat);
+            let mut b = DVector::zeros(nrows + nc);
+            b.rows_mut(0, nrows).copy_from(&rhs);
+            for (i, cond) in self.sys.conditions.iter().enumerate() {
+                let (row, constant) = layout.functional(&cond.terms)?;
+                if row.iter().any(|v| !v.is_finite()) {
+                    return Err(invalid(format!(
+                        "{}: an unknown is not finite where it is taken (a point value at a singular weight?)",
+                        cond.text
+                    )));
+                }
+                big.row_mut(nrows + i).copy_from(&row.transpose());
+                b[nrows + i] = cond.value - constant;
+            }
+            least_squares(&big, &b, DEFAULT_MAX_COND)
+                .map_err(num("the equations with side conditions (least squares)"))?
+        };
         let residuals = c
             .conditions
             .iter()
@@ -736,12 +923,14 @@ impl SplitProblem {
             vars,
             breaks,
             bases,
+            mid: mid_basis,
             status,
             terms,
             offsets,
             solution,
             residuals,
-            cond: lu.cond(),
+            cond,
+            consistency,
         })
     }
 
@@ -809,94 +998,11 @@ impl SplitProblem {
         }
     }
 
-    /// The value of output `o` for a discrete solution.
+    /// The value of output `o` for a discrete solution: its functional's
+    /// row ([`Layout::functional`]) applied to the coefficients.
     pub fn output(&self, d: &Discrete, o: usize) -> Result<f64, PlanError> {
-        let mut total = 0.0;
-        for t in &self.sys.outputs[o].terms {
-            match t {
-                OutputTerm::Constant(c) => total += c,
-                OutputTerm::Integral {
-                    coeff,
-                    lower,
-                    upper,
-                    weight,
-                    unknown,
-                } => total += coeff * self.integral(d, *unknown, *lower, *upper, weight)?,
-                OutputTerm::Point { coeff, at, unknown } => {
-                    total += coeff * self.point(d, *unknown, *at)
-                }
-            }
-        }
-        Ok(total)
-    }
-
-    /// The value `u(at)` of unknown `u` of `d` (free part, substituted
-    /// parts and exact singular terms); at a breakpoint, the piece to its
-    /// right.
-    fn point(&self, d: &Discrete, u: usize, at: f64) -> f64 {
-        let mut total = 0.0;
-        if let Some(b) = &d.bases[u] {
-            total += b.eval(self.coefs(d, u), at);
-        }
-        for k in 0..d.breaks.len() - 1 {
-            let inside = at >= d.breaks[k]
-                && (at < d.breaks[k + 1] || (k + 2 == d.breaks.len() && at <= d.breaks[k + 1]));
-            if let Status::Related { coeff, other } = d.status[u][k]
-                && inside
-                && let Some(b) = &d.bases[other]
-            {
-                total += coeff * b.eval(self.coefs(d, other), at);
-            }
-        }
-        let dim = d.offsets[d.offsets.len() - 1];
-        for (ti, t) in d.terms.iter().enumerate().filter(|(_, t)| t.unknown == u) {
-            total += d.solution[dim + ti] * t.basis.eval(&t.phi, at);
-        }
-        total
-    }
-
-    /// `∫_lower^upper w(x) u(x) dx` for unknown `u` of `d`.
-    fn integral(
-        &self,
-        d: &Discrete,
-        u: usize,
-        lower: f64,
-        upper: f64,
-        w: &Fn1,
-    ) -> Result<f64, PlanError> {
-        let (lo, hi, sign) = if lower <= upper {
-            (lower, upper, 1.0)
-        } else {
-            (upper, lower, -1.0)
-        };
-        let piece = |basis: &PanelBasis, coef: &[f64], a: f64, b: f64| -> Result<f64, PlanError> {
-            let (a, b) = (a.max(lo), b.min(hi));
-            if a.partial_cmp(&b) != Some(std::cmp::Ordering::Less) {
-                return Ok(0.0);
-            }
-            let w = w.clone();
-            let asm = Assembler::new(basis).map_err(num("output"))?;
-            let row = asm.functional(move |t| w(t), a, b).map_err(num("output"))?;
-            Ok(row.iter().zip(coef).map(|(x, y)| x * y).sum())
-        };
-        let mut total = 0.0;
-        if let Some(b) = &d.bases[u] {
-            let (a, bb) = b.support();
-            total += piece(b, self.coefs(d, u), a, bb)?;
-        }
-        for k in 0..d.breaks.len() - 1 {
-            if let Status::Related { coeff, other } = d.status[u][k]
-                && let Some(b) = &d.bases[other]
-            {
-                total += coeff * piece(b, self.coefs(d, other), d.breaks[k], d.breaks[k + 1])?;
-            }
-        }
-        let dim = d.offsets[d.offsets.len() - 1];
-        for (ti, t) in d.terms.iter().enumerate().filter(|(_, t)| t.unknown == u) {
-            let (a, b) = t.basis.support();
-            total += d.solution[dim + ti] * piece(&t.basis, &t.phi, a, b)?;
-        }
-        Ok(sign * total)
+        let (row, constant) = d.layout().functional(&self.sys.outputs[o].terms)?;
+        Ok(constant + row.dot(&d.solution))
     }
 
     fn coefs<'a>(&self, d: &'a Discrete, u: usize) -> &'a [f64] {
@@ -986,6 +1092,157 @@ impl SplitProblem {
     /// Number of coefficients of `d`.
     pub fn size(d: &Discrete) -> usize {
         d.solution.len()
+    }
+}
+
+/// Where every part of every unknown lives among the columns of one
+/// discretisation: what a linear functional of the unknowns needs to
+/// become a row.
+pub(super) struct Layout<'a> {
+    breaks: &'a [f64],
+    bases: &'a [Option<PanelBasis>],
+    status: &'a [Vec<Status>],
+    terms: &'a [SingularTerm],
+    offsets: &'a [usize],
+}
+
+impl Discrete {
+    pub(super) fn layout(&self) -> Layout<'_> {
+        Layout {
+            breaks: &self.breaks,
+            bases: &self.bases,
+            status: &self.status,
+            terms: &self.terms,
+            offsets: &self.offsets,
+        }
+    }
+}
+
+impl Layout<'_> {
+    /// Number of columns: every basis's coefficients, then one per
+    /// singular term.
+    fn columns(&self) -> usize {
+        self.offsets[self.offsets.len() - 1] + self.terms.len()
+    }
+
+    /// The row of the linear functional `terms` (an output's or a side
+    /// condition's) on the columns, and its constant part: each integral
+    /// `∫_lower^upper w u` and point value `u(at)` taken over every part
+    /// of `u` (its free basis, the pieces where a relation substitutes it,
+    /// its exact singular terms; at a breakpoint, a point value takes the
+    /// piece to its right).
+    pub(super) fn functional(
+        &self,
+        terms: &[OutputTerm],
+    ) -> Result<(DVector<f64>, f64), PlanError> {
+        let mut row = DVector::zeros(self.columns());
+        let mut constant = 0.0;
+        for t in terms {
+            match t {
+                OutputTerm::Constant(c) => constant += c,
+                OutputTerm::Integral {
+                    coeff,
+                    lower,
+                    upper,
+                    weight,
+                    unknown,
+                } => self.integral(&mut row, *coeff, *unknown, *lower, *upper, weight)?,
+                OutputTerm::Point { coeff, at, unknown } => {
+                    self.point(&mut row, *coeff, *unknown, *at)
+                }
+            }
+        }
+        Ok((row, constant))
+    }
+
+    fn point(&self, row: &mut DVector<f64>, coeff: f64, u: usize, at: f64) {
+        let mut add = |col0: usize, r: Vec<f64>, f: f64| {
+            for (q, v) in r.into_iter().enumerate() {
+                row[col0 + q] += f * v;
+            }
+        };
+        if let Some(b) = &self.bases[u] {
+            add(self.offsets[u], b.point_row(at), coeff);
+        }
+        let n = self.breaks.len();
+        for k in 0..n - 1 {
+            let inside = at >= self.breaks[k]
+                && (at < self.breaks[k + 1] || (k + 2 == n && at <= self.breaks[k + 1]));
+            if let Status::Related { coeff: a, other } = self.status[u][k]
+                && inside
+                && let Some(b) = &self.bases[other]
+            {
+                add(self.offsets[other], b.point_row(at), coeff * a);
+            }
+        }
+        let dim = self.offsets[self.offsets.len() - 1];
+        for (ti, t) in self
+            .terms
+            .iter()
+            .enumerate()
+            .filter(|(_, t)| t.unknown == u)
+        {
+            row[dim + ti] += coeff * t.basis.eval(&t.phi, at);
+        }
+    }
+
+    fn integral(
+        &self,
+        row: &mut DVector<f64>,
+        coeff: f64,
+        u: usize,
+        lower: f64,
+        upper: f64,
+        w: &Fn1,
+    ) -> Result<(), PlanError> {
+        let (lo, hi, coeff) = if lower <= upper {
+            (lower, upper, coeff)
+        } else {
+            (upper, lower, -coeff)
+        };
+        let piece = |basis: &PanelBasis, a: f64, b: f64| -> Result<Option<Vec<f64>>, PlanError> {
+            let (a, b) = (a.max(lo), b.min(hi));
+            if a.partial_cmp(&b) != Some(std::cmp::Ordering::Less) {
+                return Ok(None);
+            }
+            let w = w.clone();
+            let asm = Assembler::new(basis).map_err(num("output"))?;
+            asm.functional(move |t| w(t), a, b)
+                .map(Some)
+                .map_err(num("output"))
+        };
+        if let Some(b) = &self.bases[u] {
+            let (a, bb) = b.support();
+            if let Some(r) = piece(b, a, bb)? {
+                for (q, v) in r.into_iter().enumerate() {
+                    row[self.offsets[u] + q] += coeff * v;
+                }
+            }
+        }
+        for k in 0..self.breaks.len() - 1 {
+            if let Status::Related { coeff: f, other } = self.status[u][k]
+                && let Some(b) = &self.bases[other]
+                && let Some(r) = piece(b, self.breaks[k], self.breaks[k + 1])?
+            {
+                for (q, v) in r.into_iter().enumerate() {
+                    row[self.offsets[other] + q] += coeff * f * v;
+                }
+            }
+        }
+        let dim = self.offsets[self.offsets.len() - 1];
+        for (ti, t) in self
+            .terms
+            .iter()
+            .enumerate()
+            .filter(|(_, t)| t.unknown == u)
+        {
+            let (a, b) = t.basis.support();
+            if let Some(r) = piece(&t.basis, a, b)? {
+                let v: f64 = r.iter().zip(&t.phi).map(|(x, y)| x * y).sum();
+                row[dim + ti] += coeff * v;
+            }
+        }
+        Ok(())
     }
 }
 

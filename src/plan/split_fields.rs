@@ -13,7 +13,7 @@
 //! carries an error estimate: the distance between the two levels at the
 //! same point, as the solver's estimate of a scalar or an output is the
 //! distance between the two levels' values.
-use nalgebra::DVector;
+use nalgebra::{DMatrix, DVector};
 
 use super::error::PlanError;
 use super::split::{Discrete, SplitProblem};
@@ -65,6 +65,8 @@ pub struct Fields<'a> {
     d: &'a Discrete,
     asms: Vec<Option<Assembler<'a>>>,
     term_asms: Vec<Assembler<'a>>,
+    /// The intermediate basis of operator products, if any.
+    mid: Option<Assembler<'a>>,
 }
 
 fn invalid(s: String) -> PlanError {
@@ -381,11 +383,18 @@ impl<'a> Fields<'a> {
             .map(|t| Assembler::new(&t.basis))
             .collect::<Result<Vec<_>, _>>()
             .map_err(ctx())?;
+        let mid = d
+            .mid
+            .as_ref()
+            .map(Assembler::new)
+            .transpose()
+            .map_err(ctx())?;
         Ok(Fields {
             problem,
             d,
             asms,
             term_asms,
+            mid,
         })
     }
 
@@ -499,14 +508,23 @@ impl<'a> Fields<'a> {
         let mut r: Vec<f64> = xs.iter().map(|&x| -(eq.rhs)(x)).collect();
         let add = |r: &mut Vec<f64>,
                    asm: &Assembler,
-                   op: &Operator,
+                   (e, j, op): (usize, usize, Option<&Operator>),
                    window: (f64, f64),
                    coef: &[f64],
                    factor: f64|
          -> Result<(), PlanError> {
-            let m = asm
-                .matrix_on(op, xs, window)
-                .map_err(PlanError::numeric("residual"))?;
+            let mut m = match op {
+                Some(op) => asm
+                    .matrix_on(op, xs, window)
+                    .map_err(PlanError::numeric("residual"))?,
+                None => DMatrix::zeros(xs.len(), asm.basis().dim()),
+            };
+            if let Some(p) =
+                self.problem
+                    .products((e, j), asm, xs, window, self.mid.as_ref(), false)?
+            {
+                m += p;
+            }
             let v = m * DVector::from_column_slice(coef);
             for (ri, vi) in r.iter_mut().zip(v.iter()) {
                 *ri += factor * vi;
@@ -515,9 +533,11 @@ impl<'a> Fields<'a> {
         };
         let b = &self.d.breaks;
         for j in 0..self.problem.sys.unknowns.len() {
-            let Some(op) = self.problem.operator(e, j) else {
+            let op = self.problem.operator(e, j);
+            if op.is_none() && !self.problem.has_products_in(e, j) {
                 continue;
-            };
+            }
+            let op = (e, j, op);
             if let (Some(asm), Some(basis)) = (&self.asms[j], &self.d.bases[j]) {
                 add(
                     &mut r,

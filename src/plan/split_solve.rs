@@ -210,7 +210,8 @@ pub fn solve_split_input_fields(
         } else {
             0.0
         };
-        let mut est = (!levels.is_empty()).then(|| estimate(&levels, &this) + rt);
+        let mut est =
+            (!levels.is_empty()).then(|| (estimate(&levels, &this) + rt).max(d.consistency));
         let mut converged = est.is_some_and(|e| e <= opts.tol);
         // Would grading the undeclared ends move the answer?
         use super::split_ends::{APPROACH_LEVEL, Mode, Verdict, check};
@@ -455,6 +456,20 @@ pub(super) fn report(
         end_answer: None,
         end_check: problem.end_check().cloned(),
     };
+    // Side conditions that contradict the equations leave a least-squares
+    // residual: no answer is more accurate than it (relative, as it is).
+    if d.consistency > 0.0 {
+        for e in rep
+            .scalars
+            .iter_mut()
+            .chain(rep.outputs.iter_mut())
+            .chain(rep.coefficients.iter_mut())
+        {
+            e.error = e.error.max(d.consistency * e.value.abs().max(1.0));
+        }
+        rep.error_estimate = rep.error_estimate.max(d.consistency);
+        rep.converged = rep.converged && rep.error_estimate <= tol;
+    }
     // An answer on the level where grading the ends moved it (the last
     // level allowed): each estimate is at least its change.
     if let Some(c) = problem
