@@ -6,6 +6,10 @@
 
 use super::ring::{GcdDomain, Ring};
 
+/// `det(A)` and, when it is nonzero, one row of `adj(A)`
+/// ([`Matrix::det_adjugate_row`]).
+pub type DetAdjRow<E> = (E, Option<Vec<E>>);
+
 /// A `rows × cols` matrix over the ring object `ring`, row-major.
 /// Equality compares shapes and entries.
 #[derive(Clone, Debug)]
@@ -306,7 +310,7 @@ impl<R: GcdDomain> Matrix<R> {
     /// pivots are equal, e.g. unit pivots of a sparse system). The row is
     /// `None` when `det(A) = 0`; `None` overall for a non-square matrix or
     /// `i` out of range.
-    pub fn det_adjugate_row(&self, i: usize) -> Option<(R::Elem, Option<Vec<R::Elem>>)> {
+    pub fn det_adjugate_row(&self, i: usize) -> Option<DetAdjRow<R::Elem>> {
         if self.rows != self.cols || i >= self.rows {
             return None;
         }

@@ -1907,7 +1907,8 @@ mod tests {
     #[test]
     fn monomial_route_lifts_transforms_and_agrees_with_the_minors() {
         // 3×5 and 5×4, entries at scattered places, some factors shared.
-        let shapes: [(usize, usize, Vec<(usize, usize, MPoly)>); 2] = [
+        type Places = Vec<(usize, usize, MPoly)>;
+        let shapes: [(usize, usize, Places); 2] = [
             (
                 3,
                 5,

@@ -28,13 +28,13 @@ impl MonomialShape {
         let mut places = Vec::new();
         for i in 0..a.rows() {
             let mut found = None;
-            for j in 0..a.cols() {
+            for (j, used) in col_used.iter_mut().enumerate() {
                 if !r.is_zero(a.get(i, j)) {
-                    if found.is_some() || col_used[j] {
+                    if found.is_some() || *used {
                         return None;
                     }
                     found = Some(j);
-                    col_used[j] = true;
+                    *used = true;
                 }
             }
             if let Some(j) = found {
