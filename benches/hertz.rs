@@ -1,32 +1,34 @@
-//! Timings of the Hertz solvers and of operator assembly. Short runs:
-//! `cargo bench --bench hertz` (about 20 s in all).
+//! Timings of what `lambdamat hertz` runs (the front: the embedded
+//! language files through the general solver and the report) and of
+//! operator assembly. Short runs: `cargo bench --bench hertz`.
 use std::time::Duration;
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use lambdamat::hertz::operators::kappa1;
-use lambdamat::hertz::{HertzOptions, solve_given_c, solve_given_mu};
-use lambdamat::numeric::{Assembler, Factor, Mesh, PanelBasis};
+use lambdamat::hertz::front::{Given, solve};
+use lambdamat::numeric::{Assembler, Factor, Mesh, Operator, PanelBasis};
+use lambdamat::plan::SplitOptions;
 
 fn hertz(c: &mut Criterion) {
-    let opts = HertzOptions::default();
+    let opts = SplitOptions::default();
     let mut g = c.benchmark_group("hertz");
     g.sample_size(10)
         .warm_up_time(Duration::from_secs(1))
         .measurement_time(Duration::from_secs(5));
-    g.bench_function("given_c nu=0 c=0.5 tol=1e-10", |b| {
-        b.iter(|| solve_given_c(0.0, 0.5, &opts))
+    g.bench_function("front given_c nu=0 c=0.5 tol=1e-10", |b| {
+        b.iter(|| solve(0.0, Given::C(0.5), &opts))
     });
-    g.bench_function("given_c nu=0.25 c=0.3 tol=1e-10", |b| {
-        b.iter(|| solve_given_c(0.25, 0.3, &opts))
+    g.bench_function("front given_c nu=0.25 c=0.3 tol=1e-10", |b| {
+        b.iter(|| solve(0.25, Given::C(0.3), &opts))
     });
-    g.bench_function("given_mu nu=0.25 mu=0.1801 tol=1e-10", |b| {
-        b.iter(|| solve_given_mu(0.25, 0.1801, &opts))
+    g.bench_function("front given_mu nu=0.25 mu=0.1801 tol=1e-10", |b| {
+        b.iter(|| solve(0.25, Given::Mu(0.1801), &opts))
     });
     g.finish();
 }
 
 fn assembly(c: &mut Criterion) {
-    // One κ1 matrix on a graded, weighted basis: 400 × 400 entries.
+    // One κ1 matrix (`∫_x^1 t f(t)/√(t²-x²) dt`) on a graded, weighted
+    // basis: 400 × 400 entries.
     let mesh = Mesh::uniform(0.0, 1.0, 40).unwrap();
     let basis = PanelBasis::new(
         &mesh,
@@ -39,7 +41,7 @@ fn assembly(c: &mut Criterion) {
     .unwrap();
     let asm = Assembler::new(&basis).unwrap();
     let x = basis.nodes();
-    let op = kappa1();
+    let op = Operator::abel_upper(1.0, |_x, t| t);
     let mut g = c.benchmark_group("assembly");
     g.sample_size(10)
         .warm_up_time(Duration::from_secs(1))

@@ -8,7 +8,9 @@ use std::time::Duration;
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use lambdamat::hertz::front::{Given, solve};
-use lambdamat::hertz::{HertzOptions, solve_given_c, solve_given_mu};
+#[path = "../tests/common/hertz_oracle/mod.rs"]
+mod hertz_oracle;
+use hertz_oracle::{HertzOptions, solve_given_c, solve_given_mu};
 use lambdamat::lang::parse_program_with;
 use lambdamat::lang::parser::parse_exact;
 use lambdamat::plan::{SplitOptions, solve_split};

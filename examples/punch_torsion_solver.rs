@@ -252,5 +252,5 @@ pub fn input() -> Result<SplitInput, PlanError> {
 /// Solves the problem and prints the report of `lambdamat solve`; takes
 /// `[--tol T] [--max-level N] [--json]` (see `--help`).
 pub fn main() {
-    std::process::exit(lambdamat::cli::split::split_solver_main(input));
+    std::process::exit(lambdamat::cli::solve::split_solver_main(input));
 }

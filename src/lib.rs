@@ -20,6 +20,8 @@
 //!   ordered elimination), built from [`algebra`] and [`system`];
 //! * [`codegen`]: a language system → a standalone Rust solver module
 //!   (kernels as Rust functions, solved through [`plan`] and [`numeric`]);
+//! * [`report`]: the one report of a numerical solve (every file, one
+//!   entry [`report::solve`]) and its text, JSON, CSV and SVG;
 //! * [`api`]: the small entry point — [`Problem`] with its methods
 //!   `smith`, `reduce`, `codegen` and `solve`, their values and one
 //!   [`Error`] — re-exported here; the CLI and the Python package are its
@@ -34,6 +36,7 @@ pub mod lang;
 pub mod numeric;
 pub mod plan;
 pub mod reduce;
+pub mod report;
 pub mod system;
 
 pub use api::{

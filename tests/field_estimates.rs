@@ -8,9 +8,11 @@
 //! (`src/hertz/`, tolerance 1e-12). Every true error must be within its
 //! estimate; and the estimates must not be vacuous (the largest ratio
 //! true/estimate stays above 1/20, and away from the edge the estimates
-//! stay below 1e-4). Measured ratios: at most 0.49 (examples/field_errors.rs).
+//! stay below 1e-4). Measured ratios: at most 0.49 (probes/field_errors.rs).
 use lambdamat::hertz::front::{Given, HertzResult, Sample, profile_points, solve};
-use lambdamat::hertz::{HertzOptions, solve_given_mu};
+#[path = "common/hertz_oracle/mod.rs"]
+mod hertz_oracle;
+use hertz_oracle::{HertzOptions, solve_given_mu};
 use lambdamat::plan::SplitOptions;
 
 fn fields(s: &Sample) -> [(f64, f64); 4] {

@@ -57,8 +57,26 @@ fn mms_coupled_and_ordered_recover_the_exact_solution() {
         let qint = v["outputs"]["Q"].as_f64().expect("Q");
         assert!((pstar - FRAC_PI_4).abs() <= 1e-10, "P = {pstar}");
         assert!((qint - 0.5).abs() <= 1e-10, "Q = {qint}");
-        let est = v["error_estimate"].as_f64().expect("estimate");
-        assert!(est.is_finite() && est <= 1e-10, "estimate {est}");
+        // Absolute estimates, each within tol·max(1, |value|), each
+        // bounding its true error.
+        let est = |name: &str| v["error_estimates"][name].as_f64().expect("estimate");
+        for (name, value) in [("P", pstar), ("Q", qint)] {
+            assert!(
+                est(name) <= 1e-10 * value.abs().max(1.0),
+                "{name}: {}",
+                est(name)
+            );
+        }
+        assert!(
+            (pstar - FRAC_PI_4).abs() <= est("P").max(1e-14),
+            "P vs its estimate"
+        );
+        assert!(
+            ep <= est("p") && eq <= est("q"),
+            "fields vs their estimates"
+        );
+        assert_eq!(v["converged"], true);
+        assert!(v["levels"].as_u64().expect("levels") >= 2);
     }
 }
 

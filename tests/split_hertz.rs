@@ -10,7 +10,9 @@ mod common;
 use common::SPENCE;
 use common::cli::{json, lambdamat};
 use lambdamat::hertz::front::{Given, HertzResult, profile_points, solve};
-use lambdamat::hertz::{HertzOptions, HertzSolution, solve_given_c, solve_given_mu};
+#[path = "common/hertz_oracle/mod.rs"]
+mod hertz_oracle;
+use hertz_oracle::{HertzOptions, HertzSolution, solve_given_c, solve_given_mu};
 use lambdamat::plan::SplitOptions;
 
 fn front(nu: f64, given: Given) -> HertzResult {
@@ -119,10 +121,13 @@ fn cli_hertz_is_cli_solve_with_set_bit_for_bit() {
             .expect("P_shear")
             .to_bits()
     );
-    assert_eq!(
-        ours["error_estimate"].as_f64(),
-        front["error_estimate"].as_f64()
-    );
+    for name in ["c", "P", "P_shear", "B"] {
+        assert_eq!(
+            ours["error_estimates"][name].as_f64(),
+            front["error_estimates"][name].as_f64(),
+            "{name}"
+        );
+    }
     assert_eq!(
         front["command"],
         "lambdamat solve examples/hertz.lmx --set nu=0.25 --set mu=0.1801"
@@ -169,4 +174,22 @@ fn too_few_levels_is_not_success() {
     // Two levels cannot agree to 1e-10: printed, marked, exit 4.
     assert_eq!(out.status.code(), Some(4));
     assert!(String::from_utf8_lossy(&out.stdout).contains("not converged"));
+}
+
+/// The files `lambdamat hertz` embeds (`src/hertz/*.lmx`) and their user
+/// copies in `examples/` are identical: editing one without the other
+/// fails here instead of silently changing the product.
+#[test]
+fn embedded_hertz_files_match_the_examples() {
+    use lambdamat::hertz::front::{GIVEN_C, GIVEN_MU, NO_SHEAR};
+    let mut compared = 0;
+    for (path, embedded) in [GIVEN_MU, GIVEN_C, NO_SHEAR] {
+        let example = std::fs::read_to_string(path).expect("example");
+        assert_eq!(
+            embedded, example,
+            "{path} differs from the copy lambdamat embeds"
+        );
+        compared += 1;
+    }
+    assert_eq!(compared, 3);
 }

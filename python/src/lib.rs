@@ -207,7 +207,7 @@ impl Solution {
             .collect()
     }
     fn to_json(&self) -> String {
-        self.0.to_json()
+        serde_json::to_string_pretty(&self.0.to_json()).unwrap_or_default()
     }
 }
 

@@ -13,6 +13,7 @@ use crate::hertz::front::{
     DEFAULT_MAX_LEVEL, Given, HertzResult, Limit, Refusal, solve, solve_with_limit,
 };
 use crate::hertz::seed::seed_literal;
+use crate::hertz::tables::{SEED_TABLE1, spence_c};
 use crate::plan::error::RangeEnd;
 use crate::plan::{PlanError, SplitOptions};
 use clap::{Args, Subcommand};
@@ -271,7 +272,7 @@ fn text(s: &HertzResult, given_c: bool) -> String {
                 e.end_value,
                 pm(e.scalar.as_str())
             );
-            if let Some(line) = super::split::estimate_line(e) {
+            if let Some(line) = crate::report::text::estimate_line(e) {
                 let _ = writeln!(o, "  {line}");
             }
             if let Some(l) = &s.limit {
@@ -389,24 +390,6 @@ fn profile_csv(s: &HertzResult) -> Result<String, CliError> {
     Ok(out)
 }
 
-/// One row of the seed's Table 1: μ, ν and the published c1 (Spence), c2, c3.
-const TABLE1: [(f64, f64, Option<f64>, f64, f64); 14] = [
-    (0.1387, 0.0, None, 0.0750, 0.0913),
-    (0.1387, 0.25, Some(0.3000), 0.3083, 0.3028),
-    (0.1801, 0.0, None, 0.1750, 0.2041),
-    (0.1801, 0.25, Some(0.5000), 0.5083, 0.5083),
-    (0.2063, 0.0, Some(0.2400), 0.2417, 0.2739),
-    (0.2063, 0.25, None, 0.6083, 0.6124),
-    (0.2843, 0.0, None, 0.4750, 0.4743),
-    (0.2843, 0.25, Some(0.8000), 0.8083, 0.8010),
-    (0.2986, 0.0, Some(0.5000), 0.5083, 0.5083),
-    (0.2986, 0.25, None, 0.8250, 0.8317),
-    (0.4013, 0.0, Some(0.7000), 0.7083, 0.7072),
-    (0.4013, 0.25, None, 0.9250, 0.9265),
-    (0.4862, 0.0, Some(0.8000), 0.8083, 0.8010),
-    (0.4862, 0.25, None, 0.9750, 0.9618),
-];
-
 /// The seed's Table 2: (c, μ) pairs used for every ν.
 const TABLE2_PAIRS: [(f64, f64); 3] = [(0.24, 0.2063), (0.5, 0.2986), (0.7, 0.4013)];
 const TABLE2_NU: [f64; 4] = [0.0, 0.125, 0.25, 0.375];
@@ -487,10 +470,11 @@ fn table(csv: bool, which: Option<u8>, tol: f64, w: &mut dyn Write) -> Result<()
         }
     };
     // Table 1: our c for the published μ; our μ for Spence's c1.
-    let rows1: Vec<Vec<String>> = TABLE1
+    let rows1: Vec<Vec<String>> = SEED_TABLE1
         .par_iter()
         .filter(|_| show1)
-        .map(|&(mu, nu, c1, c2, c3)| {
+        .map(|&(mu, nu, c2, c3)| {
+            let c1 = spence_c(nu, mu);
             let by_mu = solve_given_mu(nu, mu, &opts);
             let by_c = c1.map(|c| solve_given_c(nu, c, &opts));
             count(&by_mu);

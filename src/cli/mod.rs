@@ -14,7 +14,6 @@
 //! * [`reduce`]: the `reduce` command and the `solve for` part of `run`;
 //! * [`run`]: the `run` command (everything a file asks for);
 //! * [`solve`]: the `solve` command (numerical solution of the file's system);
-//! * [`split`]: the report of a split-domain (contact) problem;
 //! * [`codegen`]: the `codegen` command (a Rust solver for the file's system).
 
 pub mod codegen;
@@ -28,7 +27,6 @@ pub mod render;
 pub mod run;
 pub mod smith;
 pub mod solve;
-pub mod split;
 
 use clap::{Args, Parser, Subcommand};
 use error::CliError;
@@ -150,10 +148,10 @@ pub struct SolveArgs {
 /// solvers `lambdamat codegen` writes.
 #[derive(Args, Debug, Clone)]
 pub struct SolveFlags {
-    /// coupled (block system), ordered (exact elimination) or commutative (the seed's single equation, a model).
-    #[arg(long, default_value = "ordered", value_parser = ["coupled", "ordered", "commutative"])]
-    pub method: String,
-    /// Refine until the error estimate, from successive answers, is below this (finite, > 0).
+    /// coupled (block system), ordered (exact elimination; the default on one interval) or commutative (the seed's single equation, a model). A split-domain file is solved as one coupled collocation system: `coupled` or nothing; the others are refused (exit 2).
+    #[arg(long, value_parser = ["coupled", "ordered", "commutative"])]
+    pub method: Option<String>,
+    /// Refine until every error estimate (absolute, from successive levels) is within tol·max(1, |value|): absolute tolerance tol for values up to 1, relative above (finite, > 0).
     #[arg(long, default_value = "1e-10", allow_negative_numbers = true)]
     pub tol: f64,
     /// Highest refinement level tried (at most 14).

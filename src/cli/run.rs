@@ -1,8 +1,10 @@
 //! The `run` command: performs every directive of a file in order (Smith
 //! forms, checks of claimed decompositions, and for each `solve for` the
-//! one derivation of that unknown, printed (eliminant, ordered elimination)
-//! and then executed by the numerical solve for that unknown with the
-//! defaults of `lambdamat solve`) and prints the results as
+//! one derivation of that unknown, printed (eliminant, ordered elimination,
+//! or the single equations per subinterval of a split-domain file) and then
+//! executed by the numerical solve for that unknown with the defaults of
+//! `lambdamat solve`, through [`crate::report::solve`]) and prints the
+//! results as
 //! text, LaTeX or one JSON object.
 
 use super::OutputArgs;
@@ -12,8 +14,8 @@ use super::render;
 use super::smith::{check, load_with_source, principal, print_report, report};
 use super::solve;
 use crate::lang::Directive;
-use crate::plan::{CompiledSystem, SolveOptions, solve_derived};
 use crate::reduce::{derive, reduce_with};
+use crate::report::SolveSettings;
 use serde_json::json;
 use std::io::Write;
 use std::path::PathBuf;
@@ -52,40 +54,33 @@ pub fn run(file: &PathBuf, out: &OutputArgs, w: &mut dyn Write) -> Result<(), Cl
                     write!(w, "{}", render::check_text(&c))?;
                 }
             }
-            Directive::Solve { unknown } if p.contact.is_split() => {
-                let list = super::reduce::split_reductions(&p, *unknown)?;
-                let r = crate::plan::solve_split(&p, &crate::plan::SplitOptions::default())?;
-                if out.json {
-                    results.push(
-                        json!({"kind": "reduce", "result": super::reduce::split_json(&list)}),
-                    );
-                    results.push(json!({"kind": "solve", "result": super::split::to_json(&r)}));
-                } else {
-                    sep(w, &mut first)?;
-                    write!(w, "{}", super::reduce::split_text(&list, out.latex))?;
-                    sep(w, &mut first)?;
-                    super::split::write_text(&r, w)?;
-                }
-                if let Err(e) = super::split::require_converged(&r) {
-                    not_converged.get_or_insert(e);
-                }
-            }
             Directive::Solve { unknown } => {
-                // One derivation per target: printed here, executed below.
-                let derivation = derive(&p, *unknown)?;
-                let red = reduce_with(&p, &derivation)?;
-                if out.json {
-                    results.push(json!({"kind": "reduce", "result": to_json(&red)}));
+                // One derivation per target: printed here, executed by the
+                // solve below.
+                sep(w, &mut first)?;
+                if p.contact.is_split() {
+                    let list = super::reduce::split_reductions(&p, *unknown)?;
+                    if out.json {
+                        results.push(
+                            json!({"kind": "reduce", "result": super::reduce::split_json(&list)}),
+                        );
+                    } else {
+                        write!(w, "{}", super::reduce::split_text(&list, out.latex))?;
+                    }
                 } else {
-                    sep(w, &mut first)?;
-                    print_reduction(&red, out, w)?;
+                    let red = reduce_with(&p, &derive(&p, *unknown)?)?;
+                    if out.json {
+                        results.push(json!({"kind": "reduce", "result": to_json(&red)}));
+                    } else {
+                        print_reduction(&red, out, w)?;
+                    }
                 }
                 // Symbols declared with `var` are abstract: no kernels, no numerics.
                 let abstract_symbols: Vec<&str> = (0..p.symbols.len())
                     .filter(|&i| p.operator(i).is_none())
                     .map(|i| p.symbols[i].as_str())
                     .collect();
-                if !abstract_symbols.is_empty() {
+                if !p.contact.is_split() && !abstract_symbols.is_empty() {
                     let note = format!(
                         "numerical solve skipped: {} ha{} no operator definition (declared with `var`)",
                         abstract_symbols.join(", "),
@@ -102,15 +97,16 @@ pub fn run(file: &PathBuf, out: &OutputArgs, w: &mut dyn Write) -> Result<(), Cl
                     }
                     continue;
                 }
-                let sys = CompiledSystem::from_program(&p, Some(&p.unknowns[*unknown]))
-                    .map_err(|e| solve::located(e, &src))?;
-                let r = solve_derived(&sys, Some(derivation), &SolveOptions::default())
-                    .map_err(|e| solve::located(e, &src))?;
+                let settings = SolveSettings {
+                    unknown: Some(p.unknowns[*unknown].clone()),
+                    ..SolveSettings::default()
+                };
+                let r = crate::report::solve(&p, &settings).map_err(|e| solve::located(e, &src))?;
                 if out.json {
-                    results.push(json!({"kind": "solve", "result": solve::to_json(&r)}));
+                    results.push(json!({"kind": "solve", "result": r.to_json()}));
                 } else {
                     sep(w, &mut first)?;
-                    solve::write_text(&r, w)?;
+                    r.write_text(w)?;
                 }
                 for warning in &r.warnings {
                     eprintln!("warning: {warning}");

@@ -44,7 +44,7 @@ pub fn split_solver_source(prog: &Program, from: &Provenance) -> Result<String, 
         "\n/// Solves the problem and prints the report of `lambdamat solve`; takes\n\
          /// `[--tol T] [--max-level N] [--json]` (see `--help`).\n\
          pub fn main() {\n    \
-         std::process::exit(lambdamat::cli::split::split_solver_main(input));\n}\n",
+         std::process::exit(lambdamat::cli::solve::split_solver_main(input));\n}\n",
     );
     Ok(out)
 }

@@ -1,28 +1,144 @@
-//! The seed paper's literal algorithm, for comparison only: with the same
-//! numerics as the exact solver, `p` on `[0,1]` is collocated with the
-//! paper's (2.4) (E1 with `q = μp` everywhere) at the nodes in `[c,1]` and
-//! with its single equation (3.3), `(κ4κ1 - κ2κ3) p = κ4[1]`, at the nodes
-//! in `[0,c)`; operator products go through one intermediate basis. Both
+//! The seed paper's literal algorithm, for comparison only (the `hertz
+//! table` column "seed"): `p` on `[0,1]` is collocated with the paper's
+//! (2.4) (E1 with `q = μp` everywhere) at the nodes in `[c,1]` and with its
+//! single equation (3.3), `(κ4κ1 - κ2κ3) p = κ4[1]`, at the nodes in
+//! `[0,c)`; operator products go through one intermediate basis. Both
 //! equations are approximations (hertz.md, "Where the seed's reduction is
 //! an approximation"), so this module reports what they give level by
 //! level and whether that sequence settles; it never feeds the exact
-//! solver. Owns this comparison only.
+//! solver. Owns this comparison and its own small discretisation over
+//! [`crate::numeric`] (a mesh graded geometrically toward `c` on both sides
+//! and toward the edge `1`, degrees rising away from them, `p` with the
+//! edge weight `(1-t)^(-α)`); it shares no code with the language's
+//! solver or with the hand-written oracle of the tests.
 use std::f64::consts::FRAC_PI_2;
 
 use nalgebra::{DMatrix, DVector};
 use serde::Serialize;
 
 use super::error::HertzError;
-use super::operators::{edge_exponent, gamma_of_nu, kappa1, kappa2, kappa3, kappa4};
-use super::system::{Frame, Resolution};
-use crate::numeric::Assembler;
 use crate::numeric::elimination::product;
 use crate::numeric::solve::{CheckedLu, DEFAULT_MAX_COND};
+use crate::numeric::{Assembler, Factor, Grading, Mesh, Operator, PanelBasis, Side};
+
+/// `γ = (1-2ν)/(2-2ν)`.
+pub fn gamma_of_nu(nu: f64) -> f64 {
+    (1.0 - 2.0 * nu) / (2.0 - 2.0 * nu)
+}
+
+/// The edge exponent `α = arccot(γμ)/π ∈ (0, 1/2]`.
+pub fn edge_exponent(gamma: f64, mu: f64) -> f64 {
+    let gm = gamma * mu;
+    if gm <= 0.0 {
+        0.5
+    } else {
+        (1.0 / gm).atan() / std::f64::consts::PI
+    }
+}
+
+/// `κ1 f(x) = ∫_x^1 t f(t)/√(t²-x²) dt`.
+fn kappa1() -> Operator {
+    Operator::abel_upper(1.0, |_x, t| t)
+}
+
+/// `κ2 f(x) = -γ ∫_0^1 f(t) dt + γ ∫_0^x x f(t)/√(x²-t²) dt`.
+fn kappa2(gamma: f64) -> Operator {
+    Operator::smooth(0.0, 1.0, |_, _| 1.0).scaled(-gamma)
+        + Operator::abel_lower(0.0, |x, _t| x).scaled(gamma)
+}
+
+/// `κ3 f(x) = γ ∫_0^x t f(t)/√(x²-t²) dt`.
+fn kappa3(gamma: f64) -> Operator {
+    Operator::abel_lower(0.0, |_x, t| t).scaled(gamma)
+}
+
+/// `κ4 f(x) = -∫_x^1 x f(t)/√(t²-x²) dt`.
+fn kappa4() -> Operator {
+    Operator::abel_upper(1.0, |x, _t| x).scaled(-1.0)
+}
+
+/// Mesh and degree parameters of level `k` of the seed's ladder.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SeedResolution {
+    /// Geometric layers toward `c` (each side) and toward `1`.
+    pub layers: usize,
+    /// Grading ratio `σ` (panel sizes shrink by `σ` per layer).
+    pub sigma: f64,
+    /// Nodes on the panels touching a graded point.
+    pub n_min: usize,
+    /// Extra nodes per layer away from the graded point.
+    pub slope: f64,
+    /// Maximum nodes per panel.
+    pub n_max: usize,
+}
+
+impl SeedResolution {
+    /// Level `k`: two more layers (at most 20) and one more node allowed
+    /// per level.
+    pub fn level(k: usize) -> SeedResolution {
+        SeedResolution {
+            layers: (6 + 2 * k).min(20),
+            sigma: 0.25,
+            n_min: 3,
+            slope: 0.75,
+            n_max: 7 + k,
+        }
+    }
+}
+
+/// One level's mesh of `[0, 1]` and its node counts per panel.
+struct SeedMesh {
+    mesh: Mesh,
+    nodes: Vec<usize>,
+}
+
+impl SeedMesh {
+    fn new(c: f64, res: &SeedResolution) -> Result<SeedMesh, HertzError> {
+        let gr = [
+            Grading {
+                at: c,
+                side: Side::Both,
+                layers: res.layers,
+            },
+            Grading {
+                at: 1.0,
+                side: Side::Left,
+                layers: res.layers,
+            },
+        ];
+        let mesh = Mesh::graded(0.0, 1.0, &gr, res.sigma)?;
+        let nodes = mesh
+            .levels
+            .iter()
+            .map(|&l| {
+                ((res.n_min as f64 + res.slope * l as f64).round() as usize).clamp(1, res.n_max)
+            })
+            .collect();
+        Ok(SeedMesh { mesh, nodes })
+    }
+
+    /// The basis of `p` with the edge weight `(1-t)^(-α)`.
+    fn basis(&self, alpha: f64) -> Result<PanelBasis, HertzError> {
+        Ok(PanelBasis::new(
+            &self.mesh,
+            &self.nodes,
+            vec![Factor {
+                at: 1.0,
+                exponent: -alpha,
+            }],
+        )?)
+    }
+
+    /// The collocation points (the nodes of the unweighted basis).
+    fn points(&self) -> Result<Vec<f64>, HertzError> {
+        Ok(PanelBasis::new(&self.mesh, &self.nodes, vec![])?.nodes())
+    }
+}
 
 /// One discretisation level of the literal algorithm.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct SeedLevel {
-    /// Level of [`Resolution::level`].
+    /// Level of [`SeedResolution::level`].
     pub level: usize,
     /// Number of unknowns.
     pub unknowns: usize,
@@ -70,11 +186,12 @@ pub fn seed_literal(
     let alpha = edge_exponent(gamma, mu);
     let mut levels = Vec::new();
     for k in 0..=max_level {
-        let frame = Frame::new(gamma, c, &Resolution::level(k))?;
-        let basis = frame.p_basis(alpha)?;
-        let mid = frame.p_basis(0.0)?;
+        let m = SeedMesh::new(c, &SeedResolution::level(k))?;
+        let basis = m.basis(alpha)?;
+        let mid = m.basis(0.0)?;
+        let x = m.points()?;
         let n = basis.dim();
-        match one_level(gamma, mu, c, &frame, &basis, &mid) {
+        match one_level(gamma, mu, c, &x, &basis, &mid) {
             Ok(pstar) => levels.push(SeedLevel {
                 level: k,
                 unknowns: n,
@@ -109,11 +226,10 @@ fn one_level(
     gamma: f64,
     mu: f64,
     c: f64,
-    frame: &Frame,
-    basis: &crate::numeric::PanelBasis,
-    mid: &crate::numeric::PanelBasis,
+    x: &[f64],
+    basis: &PanelBasis,
+    mid: &PanelBasis,
 ) -> Result<f64, HertzError> {
-    let x = &frame.xp;
     let asm = Assembler::new(basis)?;
     let mid_asm = Assembler::new(mid)?;
     let (stick, slip): (Vec<usize>, Vec<usize>) = (0..x.len()).partition(|&i| x[i] < c);

@@ -98,6 +98,10 @@ pub struct UnknownValues {
     pub values: Vec<f64>,
     /// Its weight, e.g. `(1 - x)^(-1/2)`, or `1`.
     pub weight: String,
+    /// The largest absolute error estimate of its values on the grid:
+    /// the ladder's estimate (relative to the largest `|u/weight|`, at
+    /// least 1) times that scale times `|weight(x)|`.
+    pub error_estimate: f64,
 }
 
 /// A measured commutator defect.
@@ -126,8 +130,15 @@ pub struct SolveReport {
     pub unknowns: Vec<UnknownValues>,
     /// Outputs (None if they need an unknown the method does not compute).
     pub outputs: Vec<(String, Option<f64>)>,
-    /// Distance between the last two levels.
+    /// Distance between the last two levels, relative to each quantity's
+    /// size (at least 1): every quantity `v` is within
+    /// `error_estimate·max(1, |v|)` (for an unknown, `|v|` is its largest
+    /// `|u/weight|`).
     pub error_estimate: f64,
+    /// The absolute error estimate of each output (`error_estimate ·
+    /// max(1, |value|)`), in the order of `outputs`; `None` where the
+    /// output is.
+    pub output_errors: Vec<Option<f64>>,
     /// Whether that distance is within the tolerance.
     pub converged: bool,
     /// The final level.
@@ -510,12 +521,20 @@ fn report(
     for (j, c) in last.sol.coefs.iter().enumerate() {
         let Some(c) = c else { continue };
         let b = &last.disc.bases[j];
+        // The scale the ladder's distance was relative to (`distance`).
+        let scale = last.phi[j].as_ref().map_or(1.0, |phi| {
+            phi.iter()
+                .filter(|v| v.is_finite())
+                .fold(1.0f64, |m, v| m.max(v.abs()))
+        });
         let (mut x, mut values) = (Vec::new(), Vec::new());
+        let mut error_estimate = 0.0f64;
         for &t in &xs {
             let w = b.weight_at(t);
             if w.is_finite() {
                 x.push(t);
                 values.push(b.eval(c.as_slice(), t));
+                error_estimate = error_estimate.max(est * scale * w.abs());
             }
         }
         let weight = match weights[j].as_slice() {
@@ -537,6 +556,7 @@ fn report(
             x,
             values,
             weight,
+            error_estimate,
         });
     }
     let mut warnings = Vec::new();
@@ -619,6 +639,11 @@ fn report(
             .zip(last.outputs.iter().copied())
             .collect(),
         error_estimate: est,
+        output_errors: last
+            .outputs
+            .iter()
+            .map(|v| v.map(|v| est * v.abs().max(1.0)))
+            .collect(),
         converged,
         level,
         dim: last.disc.dim(),

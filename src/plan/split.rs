@@ -14,7 +14,8 @@
 //! refinement ladder are `split_solve.rs`'s.
 //!
 //! The Hertz problem (`examples/hertz.lmx`) gets exactly the
-//! discretisation of the hand-written solver in `crate::hertz::system`.
+//! discretisation of the hand-written solver (the tests' oracle,
+//! `tests/common/hertz_oracle/system.rs`).
 use std::f64::consts::PI;
 use std::sync::Arc;
 
@@ -1098,16 +1099,16 @@ mod tests {
 
     #[test]
     fn every_level_refines_the_one_before() {
-        // Level 0 is crate::hertz's (the hand-written oracle, which keeps
-        // its own slower ladder: the oracle tests compare the converged
-        // answers to 1e-10, not the levels).
+        // Level 0 is the seed comparison's (and the hand-written oracle's
+        // of the tests, which keeps its own slower ladder: the oracle
+        // tests compare the converged answers to 1e-10, not the levels).
         let (a, b) = (
             SplitLevel::level(0),
-            crate::hertz::system::Resolution::level(0),
+            crate::hertz::seed::SeedResolution::level(0),
         );
         assert_eq!(
             (a.layers, a.sigma, a.n_min, a.slope, a.n_max),
-            (b.layers_c, b.sigma, b.n_min, b.slope, b.n_max)
+            (b.layers, b.sigma, b.n_min, b.slope, b.n_max)
         );
         for k in 0..14 {
             let (a, b) = (SplitLevel::level(k), SplitLevel::level(k + 1));

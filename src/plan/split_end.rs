@@ -712,7 +712,7 @@ mod tests {
     fn the_variation_bound_holds_near_full_stick_at_nu_0499() {
         // P of examples/hertz.lmx at ν = 0.499, μ = 1 with 1 − c fixed at
         // 9.3e-13, 1.9e-12, 3.7e-12 on level 5 (level estimate 6.5e-15),
-        // measured by `examples/edges_probe.rs`; the root lies beyond
+        // measured by `probes/edges_probe.rs`; the root lies beyond
         // (1 − c ≈ e^(−1685) by docs/hertz_asymptotics.md), where P* is the
         // full-stick artanh(γ)/γ to double precision. The old rule gave no
         // bound here.

@@ -137,7 +137,7 @@ const WINDOW_POINTS: usize = 9;
 /// the true error at isolated points). The window is the previous level's
 /// panel around the point (its error's natural scale), clipped to the
 /// subinterval the point lies on in both levels, sampled at its Chebyshev
-/// points. Measured (`examples/field_errors.rs`, notes of issue 10/13):
+/// points. Measured (`probes/field_errors.rs`, notes of issue 10/13):
 /// with the window the estimate bounds the true error at every sampled
 /// point of the Hertz problem.
 ///

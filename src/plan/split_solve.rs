@@ -35,7 +35,8 @@ use crate::system::Program;
 /// Accuracy controls.
 #[derive(Debug, Clone, Copy)]
 pub struct SplitOptions {
-    /// Stop when two successive levels agree to this (absolute).
+    /// Stop when every scalar's and output's estimate is within
+    /// `tol·max(1, |value|)`.
     pub tol: f64,
     /// Highest level tried.
     pub max_level: usize,
@@ -71,7 +72,8 @@ pub struct SplitReport {
     pub outputs: Vec<Estimate>,
     /// The coefficients of the exact singular terms.
     pub coefficients: Vec<Estimate>,
-    /// Largest estimate.
+    /// Largest estimate of a scalar or output, each relative to
+    /// `max(1, |value|)` (what convergence compares with the tolerance).
     pub error_estimate: f64,
     /// Whether it is within the tolerance.
     pub converged: bool,
@@ -371,10 +373,23 @@ pub(super) fn history(
 }
 
 /// The estimate that decides convergence: the largest of every scalar's
-/// and output's [`level_estimate`].
+/// and output's [`level_estimate`], each divided by `max(1, |value|)`:
+/// converged means every absolute estimate is within `tol·max(1, |value|)`
+/// (the rule of [`crate::report`], the same on both tracks).
 fn estimate(levels: &[Level], this: &Level) -> f64 {
-    let scalars = (0..this.scalars.len()).map(|i| estimate_of(levels, this, &|l| &l.scalars, i));
-    let outputs = (0..this.outputs.len()).map(|i| estimate_of(levels, this, &|l| &l.outputs, i));
+    let rel = |e: f64, v: f64| e / v.abs().max(1.0);
+    let scalars = (0..this.scalars.len()).map(|i| {
+        rel(
+            estimate_of(levels, this, &|l| &l.scalars, i),
+            this.scalars[i],
+        )
+    });
+    let outputs = (0..this.outputs.len()).map(|i| {
+        rel(
+            estimate_of(levels, this, &|l| &l.outputs, i),
+            this.outputs[i],
+        )
+    });
     scalars.chain(outputs).fold(0.0, f64::max)
 }
 

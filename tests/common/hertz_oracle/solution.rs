@@ -7,10 +7,10 @@ use std::f64::consts::FRAC_2_PI;
 use nalgebra::DVector;
 use serde::Serialize;
 
-use super::error::HertzError;
-pub use super::front::{Sample, frictionless_pressure, profile_points};
 use super::operators::{kappa1, kappa2, kappa3, kappa4};
-use crate::numeric::{Assembler, Mesh, Operator, PanelBasis};
+use lambdamat::hertz::HertzError;
+pub use lambdamat::hertz::front::{Sample, frictionless_pressure, profile_points};
+use lambdamat::numeric::{Assembler, Mesh, Operator, PanelBasis};
 
 /// The discrete fields of a solution (not serialised).
 #[derive(Debug, Clone)]

@@ -9,7 +9,9 @@
 //! Prints, per field, the largest true error, the largest estimate, the
 //! largest ratio true/estimate and how many points have true > estimate.
 use lambdamat::hertz::front::{Given, Sample, profile_points, solve};
-use lambdamat::hertz::{HertzOptions, solve_given_c, solve_given_mu};
+#[path = "../tests/common/hertz_oracle/mod.rs"]
+mod hertz_oracle;
+use hertz_oracle::{HertzOptions, solve_given_c, solve_given_mu};
 use lambdamat::plan::SplitOptions;
 
 /// A field of a sample and its estimate.

@@ -20,13 +20,13 @@ use std::f64::consts::FRAC_PI_2;
 use nalgebra::DVector;
 use serde::Serialize;
 
-use super::error::HertzError;
 use super::operators::{edge_exponent, gamma_of_nu, kappa1};
 use super::roots::{brent, directed_bracket, secant};
 use super::solution::{Fields, HertzSolution, profile_points};
 use super::system::{Discrete, Frame, Resolution};
-use crate::numeric::solve::{CheckedLu, DEFAULT_MAX_COND};
-use crate::numeric::{Assembler, Factor, Mesh, PanelBasis};
+use lambdamat::hertz::HertzError;
+use lambdamat::numeric::solve::{CheckedLu, DEFAULT_MAX_COND};
+use lambdamat::numeric::{Assembler, Factor, Mesh, PanelBasis};
 
 /// Accuracy controls.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]

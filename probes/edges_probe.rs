@@ -15,7 +15,7 @@ fn main() {
         eprintln!("usage: edges_probe NU MU LEVELS W...");
         std::process::exit(2);
     }
-    let src = include_str!("hertz.lmx");
+    let src = include_str!("../examples/hertz.lmx");
     let sets: Vec<_> = [("nu", &args[0]), ("mu", &args[1])]
         .iter()
         .filter_map(|(n, v)| parse_exact(v).map(|q| (n.to_string(), q)))

@@ -12,10 +12,10 @@
 //! control (see `solve.rs`).
 use nalgebra::{DMatrix, DVector};
 
-use super::error::HertzError;
 use super::operators::{edge_exponent, kappa1, kappa2, kappa3, kappa4};
-use crate::numeric::solve::{CheckedLu, DEFAULT_MAX_COND};
-use crate::numeric::{Assembler, Factor, Grading, Mesh, PanelBasis, Side};
+use lambdamat::hertz::HertzError;
+use lambdamat::numeric::solve::{CheckedLu, DEFAULT_MAX_COND};
+use lambdamat::numeric::{Assembler, Factor, Grading, Mesh, PanelBasis, Side};
 
 /// Mesh and degree parameters of one discretisation level.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -1,7 +1,7 @@
 //! The four operators κ1..κ4 of the seed's (2.6) as data of the numeric
 //! layer, for a given `γ`. Owns nothing but their definitions; it must not
 //! discretise or solve.
-use crate::numeric::Operator;
+use lambdamat::numeric::Operator;
 
 /// `γ = (1-2ν)/(2-2ν)`.
 pub fn gamma_of_nu(nu: f64) -> f64 {

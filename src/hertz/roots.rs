@@ -1,4 +1,0 @@
-//! The root finders of the free boundary now live in
-//! [`crate::numeric::roots`] (shared with the language's split-domain
-//! solver); this module re-exports them for the Hertz solver.
-pub use crate::numeric::roots::{bracket, brent, directed_bracket, secant};

@@ -1,0 +1,489 @@
+//! The one report of a numerical solve, and the one entry that produces it
+//! for every file: [`solve`] takes a program (with or without breakpoints,
+//! scalars, relations or singular declarations) and returns a [`Report`];
+//! [`Report::to_json`], [`Report::write_text`], [`Report::csv`] and
+//! [`Report::svg`] are the only places a solve's answer is formatted
+//! (`lambdamat solve`, `run`, `hertz` and the solvers `lambdamat codegen`
+//! writes all print through them). It owns the conversion of the solvers'
+//! own reports ([`crate::plan::SolveReport`], [`crate::plan::SplitReport`])
+//! into this shape and the sampling of a split-domain solution's unknowns
+//! on the output grid; it does no discretisation itself.
+//!
+//! **Estimates are absolute.** Every quantity (output, scalar, singular
+//! coefficient, and each unknown at each grid point) carries an estimate
+//! of `|computed − exact|` in its own units; an unknown's
+//! `error_estimate` is its largest pointwise estimate on the grid.
+//!
+//! **The tolerance rule** (`--tol`, both tracks): a solve has converged
+//! when every estimate that drives refinement is within `tol·max(1,
+//! |value|)`, i.e. absolute tolerance `tol` for quantities of size up to 1
+//! and relative tolerance `tol` above (SciPy's `atol = rtol = tol`). On a
+//! file on one interval these are the outputs and the unknowns on the grid
+//! (an unknown's size is its largest `|u/weight|`); on a split-domain file
+//! the scalars and outputs (its unknowns are reported with their pointwise
+//! estimates but do not drive the ladder).
+//!
+//! * [`text`]: the text report;
+//! * [`svg`]: the plot of the unknowns.
+
+pub mod svg;
+pub mod text;
+
+use std::collections::BTreeMap;
+
+use serde::Serialize;
+use serde_json::{Map, Value, json};
+
+use crate::plan::split_fields::{Approach, LevelFields};
+use crate::plan::{
+    CompiledSystem, Method, PlanError, SolveOptions, SolveReport, SplitInput, SplitOptions,
+    SplitSolution, solve_split_input_fields, solve_system,
+};
+use crate::system::Program;
+
+/// The method name of the split-domain solver.
+pub const SPLIT_METHOD: &str = "split-domain collocation";
+
+/// Points of the output grid on which unknowns are reported.
+pub const GRID_POINTS: usize = 101;
+
+/// An unknown on the output grid.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Field {
+    /// Grid points (points where the unknown is unbounded are left out).
+    pub x: Vec<f64>,
+    /// Its values there.
+    pub values: Vec<f64>,
+    /// The behaviour its trial space was given: the weight the smooth part
+    /// is multiplied by (`1` for none) and any exact singular terms.
+    pub weight: String,
+    /// Its largest absolute pointwise error estimate on the grid.
+    pub error_estimate: f64,
+}
+
+/// What a numerical solve found, in one shape for every file.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Report {
+    /// `ordered`, `coupled`, `commutative`, or the split solver's method.
+    pub method: String,
+    /// Whether every estimate that drives refinement met the tolerance
+    /// rule of this module.
+    pub converged: bool,
+    /// Refinement levels solved.
+    pub levels: usize,
+    /// The tolerance.
+    pub tol: f64,
+    /// The unknowns on the output grid.
+    pub unknowns: BTreeMap<String, Field>,
+    /// The outputs.
+    pub outputs: BTreeMap<String, f64>,
+    /// The unknown scalars (e.g. a stick radius `c`).
+    pub scalars: BTreeMap<String, f64>,
+    /// The coefficients of exact singular terms.
+    pub coefficients: BTreeMap<String, f64>,
+    /// Absolute estimates: one per output, scalar, coefficient and unknown
+    /// (its largest pointwise estimate).
+    pub error_estimates: BTreeMap<String, f64>,
+    /// Warnings (printed on standard error by the CLI).
+    pub warnings: Vec<String>,
+    /// Track-specific values: `dim`, `cond`, `commutator_defects`,
+    /// `pivots`, `model`, `target`, `domain` (one interval);
+    /// `dim`, `cond`, `singular_exponents`, `end_answer`, `end_check`,
+    /// `notes` (split domain: lines the text report shows after the
+    /// numbers, e.g. that the scalar is bounded at an end of its range).
+    pub extra: Map<String, Value>,
+}
+
+/// How to solve.
+#[derive(Debug, Clone)]
+pub struct SolveSettings {
+    /// The unknown the eliminations solve for (one-interval files; default:
+    /// the file's `solve for`, else the first unknown).
+    pub unknown: Option<String>,
+    /// The tolerance (see the module's rule).
+    pub tol: f64,
+    /// The highest refinement level tried (the ladder's numbering: levels
+    /// 1, 2, … on one interval, 0, 1, … on a split domain).
+    pub max_level: usize,
+    /// The method; `None` is the file's default (`ordered` on one
+    /// interval, the split solver on a split domain).
+    pub method: Option<Method>,
+    /// Points of the output grid.
+    pub grid: usize,
+}
+
+impl Default for SolveSettings {
+    fn default() -> SolveSettings {
+        SolveSettings {
+            unknown: None,
+            tol: 1e-10,
+            max_level: 8,
+            method: None,
+            grid: GRID_POINTS,
+        }
+    }
+}
+
+/// The highest refinement level the numerics support.
+pub const MAX_LEVEL: usize = 14;
+
+impl SolveSettings {
+    /// A finite positive tolerance, a level the numerics support.
+    pub fn check(&self) -> Result<(), PlanError> {
+        if !(self.tol > 0.0 && self.tol.is_finite()) {
+            return Err(PlanError::Invalid(format!(
+                "--tol {}: the tolerance must be a finite number > 0, e.g. 1e-10",
+                self.tol
+            )));
+        }
+        if self.max_level == 0 || self.max_level > MAX_LEVEL {
+            return Err(PlanError::Invalid(format!(
+                "--max-level {}: must be between 1 and {MAX_LEVEL}",
+                self.max_level
+            )));
+        }
+        Ok(())
+    }
+}
+
+/// Solves `prog` as `s` asks: the one entry for every file.
+pub fn solve(prog: &Program, s: &SolveSettings) -> Result<Report, PlanError> {
+    s.check()?;
+    if prog.contact.is_split() {
+        solve_split(SplitInput::from_program(prog)?, s)
+    } else {
+        solve_compiled(
+            &CompiledSystem::from_program(prog, s.unknown.as_deref())?,
+            s,
+        )
+    }
+}
+
+/// Solves a compiled one-interval system (built from a program, or by a
+/// solver `lambdamat codegen` wrote).
+pub fn solve_compiled(sys: &CompiledSystem, s: &SolveSettings) -> Result<Report, PlanError> {
+    s.check()?;
+    let opts = SolveOptions {
+        method: s.method.unwrap_or(Method::Ordered),
+        tol: s.tol,
+        max_level: s.max_level,
+        grid: s.grid,
+        ..SolveOptions::default()
+    };
+    Ok(from_one_interval(&solve_system(sys, &opts)?, s.tol))
+}
+
+/// Solves a split-domain problem (built from a program, or by a solver
+/// `lambdamat codegen` wrote).
+pub fn solve_split(input: SplitInput, s: &SolveSettings) -> Result<Report, PlanError> {
+    Ok(solve_split_solution(input, s)?.0)
+}
+
+/// [`solve_split`], keeping the solution for further sampling (the
+/// `hertz` front reads its fields).
+pub fn solve_split_solution(
+    input: SplitInput,
+    s: &SolveSettings,
+) -> Result<(Report, SplitSolution), PlanError> {
+    s.check()?;
+    split_method(s.method)?;
+    let opts = SplitOptions {
+        tol: s.tol,
+        max_level: s.max_level,
+    };
+    let sol = solve_split_input_fields(input, &opts)?;
+    let r = from_split(&sol, s.grid)?;
+    Ok((r, sol))
+}
+
+/// The methods the split solver can run: it collocates every equation on
+/// its subinterval together (the `coupled` block system); it cannot
+/// eliminate, so `ordered` and `commutative` are refused.
+pub fn split_method(m: Option<Method>) -> Result<(), PlanError> {
+    match m {
+        None | Some(Method::Coupled) => Ok(()),
+        Some(Method::Ordered) => Err(PlanError::Invalid(
+            "--method ordered: a split-domain file is solved as one coupled collocation system on all its subintervals (as --method coupled); an elimination per subinterval is not executed numerically (its single equations are shown by `lambdamat reduce`)".into(),
+        )),
+        Some(Method::Commutative) => Err(PlanError::Invalid(
+            "--method commutative: a split-domain file is solved as one coupled collocation system on all its subintervals (as --method coupled); the seed's single equations per subinterval are shown by `lambdamat reduce`".into(),
+        )),
+    }
+}
+
+/// The report of a one-interval solve.
+pub fn from_one_interval(r: &SolveReport, tol: f64) -> Report {
+    let mut unknowns = BTreeMap::new();
+    let mut error_estimates = BTreeMap::new();
+    let mut warnings = r.warnings.clone();
+    for u in &r.unknowns {
+        error_estimates.insert(u.name.clone(), u.error_estimate);
+        unknowns.insert(
+            u.name.clone(),
+            Field {
+                x: u.x.clone(),
+                values: u.values.clone(),
+                weight: u.weight.clone(),
+                error_estimate: u.error_estimate,
+            },
+        );
+    }
+    let mut outputs = BTreeMap::new();
+    for ((name, v), e) in r.outputs.iter().zip(&r.output_errors) {
+        match (v, e) {
+            (Some(v), Some(e)) => {
+                outputs.insert(name.clone(), *v);
+                error_estimates.insert(name.clone(), *e);
+            }
+            _ => warnings.push(format!(
+                "output {name}: needs an unknown the {} method does not compute",
+                r.method
+            )),
+        }
+    }
+    let mut extra = Map::new();
+    extra.insert("model".into(), json!(r.model));
+    extra.insert("target".into(), json!(r.target));
+    extra.insert("dim".into(), json!(r.dim));
+    extra.insert("cond".into(), finite(r.cond));
+    extra.insert("domain".into(), json!([r.domain.0, r.domain.1]));
+    extra.insert("commutator_defects".into(), json!(r.commutator_defects));
+    extra.insert(
+        "pivots".into(),
+        r.pivots
+            .iter()
+            .map(|(e, u)| json!({"equation": e, "unknown": u}))
+            .collect(),
+    );
+    Report {
+        method: r.method.clone(),
+        converged: r.converged,
+        levels: r.level,
+        tol,
+        unknowns,
+        outputs,
+        scalars: BTreeMap::new(),
+        coefficients: BTreeMap::new(),
+        error_estimates,
+        warnings,
+        extra,
+    }
+}
+
+/// A JSON number, or null when not finite.
+fn finite(v: f64) -> Value {
+    if v.is_finite() { json!(v) } else { Value::Null }
+}
+
+/// The report of a split-domain solve: its scalars, outputs and
+/// coefficients with their estimates, and its unknowns sampled on the
+/// output grid with their pointwise estimates ([`LevelFields`]).
+pub fn from_split(sol: &SplitSolution, grid: usize) -> Result<Report, PlanError> {
+    let r = &sol.report;
+    let mut error_estimates = BTreeMap::new();
+    let mut take = |list: &[crate::plan::split_solve::Estimate]| {
+        list.iter()
+            .map(|e| {
+                error_estimates.insert(e.name.clone(), e.error);
+                (e.name.clone(), e.value)
+            })
+            .collect::<BTreeMap<String, f64>>()
+    };
+    let scalars = take(&r.scalars);
+    let outputs = take(&r.outputs);
+    let coefficients = take(&r.coefficients);
+    let unknowns = split_fields(sol, grid)?;
+    for (name, f) in &unknowns {
+        error_estimates.insert(name.clone(), f.error_estimate);
+    }
+    let warnings = Vec::new();
+    let mut extra = Map::new();
+    extra.insert("notes".into(), json!(text::split_notes(r)));
+    extra.insert("dim".into(), json!(r.dim));
+    extra.insert("cond".into(), finite(r.cond));
+    extra.insert("singular_exponents".into(), json!(r.singular_exponents));
+    extra.insert("end_answer".into(), json!(r.end_answer));
+    extra.insert("end_check".into(), json!(r.end_check));
+    Ok(Report {
+        method: SPLIT_METHOD.to_string(),
+        converged: r.converged,
+        levels: r.levels,
+        tol: r.tol,
+        unknowns,
+        outputs,
+        scalars,
+        coefficients,
+        error_estimates,
+        warnings,
+        extra,
+    })
+}
+
+/// Each unknown of a split-domain solution on `grid` points of its
+/// interval (its declared one, else the whole), with the pointwise
+/// estimates of [`LevelFields::value`]; points where the value or its
+/// estimate is not finite (a singular term's own point) are left out.
+fn split_fields(sol: &SplitSolution, grid: usize) -> Result<BTreeMap<String, Field>, PlanError> {
+    let lf = LevelFields::new(sol)?;
+    let p = &sol.problem;
+    let d = &sol.discrete;
+    let (lo, hi) = (d.breaks[0], d.breaks[d.breaks.len() - 1]);
+    let n = grid.max(2);
+    let mut out = BTreeMap::new();
+    for (u, name) in p.sys.unknowns.iter().enumerate() {
+        let (a, b) = match p.contact.unknown_domains.get(u).and_then(Option::as_ref) {
+            Some(dom) => {
+                let (a, b) = dom.eval(&d.vars);
+                (a.max(lo), b.min(hi))
+            }
+            None => (lo, hi),
+        };
+        let (mut x, mut values) = (Vec::new(), Vec::new());
+        let mut error_estimate = 0.0f64;
+        for k in 0..n {
+            let t = a + (b - a) * k as f64 / (n - 1) as f64;
+            let side = if k + 1 == n {
+                Approach::Below
+            } else {
+                Approach::Above
+            };
+            let v = lf.value(u, t, side)?;
+            if !v.value.is_finite() {
+                continue;
+            }
+            if !v.error.is_finite() && sol.report.converged {
+                // A point a converged solve cannot estimate (a singular
+                // term's own point, where the levels' sides differ).
+                continue;
+            }
+            x.push(t);
+            values.push(v.value);
+            error_estimate = error_estimate.max(v.error);
+        }
+        out.insert(
+            name.clone(),
+            Field {
+                x,
+                values,
+                weight: split_weight(sol, u),
+                error_estimate,
+            },
+        );
+    }
+    Ok(out)
+}
+
+/// The behaviour of unknown `u` in a split-domain discretisation: its
+/// basis weight and its exact singular terms.
+fn split_weight(sol: &SplitSolution, u: usize) -> String {
+    let d = &sol.discrete;
+    let mut parts = Vec::new();
+    let w = d.bases.get(u).and_then(Option::as_ref).map_or_else(
+        || "1".to_string(),
+        |b| {
+            if b.weight.is_empty() {
+                "1".to_string()
+            } else {
+                b.weight
+                    .iter()
+                    .map(|f| format!("|x - {}|^({})", f.at, f.exponent))
+                    .collect::<Vec<_>>()
+                    .join("*")
+            }
+        },
+    );
+    parts.push(w);
+    for t in d.terms.iter().filter(|t| t.unknown == u) {
+        parts.push(format!(
+            "singular term |x - {}|^(-{}) at {}",
+            t.at, t.beta, t.at
+        ));
+    }
+    parts.join(" + ")
+}
+
+impl Report {
+    /// The JSON object: `method`, `converged`, `levels`, `tol`,
+    /// `unknowns` (per unknown `x`, `values`, `weight`,
+    /// `error_estimate`), `outputs`, `scalars`, `coefficients`,
+    /// `error_estimates` (absolute), `warnings`, then the track-specific
+    /// keys of [`Report::extra`]. Non-finite numbers are written as null
+    /// (they occur only in a report that did not converge).
+    pub fn to_json(&self) -> Value {
+        let nums = |m: &BTreeMap<String, f64>| -> Map<String, Value> {
+            m.iter().map(|(k, v)| (k.clone(), finite(*v))).collect()
+        };
+        let unknowns: Map<String, Value> = self
+            .unknowns
+            .iter()
+            .map(|(k, f)| {
+                (
+                    k.clone(),
+                    json!({
+                        "x": f.x,
+                        "values": f.values.iter().map(|v| finite(*v)).collect::<Vec<_>>(),
+                        "weight": f.weight,
+                        "error_estimate": finite(f.error_estimate),
+                    }),
+                )
+            })
+            .collect();
+        let mut o = Map::new();
+        o.insert("method".into(), json!(self.method));
+        o.insert("converged".into(), json!(self.converged));
+        o.insert("levels".into(), json!(self.levels));
+        o.insert("tol".into(), json!(self.tol));
+        o.insert("unknowns".into(), Value::Object(unknowns));
+        o.insert("outputs".into(), Value::Object(nums(&self.outputs)));
+        o.insert("scalars".into(), Value::Object(nums(&self.scalars)));
+        o.insert(
+            "coefficients".into(),
+            Value::Object(nums(&self.coefficients)),
+        );
+        o.insert(
+            "error_estimates".into(),
+            Value::Object(nums(&self.error_estimates)),
+        );
+        o.insert("warnings".into(), json!(self.warnings));
+        for (k, v) in &self.extra {
+            o.entry(k.clone()).or_insert_with(|| v.clone());
+        }
+        Value::Object(o)
+    }
+
+    /// The unknowns as CSV: `x` and one column per unknown, on the union
+    /// of the unknowns' grids (a cell is empty where an unknown has no
+    /// value).
+    pub fn csv(&self) -> String {
+        let mut s = String::from("x");
+        for name in self.unknowns.keys() {
+            s.push(',');
+            s.push_str(name);
+        }
+        s.push('\n');
+        let mut xs: Vec<f64> = self.unknowns.values().flat_map(|u| u.x.clone()).collect();
+        xs.sort_by(f64::total_cmp);
+        xs.dedup();
+        for x in xs {
+            s.push_str(&format!("{x}"));
+            for u in self.unknowns.values() {
+                s.push(',');
+                if let Some(i) = u.x.iter().position(|&y| y == x) {
+                    s.push_str(&format!("{:e}", u.values[i]));
+                }
+            }
+            s.push('\n');
+        }
+        s
+    }
+
+    /// The largest estimate of every reported quantity (0 with none).
+    pub fn largest_estimate(&self) -> f64 {
+        self.error_estimates.values().fold(0.0, |m, &e| m.max(e))
+    }
+
+    /// The estimate of a named quantity.
+    pub fn estimate(&self, name: &str) -> Option<f64> {
+        self.error_estimates.get(name).copied()
+    }
+}
