@@ -22,11 +22,9 @@
 //! # Ok::<(), lambdamat::Error>(())
 //! ```
 
-use std::collections::BTreeMap;
 use std::path::Path;
 
 use num_rational::BigRational;
-use serde_json::Value;
 
 use crate::algebra::matrix::Matrix;
 use crate::algebra::polyring::PolyRing;
@@ -35,7 +33,7 @@ use crate::cli::error::CliError;
 pub use crate::hertz::front::Given;
 use crate::lang::Directive;
 pub use crate::plan::Method;
-use crate::plan::{CompiledSystem, PlanError, SplitInput, SplitOptions};
+use crate::plan::{CompiledSystem, PlanError, SplitInput};
 use crate::system::Program;
 
 /// What kind of failure an [`Error`] is; each kind is one of the command
@@ -471,19 +469,14 @@ impl Problem {
     /// # Ok::<(), lambdamat::Error>(())
     /// ```
     pub fn solve(&self, opts: &SolveOptions) -> Result<Solution, Error> {
-        if !(opts.tol > 0.0 && opts.tol.is_finite()) {
-            return Err(invalid(format!(
-                "--tol {}: the tolerance must be a finite number > 0, e.g. 1e-10",
-                opts.tol
-            )));
-        }
-        let max_level = opts.max_level.unwrap_or(DEFAULT_MAX_LEVEL);
-        if max_level == 0 || max_level > crate::cli::solve::MAX_LEVEL {
-            return Err(invalid(format!(
-                "--max-level {max_level}: must be between 1 and {}",
-                crate::cli::solve::MAX_LEVEL
-            )));
-        }
+        let settings = crate::report::SolveSettings {
+            unknown: opts.unknown.clone(),
+            tol: opts.tol,
+            max_level: opts.max_level.unwrap_or(DEFAULT_MAX_LEVEL),
+            method: opts.method,
+            ..crate::report::SolveSettings::default()
+        };
+        settings.check()?;
         if let Some(bytes) = opts.max_memory {
             return Err(invalid(format!(
                 "max_memory = {bytes}: no memory limit is implemented for solves; leave it unset"
@@ -496,30 +489,7 @@ impl Problem {
             problem = self.with_set(&opts.set)?;
             &problem
         };
-        let prog = &me.program;
-        if prog.contact.is_split() {
-            if opts.method == Some(Method::Commutative) {
-                return Err(invalid(
-                    "--method commutative: a split-domain file is solved as one collocation system on all its subintervals; the seed's single equations per subinterval are shown by `lambdamat reduce`".into(),
-                ));
-            }
-            let split = SplitOptions {
-                tol: opts.tol,
-                max_level,
-            };
-            let r = crate::plan::solve_split_input(SplitInput::from_program(prog)?, &split)?;
-            return Ok(Solution::from_split(&r));
-        }
-        let sys = CompiledSystem::from_program(prog, opts.unknown.as_deref())
-            .map_err(|e| me.located(e))?;
-        let plan_opts = crate::plan::SolveOptions {
-            method: opts.method.unwrap_or(Method::Ordered),
-            tol: opts.tol,
-            max_level,
-            ..crate::plan::SolveOptions::default()
-        };
-        let r = crate::plan::solve_system(&sys, &plan_opts).map_err(|e| me.located(e))?;
-        Ok(Solution::from_system(&r))
+        crate::report::solve(&me.program, &settings).map_err(|e| me.located(e))
     }
 
     /// A plan error pointed at its place in the source, when it has one.
@@ -611,8 +581,8 @@ pub struct SolveOptions {
     pub set: Vec<(String, String)>,
     /// Refine until the error estimate is below this (finite, > 0).
     pub tol: f64,
-    /// The method (default: `ordered`; split-domain files use their own
-    /// collocation and refuse `commutative`).
+    /// The method (default: `ordered` on one interval; split-domain files
+    /// use their own collocation and refuse the others).
     pub method: Option<Method>,
     /// The highest refinement level (default [`DEFAULT_MAX_LEVEL`], at
     /// most 14).
@@ -638,112 +608,13 @@ impl Default for SolveOptions {
     }
 }
 
-/// One unknown function of a [`Solution`] on the output grid.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Field {
-    /// Grid points (a singular end of a weighted unknown is left out).
-    pub x: Vec<f64>,
-    /// Values at the grid points.
-    pub values: Vec<f64>,
-    /// Its weight, e.g. `(1 - x)^(-1/2)`, or `1`.
-    pub weight: String,
-    /// Absolute error estimate of the values (the distance between the
-    /// last two levels).
-    pub error_estimate: f64,
-}
-
-/// A solved problem: what `lambdamat solve --json` prints, as values.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Solution {
-    /// Whether every estimate reached the tolerance.
-    pub converged: bool,
-    /// The unknown scalars (split-domain files), by name.
-    pub scalars: BTreeMap<String, f64>,
-    /// The outputs, by name (an output the method does not compute is
-    /// left out, with a warning).
-    pub outputs: BTreeMap<String, f64>,
-    /// Absolute error estimates of the scalars, outputs and singular
-    /// coefficients, by name.
-    pub error_estimates: BTreeMap<String, f64>,
-    /// The unknown functions on the output grid, by name (empty for
-    /// split-domain files).
-    pub unknowns: BTreeMap<String, Field>,
-    /// Warnings (large commutator defects, a model, no convergence).
-    pub warnings: Vec<String>,
-    json: Value,
-}
-
-impl Solution {
-    fn from_system(r: &crate::plan::SolveReport) -> Solution {
-        let mut warnings = r.warnings.clone();
-        let mut outputs = BTreeMap::new();
-        let mut error_estimates = BTreeMap::new();
-        for (name, v) in &r.outputs {
-            match v {
-                Some(v) => {
-                    outputs.insert(name.clone(), *v);
-                    error_estimates.insert(name.clone(), r.error_estimate);
-                }
-                None => warnings.push(format!(
-                    "output {name}: needs an unknown this method does not compute"
-                )),
-            }
-        }
-        Solution {
-            converged: r.converged,
-            scalars: BTreeMap::new(),
-            outputs,
-            error_estimates,
-            unknowns: r
-                .unknowns
-                .iter()
-                .map(|u| {
-                    (
-                        u.name.clone(),
-                        Field {
-                            x: u.x.clone(),
-                            values: u.values.clone(),
-                            weight: u.weight.clone(),
-                            error_estimate: r.error_estimate,
-                        },
-                    )
-                })
-                .collect(),
-            warnings,
-            json: crate::cli::solve::to_json(r),
-        }
-    }
-
-    fn from_split(r: &crate::plan::SplitReport) -> Solution {
-        let map = |l: &[crate::plan::split_solve::Estimate]| -> BTreeMap<String, f64> {
-            l.iter().map(|e| (e.name.clone(), e.value)).collect()
-        };
-        let mut warnings = Vec::new();
-        if let Some(c) = r.end_check.as_ref().filter(|c| c.graded) {
-            warnings.push(crate::cli::split::end_grading_line(c));
-        }
-        Solution {
-            converged: r.converged,
-            scalars: map(&r.scalars),
-            outputs: map(&r.outputs),
-            error_estimates: r
-                .scalars
-                .iter()
-                .chain(&r.outputs)
-                .chain(&r.coefficients)
-                .map(|e| (e.name.clone(), e.error))
-                .collect(),
-            unknowns: BTreeMap::new(),
-            warnings,
-            json: crate::cli::split::to_json(r),
-        }
-    }
-
-    /// The JSON object `lambdamat solve --json` prints for the same solve.
-    pub fn to_json(&self) -> String {
-        serde_json::to_string_pretty(&self.json).unwrap_or_default()
-    }
-}
+/// A solved problem: the one report of a solve ([`crate::report::Report`]),
+/// whose [`to_json`](crate::report::Report::to_json) is what `lambdamat
+/// solve --json` prints. `converged`, `scalars`, `outputs`,
+/// `error_estimates` (absolute), `unknowns` (name → [`Field`]) and
+/// `warnings` are its fields.
+pub type Solution = crate::report::Report;
+pub use crate::report::Field;
 
 /// Options of [`Problem::smith`].
 #[derive(Clone, Debug, Default, PartialEq, Eq)]

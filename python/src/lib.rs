@@ -57,10 +57,10 @@ fn to_py(py: Python<'_>, e: lambdamat::Error) -> PyErr {
 /// full, a float as its shortest decimal.
 fn set_text(v: &Bound<'_, PyAny>) -> PyResult<String> {
     if let Ok(s) = v.cast::<PyString>() {
-        return Ok(s.to_str()?.to_string());
+        return s.extract::<String>();
     }
     if v.is_instance_of::<PyInt>() {
-        return Ok(v.str()?.to_str()?.to_string());
+        return Ok(v.str()?.extract::<String>()?);
     }
     if v.is_instance_of::<PyFloat>() {
         return Ok(lambdamat::api::float_text(v.extract::<f64>()?));
@@ -71,7 +71,7 @@ fn set_text(v: &Bound<'_, PyAny>) -> PyResult<String> {
     )))
 }
 
-fn method(name: Option<&str>) -> PyResult<Option<Method>> {
+fn parse_method(name: Option<&str>) -> PyResult<Option<Method>> {
     name.map(|m| {
         m.parse::<Method>()
             .map_err(|e| InvalidInput::new_err(format!("error: method={m}: {e}")))
@@ -132,7 +132,7 @@ impl Problem {
         let opts = SolveOptions {
             set,
             tol,
-            method: method(method)?,
+            method: parse_method(method)?,
             max_level,
             ..SolveOptions::default()
         };
@@ -207,7 +207,7 @@ impl Solution {
             .collect()
     }
     fn to_json(&self) -> String {
-        self.0.to_json()
+        serde_json::to_string_pretty(&self.0.to_json()).unwrap_or_default()
     }
 }
 
