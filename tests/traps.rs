@@ -156,3 +156,38 @@ fn every_trap_file_is_answered_within_its_estimate_or_refused_with_its_cause() {
         check(&path.display().to_string(), &trap, code, &out, &err);
     }
 }
+
+/// Extreme but valid split points of `lambdamat hertz --c`: a subnormal
+/// radius (it panicked in the mesh builder), 1e-300 (an internal message),
+/// 1e-10 (27 s and 1.1 GB, then exit 4) and the double next to 1
+/// ("breakpoints not strictly increasing") are refused, exit 3, in the
+/// user's terms, under the address-space limit; a normal point is still
+/// answered.
+#[test]
+fn extreme_hertz_split_points_are_refused_in_the_users_terms() {
+    let cases = [
+        ("1e-310", "below 1e-6"),
+        ("1e-300", "below 1e-6"),
+        ("1e-10", "below 1e-6"),
+        (
+            "0.9999999999999999",
+            "no finite friction coefficient gives it",
+        ),
+    ];
+    for (c, cause) in cases {
+        let args: Vec<String> = ["hertz", "--nu", "0.25", "--c", c]
+            .iter()
+            .map(|s| s.to_string())
+            .collect();
+        let (code, _, err) = run(&args);
+        assert_eq!(code, 3, "--c {c}: {err}");
+        assert!(err.contains(cause), "--c {c}: {err}");
+        assert!(err.contains("stick radius c ="), "--c {c}: {err}");
+    }
+    let args: Vec<String> = ["hertz", "--nu", "0.25", "--c", "0.5"]
+        .iter()
+        .map(|s| s.to_string())
+        .collect();
+    let (code, _, err) = run(&args);
+    assert_eq!(code, 0, "--c 0.5: {err}");
+}

@@ -824,6 +824,9 @@ pub fn solve_with_limit(
     given: Given,
     opts: &SplitOptions,
 ) -> Result<HertzResult, Refusal> {
+    if let Some(refusal) = extreme_given_c(nu, given) {
+        return Err(refusal);
+    }
     solve_inner(nu, given, opts).map_err(|failure| {
         let limit = Limit::classify(nu, given, &failure);
         let error = match failure {
@@ -837,6 +840,56 @@ pub fn solve_with_limit(
             None => Refusal { error, limit: None },
         }
     })
+}
+
+/// The smallest given stick radius solved: below it the scan in μ and
+/// the mesh grading toward c cost far more than a normal point (measured
+/// at ν = 0.25: c = 1e-4 in 0.9 s, 1e-6 in 4.9 s, 1e-8 over 40 s, 1e-10
+/// 27 s and 1.1 GB, and subnormal c overflowed the mesh builder).
+pub const SMALLEST_GIVEN_C: f64 = 1e-6;
+
+/// A refusal, before any solving, of a given stick radius the front does
+/// not resolve: below [`SMALLEST_GIVEN_C`] (with the small-friction
+/// asymptotic μ for information), beyond the large-friction limit `c∞(ν)`
+/// (no finite μ has it), or closer to 1 than the split solver places a
+/// root. In the user's terms, exit 3.
+fn extreme_given_c(nu: f64, given: Given) -> Option<Refusal> {
+    let Given::C(c) = given else { return None };
+    if !(nu > -1.0 && nu < 0.5 && c > 0.0 && c < 1.0) {
+        return None;
+    }
+    let gamma = gamma_of(nu);
+    if c < SMALLEST_GIVEN_C {
+        // c ≈ C₀·exp(−a/μ) as μ → 0 (docs/hertz_asymptotics.md).
+        let (a, c0) = small_friction_asymptotics(gamma);
+        let mu = a / (c0.ln() - c.ln());
+        return Some(Refusal {
+            error: no_convergence(format!(
+                "the stick radius c = {c:e} is below {SMALLEST_GIVEN_C:e}, the smallest this front resolves within the time and memory of a normal point: \
+                 as μ → 0 the stick radius is c ≈ {c0:.4}·exp(−{a:.4}/μ), which puts μ near {mu:.4e} (an asymptotic value, not refined to the tolerance; docs/hertz_asymptotics.md)"
+            )),
+            limit: None,
+        });
+    }
+    let (one_minus_c_infinity, _) = large_friction_asymptotics(gamma);
+    let c_infinity = 1.0 - one_minus_c_infinity;
+    if c > c_infinity || 1.0 - c < 1e-10 {
+        let limit = Limit::BeyondLargeFriction { c_infinity };
+        let why = if c > c_infinity {
+            format!(
+                "the stick radius c = {c} is beyond c∞(ν = {nu}) = {c_infinity}, the limit of c as μ → ∞: no finite friction coefficient gives it"
+            )
+        } else {
+            format!(
+                "the stick radius c = {c} is within 1e-10 of 1, closer than the split solver resolves (c∞(ν = {nu}) = {c_infinity}, the limit of c as μ → ∞)"
+            )
+        };
+        return Some(Refusal {
+            error: no_convergence(why),
+            limit: (c > c_infinity).then_some(limit),
+        });
+    }
+    None
 }
 
 /// Why [`solve_inner`] gave no result: the split solver's (or the input's)
