@@ -877,7 +877,7 @@ fn extreme_given_c(nu: f64, given: Given) -> Option<Refusal> {
         let limit = Limit::BeyondLargeFriction { c_infinity };
         let why = if c > c_infinity {
             format!(
-                "the stick radius c = {c} is beyond c∞(ν = {nu}) = {c_infinity}, the limit of c as μ → ∞: no finite friction coefficient gives it"
+                "the stick radius c = {c} is beyond c∞(ν) = {c_infinity} at ν = {nu}, the limit of c as μ → ∞: no finite friction coefficient gives it"
             )
         } else {
             format!(
