@@ -129,17 +129,31 @@ fn a_stick_radius_below_the_resolved_range_is_bounded_and_p_star_is_answered() {
 #[test]
 fn a_trend_that_does_not_show_a_root_beyond_the_end_still_refuses() {
     // A given c = 0.99 beyond c∞(−0.9) ≈ 0.957: the condition in μ levels
-    // off toward μ → ∞ (no root there), so no end answer either.
-    let r = solve(-0.9, Given::C(0.99), &SplitOptions::default());
-    match r {
+    // off toward μ → ∞ (no root there), so no end answer either. The
+    // `hertz` front refuses such a c before solving; the general solver,
+    // run on the same file, must reach the same refusal from its trend.
+    match solve(-0.9, Given::C(0.99), &SplitOptions::default()) {
         Err(e) => {
             assert!(!e.is_input_error());
-            let text = e.to_string();
-            assert!(text.contains("no answer at the end either"), "{text}");
-            assert!(text.contains("levels off"), "{text}");
+            assert!(e.to_string().contains("beyond c∞"), "{e}");
         }
         Ok(s) => panic!("answered: c = {}", s.c),
     }
+    let out = lambdamat()
+        .args([
+            "solve",
+            "examples/hertz_given_c.lmx",
+            "--set",
+            "nu=-9/10",
+            "--set",
+            "c=99/100",
+        ])
+        .output()
+        .expect("runs");
+    assert_eq!(out.status.code(), Some(3));
+    let text = String::from_utf8_lossy(&out.stderr);
+    assert!(text.contains("no answer at the end either"), "{text}");
+    assert!(text.contains("levels off"), "{text}");
 }
 
 #[test]

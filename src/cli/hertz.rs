@@ -336,9 +336,9 @@ fn text(s: &HertzResult, given_c: bool) -> String {
     );
     let _ = writeln!(
         o,
-        "  error estimate {:.1e} (successive refinement levels, finest level {}, {} unknowns; tolerance {:.0e} {})",
+        "  error estimate {:.1e} (successive refinement levels: {}, {} unknowns; tolerance {:.0e} {})",
         s.error_estimate,
-        s.levels.saturating_sub(1),
+        s.levels,
         s.unknowns,
         s.tol,
         if s.converged {
