@@ -275,12 +275,10 @@ fn beyond_c_infinity(
         return Ok(None);
     }
     let (one_minus_c_inf, _) = large_friction_asymptotics(gamma);
-    // NOTE: this reads c's value, not its estimate (as before the report
-    // change; flagged in issue 25's notes).
     let c_err = scalars
         .iter()
         .find(|e| e.name == "c")
-        .map(|e| e.value)
+        .map(|e| e.error)
         .ok_or_else(|| invalid("the Hertz file has no `c`".into()))?;
     Ok((1.0 - c + c_err < 0.5 * one_minus_c_inf).then(|| {
         no_convergence(format!(
