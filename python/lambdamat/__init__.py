@@ -69,7 +69,23 @@ class Solution:
         return f"Solution(converged={self.converged}, {shown})"
 
 
-class SmithForm:
+class _Printed:
+    """What the command line prints for a value, through the one printer:
+    ``text()``, ``latex()`` (``--latex``) and ``to_json()`` (``--json``)."""
+
+    _native: Any
+
+    def text(self) -> str:
+        return self._native.text()
+
+    def latex(self) -> str:
+        return self._native.latex()
+
+    def to_json(self) -> str:
+        return self._native.to_json()
+
+
+class SmithForm(_Printed):
     """A certified Smith decomposition U·A·V = D; entries are exact, in the
     language's syntax (they parse back). ``U`` and ``V`` are None in the
     determinantal-divisor mode (several symbols, no principal one)."""
@@ -86,18 +102,6 @@ class SmithForm:
         self.verified: bool = native.verified
         self.certificate = native.certificate
 
-    def text(self) -> str:
-        """What ``lambdamat smith`` prints."""
-        return self._native.text()
-
-    def latex(self) -> str:
-        """What ``lambdamat smith --latex`` prints."""
-        return self._native.latex()
-
-    def to_json(self) -> str:
-        """What ``lambdamat smith --json`` prints."""
-        return self._native.to_json()
-
     def _repr_latex_(self) -> str:
         # Jupyter renders one math block: the LaTeX lines of the printer.
         lines = [
@@ -113,7 +117,7 @@ class SmithForm:
         return f"SmithForm({self.name} over {self.ring}: invariant factors {', '.join(self.invariant_factors)})"
 
 
-class Reduction:
+class Reduction(_Printed):
     """One equation for one unknown of an operator system: the commutative
     eliminant (``eliminant``: its operator in the language's syntax), the
     ordered elimination (``ordered``, or None) and the commuted pairs."""
@@ -129,18 +133,6 @@ class Reduction:
         self.ordered_latex: Optional[str] = None if ordered is None else ordered[1]
         self.commuted_pairs = native.commuted_pairs
         self.pieces = native.pieces
-
-    def text(self) -> str:
-        """What ``lambdamat reduce`` prints."""
-        return self._native.text()
-
-    def latex(self) -> str:
-        """What ``lambdamat reduce --latex`` prints."""
-        return self._native.latex()
-
-    def to_json(self) -> str:
-        """What ``lambdamat reduce --json`` prints."""
-        return self._native.to_json()
 
     def _repr_latex_(self) -> str:
         ordered = f"\\quad\\text{{ordered: }} {self.ordered_latex}" if self.ordered_latex else ""
