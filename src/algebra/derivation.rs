@@ -26,7 +26,7 @@ use super::polyring::PolyRing;
 
 /// The largest bound on the number of terms of `det(A)` for which the
 /// commutative eliminant is expanded. Past it, `det` and `adj` (Bareiss
-/// over Q[symbols]) may take minutes: the eliminant of a sparse 20×20
+/// over Q\[symbols\]) may take minutes: the eliminant of a sparse 20×20
 /// system with three terms per row has a bound of 3^20 ≈ 3.5e9.
 pub const MAX_ELIMINANT_TERMS: f64 = 20_000.0;
 

@@ -1,7 +1,7 @@
 //! The commutative eliminant of one unknown of a square system `A·X = G`
-//! over Q[symbols]: `det(A)·x_i = Σ_j adj(A)_ij·g_j`, divided by the common
+//! over Q\[symbols\]: `det(A)·x_i = Σ_j adj(A)_ij·g_j`, divided by the common
 //! factor of the whole relation, cross-checked against the determinantal
-//! divisors (Smith data over Q[all]), together with the symbol pairs whose
+//! divisors (Smith data over Q\[all\]), together with the symbol pairs whose
 //! commutation the derivation assumed. The right sides `g_j` are opaque
 //! here: the relation keeps every term, also those whose `g_j` is zero, so
 //! no factor is cancelled on the strength of a zero right side. This module owns that computation; it must not know about
@@ -56,7 +56,7 @@ pub struct CommutedPair {
     pub on_unknowns: Vec<usize>,
 }
 
-/// The cross-check of the eliminant against the Smith data over Q[all].
+/// The cross-check of the eliminant against the Smith data over Q\[all\].
 #[derive(Clone, Debug, PartialEq)]
 pub struct SmithCrossCheck {
     /// The invariant factors f_1 | … | f_n (determinantal divisors).

@@ -2,7 +2,7 @@
 //! Algorithm 4.5.2L): Euclid's quotients are simulated on the leading 62
 //! bits, and the accumulated 2×2 cofactor matrix is applied to the full
 //! numbers once per word, instead of num-bigint's bit-by-bit binary gcd.
-//! Profiling showed gcd dominating Q[x] arithmetic (≈80% of a 10×10 Smith
+//! Profiling showed gcd dominating Q\[x\] arithmetic (≈80% of a 10×10 Smith
 //! decomposition); this module owns only that routine.
 
 use num_bigint::{BigInt, BigUint, Sign};
@@ -303,7 +303,7 @@ fn lehmer_step(x: u64, y: u64, floor: u64) -> (i128, i128, i128, i128) {
 /// t_{j−1} − q_j·t_j` (so `r_j ≡ t_j·b mod a`), stopped at the first
 /// `j ≥ 1` with `r_j ≤ bound`: returns `(r_j, t_j)`. This is the loop of
 /// rational reconstruction (Wang), run by Lehmer steps
-/// ([`lehmer_step`] with a floor, so that no accepted step passes the
+/// (`lehmer_step` with a floor, so that no accepted step passes the
 /// bound) and single divisions where Lehmer's quotients are not certain.
 pub fn euclid_below(a: &BigUint, b: &BigUint, bound: &BigUint) -> (BigUint, BigInt) {
     debug_assert!(a > b);

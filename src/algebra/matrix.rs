@@ -1,5 +1,5 @@
 //! `Matrix<R>`: a dense matrix that stores its ring object beside its
-//! entries, so one type serves Q, Q[x], Q[s1..sn] and Q(others)[λ]. Owns
+//! entries, so one type serves Q, Q\[x\], Q[s1..sn] and Q(others)\[λ\]. Owns
 //! shape handling, products, the fraction-free (Bareiss) determinant,
 //! adjugate, rank and k×k minors; the Smith normal form lives in
 //! [`super::smith`].

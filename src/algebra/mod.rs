@@ -8,12 +8,12 @@
 //! * [`gcd`]: multivariate gcd (modular first, primitive PRS as fallback);
 //! * [`kronecker`]: integer polynomial products by Kronecker substitution;
 //! * [`decimal`]: decimal text of big naturals (for printing);
-//! * [`modular`]: word-size prime fields, Z_p[x], Chinese remainders;
-//! * [`modgcd`]: Brown's modular multivariate gcd and the modular Q[x] gcd;
+//! * [`modular`]: word-size prime fields, Z_p\[x\], Chinese remainders;
+//! * [`modgcd`]: Brown's modular multivariate gcd and the modular Q\[x\] gcd;
 //! * [`ratfunc`]: the field Q(s1..sn) of reduced rational functions;
-//! * [`upoly`]: dense univariate polynomials over any field object (Q[x],
-//!   Q(others)[λ]);
-//! * [`print`]: the one printer (text, LaTeX, the language's syntax) on a
+//! * [`upoly`]: dense univariate polynomials over any field object (Q\[x\],
+//!   Q(others)\[λ\]);
+//! * [`mod@print`]: the one printer (text, LaTeX, the language's syntax) on a
 //!   print tree that every ring builds;
 //! * [`matrix`]: `Matrix<R>` over a ring object, Bareiss determinant,
 //!   adjugate, rank, minors;

@@ -1,8 +1,8 @@
 //! Modular gcds over Q: Brown's dense modular algorithm for
 //! multivariate polynomials ([`mpoly_gcd`]) and the small-prime modular
-//! gcd for Q[x] ([`qx_gcd`]). Images are computed over Z_p (p < 2^62) —
+//! gcd for Q\[x\] ([`qx_gcd`]). Images are computed over Z_p (p < 2^62) —
 //! multivariate ones by evaluation/interpolation of the least significant
-//! variable, recursively, down to Euclid in Z_p[x] — combined by the
+//! variable, recursively, down to Euclid in Z_p\[x\] — combined by the
 //! Chinese remainder theorem and accepted only after exact trial division
 //! over Z, so a returned gcd is always exact; `None` asks the caller to use
 //! its fallback (the primitive PRS of [`super::gcd`]). Owns the algorithms,

@@ -15,7 +15,7 @@ pub struct PolyRing {
 }
 
 impl PolyRing {
-    /// The ring Q[names].
+    /// The ring `Q[names]`.
     pub fn new(names: Vec<String>) -> Self {
         PolyRing { names }
     }

@@ -1,6 +1,6 @@
 //! The one printer of every formula lambdamat shows: a small print tree
 //! ([`Node`]) that each ring builds from its elements, and one function
-//! ([`print`]) that writes the tree as plain text, LaTeX or the language's
+//! ([`print()`]) that writes the tree as plain text, LaTeX or the language's
 //! own syntax ([`Format`]). Parentheses and signs are decided here, on the
 //! tree, from binding strengths that follow the language's Pratt parser
 //! (`^` tightest and right-associative, then unary minus, then `*` `/`,
@@ -61,7 +61,7 @@ impl PrintOptions {
     };
 }
 
-/// A formula as a tree. Ring printers build it; [`print`] lays it out.
+/// A formula as a tree. Ring printers build it; [`print()`] lays it out.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Node {
     /// An exact rational (any sign).

@@ -1,4 +1,4 @@
-//! Q[x] specialised for speed: a polynomial is a vector of `BigInt`
+//! Q\[x\] specialised for speed: a polynomial is a vector of `BigInt`
 //! numerators over one common positive denominator, kept coprime, so ring
 //! operations are integer convolutions with one gcd per result instead of
 //! one per coefficient. [`QxRing`] implements the same contracts as
@@ -219,7 +219,7 @@ pub(crate) fn conv(a: &[BigInt], b: &[BigInt]) -> Vec<BigInt> {
     c
 }
 
-/// The ring Q[var] with the fast representation.
+/// The ring Q\[var\] with the fast representation.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct QxRing {
     /// The variable's name.
@@ -227,7 +227,7 @@ pub struct QxRing {
 }
 
 impl QxRing {
-    /// Q[var].
+    /// Q\[var\].
     pub fn new(var: impl Into<String>) -> Self {
         QxRing { var: var.into() }
     }

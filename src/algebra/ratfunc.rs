@@ -2,7 +2,7 @@
 //! numerator and denominator coprime, denominator with coprime integer
 //! coefficients and a positive leading coefficient, so equal functions are
 //! equal as data. Used as the coefficient field K of the principal-variable
-//! Smith mode, K[λ]. Owns only the fraction arithmetic; gcds come from
+//! Smith mode, K\[λ\]. Owns only the fraction arithmetic; gcds come from
 //! [`super::gcd`].
 
 use super::gcd::gcd_cofactors;

@@ -1,7 +1,7 @@
 //! The capability ladder of the exact algebra: [`Ring`] → [`GcdDomain`] →
 //! [`EuclideanDomain`], and [`Field`]. Rings are *objects* (they may carry
 //! variable names or a coefficient field) stored beside the data, so one
-//! `Matrix<R>` type serves Q, Q[x], Q[s1..sn] and Q(others)[λ]. This module
+//! `Matrix<R>` type serves Q, Q\[x\], Q[s1..sn] and Q(others)\[λ\]. This module
 //! only states the contracts; implementations live with their element types.
 
 use super::print::{Node, PrintOptions, print};
@@ -93,7 +93,7 @@ pub trait EuclideanDomain: GcdDomain {
     fn normal_unit(&self, a: &Self::Elem) -> Self::Elem;
     /// A unit by which a row (or column) of a matrix may be scaled to keep its
     /// coefficients small, e.g. clearing denominators and integer content in
-    /// Q[x]. The default is one (no scaling).
+    /// Q\[x\]. The default is one (no scaling).
     fn row_scale_unit(&self, _row: &[&Self::Elem]) -> Self::Elem {
         self.one()
     }

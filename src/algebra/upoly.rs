@@ -1,5 +1,5 @@
 //! Dense univariate polynomials over any field object `K`: the Euclidean
-//! domain K[λ] on which the Smith normal form is computed (K = Q for one
+//! domain K\[λ\] on which the Smith normal form is computed (K = Q for one
 //! symbol, K = Q(others) for a principal symbol). Owns the coefficient
 //! vectors, long division and printing; knows nothing of matrices.
 
@@ -22,7 +22,7 @@ impl<E> UPoly<E> {
     }
 }
 
-/// The ring K[var].
+/// The ring K\[var\].
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct UPolyRing<K: Field> {
     /// The coefficient field.
@@ -32,7 +32,7 @@ pub struct UPolyRing<K: Field> {
 }
 
 impl<K: Field> UPolyRing<K> {
-    /// K[var].
+    /// K\[var\].
     pub fn new(k: K, var: impl Into<String>) -> Self {
         UPolyRing { k, var: var.into() }
     }

@@ -13,7 +13,7 @@ use crate::api::Problem;
 use crate::lang::{MatrixDef, Program};
 use std::io::Write;
 
-/// A matrix definition as a matrix over Q[symbols].
+/// A matrix definition as a matrix over Q\[symbols\].
 pub fn to_matrix(symbols: &[String], m: &MatrixDef) -> Matrix<PolyRing> {
     Matrix::new(
         PolyRing::new(symbols.to_vec()),

@@ -1,7 +1,7 @@
 //! Discretisation of [`Operator`]s on a [`PanelBasis`] by collocation: entry
 //! `(i, j)` of the matrix is the operator applied to basis function `j`,
 //! evaluated at point `x_i`. Every integral is a product integral computed
-//! by [`composite_rule`]: the smooth factor `a(x,t)` times the Lagrange
+//! by \[`composite_rule`\]: the smooth factor `a(x,t)` times the Lagrange
 //! polynomial is integrated against the exact singular weight
 //! (`|t-x|^{-1/2}|t+x|^{-1/2}` and the basis weight), so the diagonal
 //! singularity and the factored edge exponent cost no accuracy. Panels far

@@ -35,7 +35,7 @@ impl RuleCache {
     /// rule depends only on `(n, a, b)`, and one solve builds dozens of
     /// assemblers (one per basis per discretisation, several
     /// discretisations per root iteration) that need the same few rules.
-    /// Cleared when it holds more than [`SHARED_RULES`] rules (a long sweep
+    /// Cleared when it holds more than `SHARED_RULES` rules (a long sweep
     /// meets new edge exponents at every point).
     pub fn shared() -> &'static RuleCache {
         static SHARED: OnceLock<RuleCache> = OnceLock::new();

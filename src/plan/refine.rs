@@ -425,7 +425,7 @@ pub fn solve_system(sys: &CompiledSystem, opts: &SolveOptions) -> Result<SolveRe
 /// [`solve_system`] executing a derivation already built for `sys` (by
 /// [`CompiledSystem::derivation`] or [`crate::reduce::derive`] on the same
 /// file and target); `None` when the system has none (`det(A) = 0` over
-/// Q[symbols]: `coupled` and `ordered` still solve, the commutative model
+/// Q\[symbols\]: `coupled` and `ordered` still solve, the commutative model
 /// refuses).
 pub fn solve_derived(
     sys: &CompiledSystem,

@@ -262,7 +262,7 @@ impl SplitProblem {
 
     /// The linear part (identity and single symbols) of the operator of
     /// equation `e` on unknown `j` (`None` where it has none); its
-    /// products are [`SplitProblem::products`].
+    /// products are `SplitProblem::products`.
     pub fn operator(&self, e: usize, j: usize) -> Option<&Operator> {
         self.ops
             .get(e)
@@ -999,7 +999,7 @@ impl SplitProblem {
     }
 
     /// The value of output `o` for a discrete solution: its functional's
-    /// row ([`Layout::functional`]) applied to the coefficients.
+    /// row (`Layout::functional`) applied to the coefficients.
     pub fn output(&self, d: &Discrete, o: usize) -> Result<f64, PlanError> {
         let (row, constant) = d.layout().functional(&self.sys.outputs[o].terms)?;
         Ok(constant + row.dot(&d.solution))

@@ -243,7 +243,7 @@ pub struct Reduction {
     pub lambda_matrix_latex: Vec<Vec<String>>,
     /// The ring, e.g. `Q[k1, k2, k3, k4]`.
     pub ring: String,
-    /// Invariant factors over Q[all] (empty if not computed).
+    /// Invariant factors over Q\[all\] (empty if not computed).
     pub invariant_factors: Vec<String>,
     /// LaTeX of the invariant factors.
     pub invariant_factors_latex: Vec<String>,
@@ -316,7 +316,7 @@ pub fn choose_unknown(p: &Program, name: Option<&str>) -> Result<usize, ReduceEr
     }
 }
 
-/// The λ-matrix of the program's operator system over Q[symbols].
+/// The λ-matrix of the program's operator system over Q\[symbols\].
 pub fn lambda_matrix(p: &Program) -> Matrix<PolyRing> {
     let m = p.lambda_matrix();
     Matrix::new(PolyRing::new(p.symbols.clone()), m.rows, m.cols, m.entries)

@@ -273,9 +273,9 @@ fn first_difference<R: GcdDomain>(x: &Matrix<R>, y: &Matrix<R>) -> (usize, usize
     (0, 0)
 }
 
-/// Evaluates identities over Q[x] with denominators cleared: each left
+/// Evaluates identities over Q\[x\] with denominators cleared: each left
 /// factor's rows and each right factor's columns are brought to one
-/// common denominator, the product is taken over Z[x] (no rational
+/// common denominator, the product is taken over Z\[x\] (no rational
 /// normalisation per term), and each entry of the result is put in
 /// canonical form once. Exactly the same statement as [`Direct`], much
 /// cheaper on large matrices with big rational entries.
@@ -530,7 +530,7 @@ fn add_scaled(slot: &mut [u64], mag: &[u64], q: u64) {
     }
 }
 
-/// `X·Y` over Q[x] through an integer product.
+/// `X·Y` over Q\[x\] through an integer product.
 pub fn mul_cleared(x: &Matrix<QxRing>, y: &Matrix<QxRing>) -> Option<Matrix<QxRing>> {
     if x.cols() != y.rows() {
         return None;
@@ -677,7 +677,7 @@ pub(super) fn push_product_check(
     prod
 }
 
-/// Certifies that a square A over Q[x] has invariant factors 1, …, 1, f
+/// Certifies that a square A over Q\[x\] has invariant factors 1, …, 1, f
 /// with `f = c/lc(c)`, from `A·B = c·I` alone (no transforms), and returns
 /// f. Three exact checks:
 /// 1. `A·B = c·I` with `c ≠ 0` (an integer product, [`ClearedQx`]); then A
@@ -804,7 +804,7 @@ fn det_agrees_mod_p(a: &Matrix<QxRing>, c: &QPoly) -> Option<u64> {
     Some(p)
 }
 
-/// Certifies the invariant factors of a square A over Q[x] (n ≥ 3) as
+/// Certifies the invariant factors of a square A over Q\[x\] (n ≥ 3) as
 /// 1, …, 1, g, c/g (normalised) from `A·B = c·I` and `c = κ·det A` for a
 /// nonzero constant κ, without transforms, and returns all n of them.
 /// The checks:

@@ -1,34 +1,34 @@
 //! Certifies invariant factors 1, …, 1, det over Q[s1..sn] (several
 //! symbols) from `A·B = c·I` alone, with no transforms and no minors, for
-//! a set S of symbols: over Q(others)[s] for each s ∈ S (the principal
+//! a set S of symbols: over Q(others)\[s\] for each s ∈ S (the principal
 //! mode takes S = {λ}; the determinantal mode takes every symbol of A, and
-//! then the statement holds over Q[all]). It recomputes what it states
+//! then the statement holds over Q\[all\]). It recomputes what it states
 //! from A, B and c and never trusts the algorithm that produced them
 //! ([`super::several`]); it must not compute B or choose a mode.
 //!
 //! The argument, for one symbol s and K = Q(others):
-//! 1. `A·B = c·I` exactly over Q[all] with `c ≠ 0`; so A is invertible and
+//! 1. `A·B = c·I` exactly over Q\[all\] with `c ≠ 0`; so A is invertible and
 //!    `B = (c/δ)·adj A` (δ = det A); write `c/δ = u/v` in lowest terms;
-//! 2. the entries of B have gcd 1 over K[s]: their images in Z_p[s] at a
+//! 2. the entries of B have gcd 1 over K\[s\]: their images in Z_p\[s\] at a
 //!    point of the other symbols where the first entry keeps its leading
 //!    coefficient in s have gcd 1 (by Gauss's lemma a common factor g
-//!    primitive over Z[others] keeps its degree in s there and divides
+//!    primitive over Z\[others\] keeps its degree in s there and divides
 //!    every image). From `u·adj A = v·B`, u divides every entry of B, so
 //!    u ∈ K (free of s);
 //! 3. `deg_s c = N_s`, the least of the sums of row and of column degrees
 //!    in s of A, which bounds `deg_s δ`; since `δ = c·v/u`, v is free of s.
 //!
-//! Hence over K[s] c and det A are associates and adj A = (v/u)·B has
+//! Hence over K\[s\] c and det A are associates and adj A = (v/u)·B has
 //! unit content, so `d_(n−1) = 1` and the invariant factors are
 //! 1, …, 1, c (made monic in s). When every symbol of A is in S, u and v
-//! are constants and the same holds over Q[all]: d_(n−1) = 1 and
+//! are constants and the same holds over Q\[all\]: d_(n−1) = 1 and
 //! d_n ~ c.
 //!
 //! For a non-square A, [`certify_maximal_minors`] states invariant factors
-//! 1, …, 1, d over Q(others)[s] from its maximal minors computed exactly
+//! 1, …, 1, d over Q(others)\[s\] from its maximal minors computed exactly
 //! (d their gcd) and step 2's argument applied to them. For a square A
 //! with `d_(n−1) ≠ 1`, [`certify_two_factors_several`] states 1, …, 1, g,
-//! c/g over Q(others)[s] from the same `A·B = c·I`: g the gcd of B's
+//! c/g over Q(others)\[s\] from the same `A·B = c·I`: g the gcd of B's
 //! entries (step 2's argument on the quotients), `c/det A` free of s by
 //! Jacobi's identity, `d_(n−2) = 1` from (n−2)×(n−2) minors of A.
 
@@ -175,10 +175,10 @@ fn product_is_c_identity(a: &Matrix<PolyRing>, c: &MPoly, b: &Matrix<PolyRing>) 
     true
 }
 
-/// Certifies, for every symbol s in `symbols`, that over Q(others)[s] the
+/// Certifies, for every symbol s in `symbols`, that over Q(others)\[s\] the
 /// invariant factors of the square A are 1, …, 1, c (up to a unit), given
 /// `A·B = c·I`; see the module text. With every symbol of A in `symbols`
-/// this proves `d_(n−1) = 1` and `d_n ~ c` over Q[all].
+/// this proves `d_(n−1) = 1` and `d_n ~ c` over Q\[all\].
 pub fn certify_last_factor_several(
     a: &Matrix<PolyRing>,
     c: &MPoly,
@@ -255,11 +255,11 @@ pub fn certify_last_factor_several(
 pub const MAXIMAL_MINORS_LIMIT: usize = 64;
 
 /// Certifies the invariant factors of a non-square `a` (m×n, r = min(m, n))
-/// over Q(others)[s] from A alone, without transforms: every r×r minor
+/// over Q(others)\[s\] from A alone, without transforms: every r×r minor
 /// (r-subsets of the longer side, at most [`MAXIMAL_MINORS_LIMIT`]) is
-/// computed exactly over Q[all]; `d` = the primitive part in s of their
-/// gcd over Q[all] divides each of them exactly and the quotients have gcd
-/// 1 over Q(others)[s] (their images in Z_p[s] at a point where the first
+/// computed exactly over Q\[all\]; `d` = the primitive part in s of their
+/// gcd over Q\[all\] divides each of them exactly and the quotients have gcd
+/// 1 over Q(others)\[s\] (their images in Z_p\[s\] at a point where the first
 /// keeps its degree in s, the argument of the module text, step 2), so
 /// `d_r ~ d`; and some (r−1)×(r−1) minors have gcd 1 there, so `d_(r−1) =
 /// 1` and `d_k = 1` for k < r (d_k divides d_(k+1)). The invariant factors
@@ -443,29 +443,29 @@ pub fn certify_maximal_minors(a: &Matrix<PolyRing>, s: usize) -> Option<(Certifi
 /// [`certify_two_factors_several`] for `d_(n−2) = 1`.
 pub const TWO_FACTOR_MINORS_LIMIT: usize = 64;
 
-/// Certifies, for a square A with `A·B = c·I` over Q[all], that over
-/// Q(others)[s] the invariant factors of A are 1, …, 1, g, c/g, where g is
+/// Certifies, for a square A with `A·B = c·I` over Q\[all\], that over
+/// Q(others)\[s\] the invariant factors of A are 1, …, 1, g, c/g, where g is
 /// the primitive part in s of the gcd of B's entries: the case
 /// `d_(n−1) ≠ 1` that [`certify_last_factor_several`] declines (the
 /// several-symbol analogue of `hermite_cert::certify_two_factors`, by
 /// Jacobi's identity). With K = Q(others):
 /// 1. `A·B = c·I` exactly with `c ≠ 0`: `B = c·A⁻¹`;
 /// 2. g (primitive in s; 1 when the gcd is free of s) divides every entry
-///    of B exactly over Q[all], and the quotients have gcd 1 over K[s] (images
-///    in Z_p[s] at a point where the first keeps its degree in s, the
-///    module text's step 2): the gcd of B's entries over K[s] is g;
+///    of B exactly over Q\[all\], and the quotients have gcd 1 over K\[s\] (images
+///    in Z_p\[s\] at a point where the first keeps its degree in s, the
+///    module text's step 2): the gcd of B's entries over K\[s\] is g;
 /// 3. `c/det A ∈ K`: by Jacobi's identity a 2×2 minor of `A⁻¹` on rows I,
 ///    columns J is `±det A[J′, I′]/det A` (J′, I′ the complements), so the
 ///    2×2 minor m_B of B there is `±(c/det A)·c·M` with `M = det A[J′, I′]`
 ///    computed directly from A; `m_B·lc_s(c·M) = c·M·lc_s(m_B)` exactly over
-///    Q[all] shows the ratio free of s. Hence over K[s] `c ~ det A` and
+///    Q\[all\] shows the ratio free of s. Hence over K\[s\] `c ~ det A` and
 ///    `B ~ adj A`, so `d_n ~ c` and `d_(n−1)` (the gcd of adj A's entries)
 ///    `~ g`;
 /// 4. `d_(n−2) = 1`: some (n−2)×(n−2) minors of A (computed exactly, the
-///    first one M of step 3) have gcd 1 over K[s] by the same image
+///    first one M of step 3) have gcd 1 over K\[s\] by the same image
 ///    argument (n = 2: `d_0 = 1`; not needed when g = 1);
-/// 5. `c/g` and `(c/g)/g` are exact divisions over Q[all] (g is primitive
-///    in s, so by Gauss's lemma divisibility over K[s] is exact division
+/// 5. `c/g` and `(c/g)/g` are exact divisions over Q\[all\] (g is primitive
+///    in s, so by Gauss's lemma divisibility over K\[s\] is exact division
 ///    here): `f_(n−1) = d_(n−1)/d_(n−2) ~ g` divides `f_n = d_n/d_(n−1) ~
 ///    c/g`, a consistency check on 1–4.
 ///
@@ -670,7 +670,7 @@ fn next_subset(sub: &mut [usize], n: usize) -> bool {
 }
 
 /// A lower bound on `deg_λ det A` (λ = symbol `s`): the degree of the
-/// image of det A in Z_p[λ] at a point of the other symbols, det taken at
+/// image of det A in Z_p\[λ\] at a point of the other symbols, det taken at
 /// `N + 1` values of λ (N = [`degree_bound`]) and interpolated. Reduction
 /// and evaluation form a ring map, which can lower degrees, never raise
 /// them. The largest degree over a few primes and points; stops as soon as
@@ -806,7 +806,7 @@ fn cleared_line(line: &[&UPoly<RatFunc>], s: usize, nv: usize) -> Vec<MPoly> {
         .collect()
 }
 
-/// det of a square matrix over Q[all] by expansion along its row with the
+/// det of a square matrix over Q\[all\] by expansion along its row with the
 /// most terms, the minors by fraction-free elimination: a transform whose
 /// rows differ greatly in size (the row of a Bezout step) never enters an
 /// exact division. `None` if not square.
@@ -839,9 +839,9 @@ pub fn det_expanding_largest_row(m: &Matrix<PolyRing>) -> Option<MPoly> {
     Some(acc)
 }
 
-/// Whether `U·A·V = D` over K[λ] (λ = symbol `s`), evaluated over Q[all]
+/// Whether `U·A·V = D` over K\[λ\] (λ = symbol `s`), evaluated over Q\[all\]
 /// with each row i of U cleared by δ_i, each column j of V by ε_j and
-/// each entry of D by γ_ij (all in Q[others]): `U′ = diag(δ)·U`, `V′ =
+/// each entry of D by γ_ij (all in Q\[others\]): `U′ = diag(δ)·U`, `V′ =
 /// V·diag(ε)`, and `U·A·V = D` ⇔ `γ_ij·(U′·A·V′)_ij = δ_i·ε_j·D̃_ij` for
 /// all i, j. The same statement as clearing whole matrices, with far
 /// smaller scales.
@@ -919,22 +919,22 @@ pub fn product_by_lines(
     true
 }
 
-/// Certifies a Smith decomposition `U·A·V = D` over K[λ], K = Q(others), λ
-/// the symbol with index `s`, without inverse products (`a` over Q[all],
-/// `ap` the same matrix over K[λ]; the product is evaluated by
+/// Certifies a Smith decomposition `U·A·V = D` over K\[λ\], K = Q(others), λ
+/// the symbol with index `s`, without inverse products (`a` over Q\[all\],
+/// `ap` the same matrix over K\[λ\]; the product is evaluated by
 /// [`product_by_lines`]):
 /// 1. `U·A·V = D` exactly, D diagonal with monic entries, zeros last, each
-///    nonzero entry dividing the next (pseudo-remainder in λ over Q[all]
+///    nonzero entry dividing the next (pseudo-remainder in λ over Q\[all\]
 ///    of the cleared entries, zero exactly when the division holds over
-///    K[λ]);
+///    K\[λ\]);
 /// 2. for a square A with no zero on D's diagonal: `deg_λ det A ≥ Σ deg_λ
 ///    D_ii` from the image of det A at a point mod p (a ring map cannot
 ///    raise the degree). Then `det U·det A·det V = det D ≠ 0` in the domain
-///    K[λ], so `deg det U + deg det V ≤ 0`: both determinants are nonzero
-///    elements of K, units of K[λ];
+///    K\[λ\], so `deg det U + deg det V ≤ 0`: both determinants are nonzero
+///    elements of K, units of K\[λ\];
 /// 3. otherwise: U with each row and V with each column cleared of
-///    denominators (by an element of Q[others]) have determinants (fraction
-///    -free elimination over Q[all]) that are nonzero and free of λ.
+///    denominators (by an element of Q\[others\]) have determinants (fraction
+///    -free elimination over Q\[all\]) that are nonzero and free of λ.
 pub fn certify_principal_degrees(
     a: &Matrix<PolyRing>,
     s: usize,

@@ -6,9 +6,9 @@
 //! Coefficient growth is kept down three ways: the pivot is always an entry
 //! of least degree, rows are reduced by division with remainder before they
 //! are eliminated (degree grows linearly, not geometrically), and every
-//! modified row is rescaled by a unit of the ring (for Q[x]: cleared
+//! modified row is rescaled by a unit of the ring (for Q\[x\]: cleared
 //! denominators, coprime integer coefficients). This module must not check
-//! its own result; [`super::certify`] does that independently.
+//! its own result; [`mod@super::certify`] does that independently.
 
 use crate::algebra::matrix::Matrix;
 use crate::algebra::ring::EuclideanDomain;

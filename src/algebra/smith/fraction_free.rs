@@ -1,10 +1,10 @@
 //! The principal mode's elimination without rational-function arithmetic:
-//! a Smith elimination over R[λ], R = Q[others], for any A over Q[all]
+//! a Smith elimination over R\[λ\], R = Q\[others\], for any A over Q\[all\]
 //! (any shape and rank). Every operation is `row_i ← m·row_i − q·row_k` (and the
 //! same on columns) with `m ∈ R \ {0}` (a unit of K = Q(others)) and
 //! `q ∈ R[λ]` from a pseudo-division in λ, so U′ and V′ stay polynomial
-//! and `U′·A·V′ = diag(e_1, …, e_r, 0, …)` over Q[all], with det U′ and det V′
-//! nonzero elements of R and e_i | e_(i+1) over K[λ]. The content in R of
+//! and `U′·A·V′ = diag(e_1, …, e_r, 0, …)` over Q\[all\], with det U′ and det V′
+//! nonzero elements of R and e_i | e_(i+1) over K\[λ\]. The content in R of
 //! each changed row (column), taken over the working matrix and U′ (V′)
 //! together, is divided out, which keeps the entries near the size of the
 //! minors. Nothing here is trusted: [`super::certify_several::
@@ -19,7 +19,7 @@ use crate::algebra::ratfunc::{RatFunc, RatFuncField};
 use crate::algebra::rational::primitive_scale;
 use crate::algebra::upoly::UPolyRing;
 
-/// `U′·A·V′ = diag(e)` over Q[all] (not yet certified).
+/// `U′·A·V′ = diag(e)` over Q\[all\] (not yet certified).
 #[derive(Clone, Debug)]
 pub struct FractionFree {
     /// Row transform, polynomial.
@@ -27,7 +27,7 @@ pub struct FractionFree {
     /// Column transform, polynomial.
     pub v: Matrix<PolyRing>,
     /// The nonzero diagonal (length the rank), each entry dividing the
-    /// next over K[λ]; the rest of `U′·A·V′` is zero.
+    /// next over K\[λ\]; the rest of `U′·A·V′` is zero.
     pub e: Vec<MPoly>,
 }
 
@@ -196,7 +196,7 @@ impl Work {
     }
 }
 
-/// The fraction-free Smith elimination of `a` over Q[others][λ], λ the
+/// The fraction-free Smith elimination of `a` over `Q[others][λ]`, λ the
 /// symbol with index `p` (any shape and rank); `None` only if a safeguard
 /// stops it: the number of rounds, or the size of the entries
 /// ([`SIZE_LIMIT_BITS`]).
@@ -317,7 +317,7 @@ pub fn eliminate_fraction_free_within(
     })
 }
 
-/// `(U, D, V)` over K[λ] from a fraction-free result: `D = diag(e_i /
+/// `(U, D, V)` over K\[λ\] from a fraction-free result: `D = diag(e_i /
 /// lc_λ(e_i))` (monic), `U = diag(1/lc_λ(e_i))·U′`, `V = V′`; so `U·A·V =
 /// D` whenever `U′·A·V′ = diag(e)`.
 pub fn over_k(

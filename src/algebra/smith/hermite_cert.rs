@@ -1,4 +1,4 @@
-//! Invariant factors of a nonsingular A over Q[x] with any number of
+//! Invariant factors of a nonsingular A over Q\[x\] with any number of
 //! non-trivial factors, certified without transforms of A: from
 //! `A·B = c·I` (B and c exact, from [`super::detadj`]) and a Hermite basis
 //! of the row lattice modulo the repeated part of c
@@ -23,7 +23,7 @@
 //!    reduction cannot raise a degree and over Q also
 //!    `deg det A + deg det B = n·deg c`, so `deg det A = deg det A_p`.
 //! 4. `H = [[I, h], [0, T]]` (T k×k) and a Smith decomposition
-//!    `U_T·T·V_T = D_T` of T, certified from scratch ([`super::certify`]):
+//!    `U_T·T·V_T = D_T` of T, certified from scratch ([`mod@super::certify`]):
 //!    then the invariant factors of H are `t = (1, …, 1, diag D_T)`.
 //! 5. `L(A) ⊆ L(H)`: `A·H⁻¹ = [A_1, (A_2 − A_1·h)·T⁻¹]` and
 //!    `T⁻¹ = V_T·D_T⁻¹·U_T`, so it suffices that every column s of
@@ -186,7 +186,7 @@ pub(super) fn det_degree_mod(a: &Matrix<QxRing>, p: u64) -> Option<usize> {
     degree_from_values(f, &values)
 }
 
-/// Certifies the invariant factors of a square nonsingular A over Q[x]
+/// Certifies the invariant factors of a square nonsingular A over Q\[x\]
 /// from `A·B = c·I` as described in the module documentation, and returns
 /// all n of them (monic). An empty vector means "not established"; the
 /// certificate says which step failed.

@@ -1,4 +1,4 @@
-//! Invariant factors 1, …, 1, det A/lc of a large square A over Q[x]
+//! Invariant factors 1, …, 1, det A/lc of a large square A over Q\[x\]
 //! (the generic case), certified without the adjugate: det A exactly by
 //! images and two (n−1)-minors shown coprime modulo one prime. For an
 //! n×n of degree 1 this skips the n² adjugate entries (100×100: 30 s by

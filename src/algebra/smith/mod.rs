@@ -1,14 +1,14 @@
 //! Smith normal form, in three honest modes:
 //!
-//! 1. one symbol: over Q[λ] with unimodular U, V and monic D (for inputs
+//! 1. one symbol: over Q\[λ\] with unimodular U, V and monic D (for inputs
 //!    whose transforms would be enormous, D alone, certified from
 //!    `A·B = c·I`, see [`certify::certify_last_factor`]);
-//! 2. a principal symbol among several: over K[λ], K = Q(others), plus a
-//!    denominator-free form over Q[all];
-//! 3. several symbols, no principal one: invariant factors over Q[all] from
+//! 2. a principal symbol among several: over K\[λ\], K = Q(others), plus a
+//!    denominator-free form over Q\[all\];
+//! 3. several symbols, no principal one: invariant factors over Q\[all\] from
 //!    determinantal divisors, with no transforms claimed.
 //!
-//! [`elimination`] computes, [`certify`] and [`divisors`] check
+//! [`elimination`] computes, [`mod@certify`] and [`divisors`] check
 //! independently, [`modes`] chooses the mode and produces reports. Every
 //! decomposition handed out of this module has been certified.
 

@@ -4,7 +4,7 @@
 //! form, and parses back with [`crate::lang::formula`]) and, on request,
 //! LaTeX. Also checks user-supplied
 //! decompositions ([`check_decomposition`]). Owns the conversions between
-//! Q[all], Q[λ] and Q(others)[λ]; it must not print or know about files.
+//! Q\[all\], Q\[λ\] and Q(others)\[λ\]; it must not print or know about files.
 
 use super::SmithDecomposition;
 use super::certify::{Certificate, Check, ProductCheck, Unimodular, certify};
@@ -28,11 +28,11 @@ pub type Rows = Vec<Vec<String>>;
 #[derive(Clone, Copy, Debug, Serialize, PartialEq, Eq)]
 #[serde(rename_all = "kebab-case")]
 pub enum Mode {
-    /// One symbol: Q[λ] is a PID; unimodular U, V.
+    /// One symbol: Q\[λ\] is a PID; unimodular U, V.
     OneSymbol,
     /// Principal symbol λ over K = Q(others).
     Principal,
-    /// Invariant factors over Q[all] from determinantal divisors.
+    /// Invariant factors over Q\[all\] from determinantal divisors.
     DeterminantalDivisors,
 }
 
@@ -52,8 +52,8 @@ pub struct LatexForms {
 }
 
 /// The denominator-free form of a principal-mode decomposition:
-/// `U′·A·V′ = C·D′` over Q[all], with U′, V′ polynomial, det U′ and det V′
-/// nonzero elements of Q[others], D′ primitive and C diagonal over Q[others].
+/// `U′·A·V′ = C·D′` over Q\[all\], with U′, V′ polynomial, det U′ and det V′
+/// nonzero elements of Q\[others\], D′ primitive and C diagonal over Q\[others\].
 #[derive(Clone, Debug, Serialize, PartialEq)]
 pub struct DenominatorFree {
     /// The ring the entries live in.
@@ -213,7 +213,7 @@ fn fail_if_unverified(c: &Certificate) -> Result<(), SmithError> {
     }
 }
 
-/// Q[all] with one (or no) variable → Q[x].
+/// Q\[all\] with one (or no) variable → Q\[x\].
 pub fn to_univariate(a: &Matrix<PolyRing>) -> Matrix<QxRing> {
     let var = a.ring.names.first().cloned().unwrap_or_else(|| "x".into());
     let ring = QxRing::new(var);
@@ -262,7 +262,7 @@ fn univariate_terms(p: &MPoly) -> QPoly {
     QPoly::from_upoly(&UPoly(cs))
 }
 
-/// Decomposes over Q[x]: the nonsingular fast path when it applies, the
+/// Decomposes over Q\[x\]: the nonsingular fast path when it applies, the
 /// general elimination otherwise. Returns the algorithm's name too.
 pub fn decompose_qx(a: &Matrix<QxRing>) -> (SmithDecomposition<QxRing>, &'static str) {
     match super::nonsingular::try_nonsingular(a) {
@@ -933,7 +933,7 @@ fn coefficient_field(a: &PolyRing, p: usize) -> RatFuncField {
     }
 }
 
-/// Q[all] → Q(others)[λ]: the matrix principal mode works on, with `p`
+/// Q\[all\] → Q(others)\[λ\]: the matrix principal mode works on, with `p`
 /// the index of λ among the ring's symbols.
 pub fn to_principal(a: &Matrix<PolyRing>, p: usize) -> Matrix<UPolyRing<RatFuncField>> {
     let k = coefficient_field(&a.ring, p);
@@ -1066,9 +1066,9 @@ fn principal_fraction_free(
 }
 
 /// From this size on, a square principal-mode input whose (n−1)-th
-/// determinantal divisor over Q(others)[λ] is 1 gets its invariant factors
+/// determinantal divisor over Q(others)\[λ\] is 1 gets its invariant factors
 /// without transforms (certified from `A·B = c·I`,
-/// [`super::certify_several`]); the elimination over Q(others)[λ] with
+/// [`super::certify_several`]); the elimination over Q(others)\[λ\] with
 /// transforms grows fast (random 5×5 over Q[x, y] of degree 1: 0.4 s,
 /// 6×6: 8.9 s CPU).
 pub const PRINCIPAL_FORM_ONLY_MIN: usize = 6;
@@ -1432,7 +1432,7 @@ fn denominator_free(
 }
 
 /// Above this size the several-symbol modes refuse the elimination over
-/// Q(others)[s] (rational-function coefficients; a random 6×6 over
+/// Q(others)\[s\] (rational-function coefficients; a random 6×6 over
 /// Q[x, y] of degree 1 already takes 8.9 s CPU there) when the
 /// det/adjugate route did not apply.
 pub const SEVERAL_ELIMINATION_MAX: usize = 16;
@@ -1707,8 +1707,8 @@ pub struct CheckReport {
     pub certificate: Vec<Check>,
 }
 
-/// Checks whether `(u, d, v)` is a Smith decomposition of `a`, over Q[x]
-/// (one symbol), Q(others)[λ] (principal λ) or Q[all] (otherwise), and
+/// Checks whether `(u, d, v)` is a Smith decomposition of `a`, over Q\[x\]
+/// (one symbol), Q(others)\[λ\] (principal λ) or Q\[all\] (otherwise), and
 /// says which property fails.
 pub fn check_decomposition(
     names: [String; 4],

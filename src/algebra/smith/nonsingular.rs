@@ -1,4 +1,4 @@
-//! The fast path for a square nonsingular A over Q[x] whose first n-1
+//! The fast path for a square nonsingular A over Q\[x\] whose first n-1
 //! invariant factors are 1 (the generic case, e.g. random matrices).
 //!
 //! det A and adj A are computed exactly by images mod word primes at N+1
@@ -228,7 +228,7 @@ pub struct SmallFast {
 
 impl SmallFast {
     /// The full decomposition (with `U⁻¹`), or, when building `U⁻¹`
-    /// fails, what the exact Q[x] route gives: [`try_fast`]'s result.
+    /// fails, what the exact Q\[x\] route gives: [`try_fast`]'s result.
     pub fn into_fast_path(self, a: &Matrix<QxRing>) -> Option<FastPath> {
         let SmallFast {
             parts,
@@ -334,7 +334,7 @@ pub enum Hermite {
     NoColumn,
 }
 
-/// The Hermite structure over Q[x] (the reference route, and the fallback
+/// The Hermite structure over Q\[x\] (the reference route, and the fallback
 /// when [`super::small::hermite_from_adjugate`] declines): `det` and `adj`
 /// of `Ã = diag(δ)·A` exactly, `δ` the row scales; `None` when an exact
 /// division fails.

@@ -1,7 +1,7 @@
 //! The principal mode's report without transforms for a non-square input
 //! (issue 15): when the fraction-free elimination gives up on the size of
 //! its entries ([`super::fraction_free::SIZE_LIMIT_BITS`]), the invariant
-//! factors over Q(others)[λ] are still certified from its maximal minors
+//! factors over Q(others)\[λ\] are still certified from its maximal minors
 //! ([`super::certify_several::certify_maximal_minors`]): D = diag(1, …, 1,
 //! d) padded with zeros, rank min(m, n), d the gcd of the minors. This
 //! module only assembles the report; it must not compute or certify (the
@@ -15,7 +15,7 @@ use crate::algebra::ratfunc::{RatFunc, RatFuncField};
 use crate::algebra::ring::{GcdDomain, Ring};
 use crate::algebra::upoly::UPolyRing;
 
-/// The report of a non-square `a` of full rank over Q(others)[λ] (λ =
+/// The report of a non-square `a` of full rank over Q(others)\[λ\] (λ =
 /// symbol `p`, `ap` = A over that ring) from its maximal minors,
 /// transforms omitted because of `why`; `None` when the invariant factors
 /// are not established that way.

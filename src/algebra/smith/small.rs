@@ -8,14 +8,14 @@
 //! `D = diag(1, …, 1, f)`: h by rational reconstruction from its images
 //! modulo word primes (early termination: a further prime must agree), U's
 //! rows by Garner's CRT from their images (same rule), V, V⁻¹ and U⁻¹
-//! with one normalisation per entry. Its output is the exact Q[x] route's
+//! with one normalisation per entry. Its output is the exact Q\[x\] route's
 //! (`nonsingular::exact_hermite` + `trailing::integral_rows`) entry for
 //! entry (tested); the route is a candidate generator, the certificate
 //! decides.
 //!
 //! [`certify_small`] (used by the driver for this path) checks `V·V⁻¹ = I`
 //! with V upper triangular with a nonzero constant diagonal, and
-//! `U·A = D·V⁻¹` over Z[x] (so `U·A·V = D`), and proves det U a nonzero
+//! `U·A = D·V⁻¹` over Z\[x\] (so `U·A·V = D`), and proves det U a nonzero
 //! constant from degrees: the matrix of the rows' leading coefficients of
 //! A is nonsingular modulo a prime, so deg det A = N (the sum of the row
 //! degrees) = deg f, and `det U·det A·det V = f`. This replaces the
@@ -567,7 +567,7 @@ fn lift_rows(
 /// [`super::nonsingular::try_fast`]'s exact route followed by
 /// [`super::trailing::integral_rows`] gives (h is unique given deg h_i <
 /// deg c, λ_i is the positive scale making the row primitive integral),
-/// computed without Q[x] arithmetic. Both stages end early (a further
+/// computed without Q\[x\] arithmetic. Both stages end early (a further
 /// prime agreeing), so the result is a candidate: the caller certifies it.
 /// `None` when some step declines (the caller takes the exact route).
 pub fn hermite_from_adjugate(
@@ -857,7 +857,7 @@ fn sum_of_products_is(terms: &[(&QPoly, &QPoly)], z: &QPoly) -> bool {
 }
 
 /// Certifies a [`SmallDecomposition`] of `a` exactly: `U·A·V = D` over
-/// Z[x] with denominators cleared, `V·V⁻¹ = I`, V upper triangular with
+/// Z\[x\] with denominators cleared, `V·V⁻¹ = I`, V upper triangular with
 /// nonzero constant diagonal (det V a nonzero constant), D = diag(1, …, 1,
 /// f) with f monic of degree N, and N = deg det A (the rows' leading
 /// coefficient matrix is nonsingular modulo `p`), so that

@@ -1,4 +1,4 @@
-//! Transforms for a nonsingular A over Q[x] with several non-trivial
+//! Transforms for a nonsingular A over Q\[x\] with several non-trivial
 //! invariant factors (e.g. B·diag(1, …, 1, x − 1, (x − 1)(x + 2))·C),
 //! where the single-factor Hermite shortcut of [`super::nonsingular`]
 //! declines.

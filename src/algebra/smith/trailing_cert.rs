@@ -1,6 +1,6 @@
 //! The exact certificate of the trailing (Hermite-basis) route's
 //! transforms ([`super::trailing::trailing_hermite`]): U, D, V and V⁻¹
-//! over Q[x], without `U⁻¹`. It recomputes everything it states from
+//! over Q\[x\], without `U⁻¹`. It recomputes everything it states from
 //! A and the four matrices and trusts nothing from the route:
 //!
 //! 1. `V·V⁻¹ = I` exactly with V⁻¹ polynomial: det V is a nonzero
@@ -10,7 +10,7 @@
 //!    V's large columns.
 //! 3. D diagonal with monic nonzero entries, each dividing the next.
 //! 4. `deg(det A mod p) = Σ deg D_ii` for a word prime p dividing no
-//!    denominator of A ([`super::hermite_cert::det_degree_mod`]): reduction
+//!    denominator of A (`hermite_cert::det_degree_mod`): reduction
 //!    mod p cannot raise a degree, so `deg det A ≥ Σ deg D_ii`. From 1 and
 //!    2, `det U·det A·det V = det D ≠ 0` with det U a polynomial and det V
 //!    a nonzero constant, so `deg det U = Σ deg D_ii − deg det A ≤ 0`:
@@ -62,7 +62,7 @@ fn diag_times(d: &Matrix<QxRing>, m: &Matrix<QxRing>) -> Matrix<QxRing> {
     out
 }
 
-/// Certifies `s` as a Smith decomposition of the square `a` over Q[x] as
+/// Certifies `s` as a Smith decomposition of the square `a` over Q\[x\] as
 /// described in the module documentation.
 pub fn certify_transforms(a: &Matrix<QxRing>, s: &SmallDecomposition) -> Certificate {
     let r = &a.ring;

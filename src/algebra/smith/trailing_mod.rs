@@ -1,6 +1,6 @@
 //! The reduced Hermite basis of `L(A) + c_loc·Q[x]ⁿ` (the output of
 //! [`super::trailing::local_hermite`]) from images modulo word primes:
-//! the same elimination over Z_p[x] for each prime, then rational
+//! the same elimination over Z_p\[x\] for each prime, then rational
 //! reconstruction of each row with one common denominator, accepted when
 //! one further prime agrees. The reduced basis (monic pivots, entries
 //! above a unit pivot zero, entries above a trailing pivot of lower
@@ -217,7 +217,7 @@ struct RowState {
 /// The reduced Hermite basis of `L(A) + c_loc·Q[x]ⁿ` and its `first`,
 /// from images modulo word primes (see the module documentation); `None`
 /// when a prime's pivot degrees differ from the first's, or no
-/// reconstruction is confirmed within [`MAX_PRIMES`] primes.
+/// reconstruction is confirmed within `MAX_PRIMES` primes.
 #[allow(clippy::type_complexity)]
 pub fn local_hermite_modular(a: &[Vec<QPoly>], c_loc: &QPoly) -> Option<(Vec<Vec<QPoly>>, usize)> {
     let n = a.len();

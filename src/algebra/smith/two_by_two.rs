@@ -1,4 +1,4 @@
-//! Transforms for a nonsingular 2×2 `A = [[a, b], [c, d]]` over Q[x]
+//! Transforms for a nonsingular 2×2 `A = [[a, b], [c, d]]` over Q\[x\]
 //! whose first row is coprime, from one Bezout identity `s·a + t·b = 1`:
 //! `V = [[s, −b], [t, a]]` (det 1) gives `A·V = [[1, 0], [e, δ]]` with
 //! `e = c·s + d·t` and `δ = det A`, and `U = [[1, 0], [−e/κ, 1/κ]]`
@@ -220,7 +220,7 @@ fn inverse_by_adjugate(x: &Matrix<QxRing>, y: &Matrix<QxRing>) -> bool {
     (0..4).all(|k| r.mul(&delta, x.get(k / 2, k % 2)) == adj[k])
 }
 
-/// Evaluates `F1·F2·…·Fk` from the right, each product over Z[x] as in
+/// Evaluates `F1·F2·…·Fk` from the right, each product over Z\[x\] as in
 /// [`super::certify::ClearedQx`]. For this route `A·V = [[1, 0], [e, δ]]`
 /// is small, where `U·A` has entries of degree deg e + deg A whose product
 /// with V would multiply two huge polynomials.
