@@ -303,3 +303,35 @@ equation f + S h = 1 + 5/6*x
         .max(grid_error(&r, 2, |x| 1.0 + x));
     check("3×3", &r, err, 1e-10);
 }
+
+#[test]
+fn end_weights_do_not_depend_on_the_outputs() {
+    // Issue 27: the two-sided Abel equation (exact f ~ (1 - t²)^(-1/4))
+    // with and without an output near its singular end: the trial space is
+    // chosen from the equations and the unknowns only.
+    let base = "operator k = int(-1..1) 1/sqrt(abs(x - t)) dt\nunknown f\nequation k f = 1\noutput I = int(-1..1) f(x) dx\n";
+    let more = format!("{base}output Fa = f(999/1000)\n");
+    let other = "operator k = id + int(0..1) x*t dt\nunknown f\nequation k f = 1/sqrt(x) + 2/3*x\n";
+    let other_more = format!("{other}output F = f(1/1000)\noutput G = int(0..1) f(x) dx\n");
+    for tol in [1e-6, 1e-8] {
+        let opts = SolveOptions {
+            tol,
+            ..SolveOptions::default()
+        };
+        for (a, b) in [(base, more.as_str()), (other, other_more.as_str())] {
+            let solve = |src: &str| {
+                let prog = lambdamat::lang::parse_program(src, "k.lmx").expect("parses");
+                solve_program(&prog, &opts).expect("solves")
+            };
+            let (ra, rb) = (solve(a), solve(b));
+            assert_eq!(
+                ra.unknowns[0].weight, rb.unknowns[0].weight,
+                "tol {tol:e}: the weight changed with the outputs"
+            );
+            assert_ne!(
+                ra.unknowns[0].weight, "1",
+                "tol {tol:e}: no end weight chosen"
+            );
+        }
+    }
+}

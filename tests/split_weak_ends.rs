@@ -140,3 +140,49 @@ fn the_full_slip_problem_without_grading_at_the_centre_agrees_with_the_graded_on
         "{text}"
     );
 }
+
+/// A file on one interval solved by the split-domain solver
+/// (`src/plan/split_weights.rs`): the flat punch `∫_x^1 t p(t)/√(t² − x²)
+/// dt = 1`, exact `p = (2/π)/√(1 − x²)`, `P = 1`, needs the weight
+/// `(1 − x)^(−1/2)`, which nothing declares. It is chosen, the same with
+/// an output next to the singular end, and the estimates bound the errors.
+#[test]
+fn the_split_solver_chooses_end_weights_from_the_equations_only() {
+    use lambdamat::plan::{SplitInput, SplitOptions, solve_split_input_fields};
+    let base = "operator k1 = int(x..1) t/sqrt(t^2 - x^2) dt\nunknown p\nequation k1 p = 1\noutput P = pi/2 * int(0..1) x*p(x) dx\n";
+    let more = format!("{base}output F = p(999/1000)\n");
+    let mut weights = Vec::new();
+    for src in [base, more.as_str()] {
+        let prog = lambdamat::lang::parse_program(src, "punch.lmx").expect("parses");
+        let opts = SplitOptions {
+            tol: 1e-10,
+            max_level: 8,
+        };
+        let sol = solve_split_input_fields(SplitInput::from_program(&prog).expect("input"), &opts)
+            .expect("solves");
+        let r = lambdamat::report::from_split(&sol, 101).expect("report");
+        let p = &r.unknowns["p"];
+        assert!(p.weight.contains("|x - 1|^(-0.5)"), "weight {}", p.weight);
+        weights.push(p.weight.clone());
+        let (v, e) = (r.outputs["P"], r.error_estimates["P"]);
+        assert!((v - 1.0).abs() <= e && e < 1e-9, "P = {v} ± {e:e}");
+        let mut compared = 0;
+        for (x, v) in p.x.iter().zip(&p.values) {
+            let exact = 2.0 / std::f64::consts::PI / (1.0 - x * x).sqrt();
+            if exact.is_finite() {
+                assert!(
+                    (v - exact).abs() <= p.error_estimate.max(1e-12),
+                    "p({x}) = {v}, exact {exact}, estimate {:e}",
+                    p.error_estimate
+                );
+                compared += 1;
+            }
+        }
+        assert!(compared >= 90, "{compared} points compared");
+        assert!(r.converged);
+    }
+    assert_eq!(
+        weights[0], weights[1],
+        "the weight changed with the outputs"
+    );
+}

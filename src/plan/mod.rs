@@ -19,6 +19,8 @@
 //! * [`split_solve`]: its scalar root solve and refinement ladder;
 //! * [`split_ends`]: the ladder's end check (grading undeclared singular
 //!   ends when they matter);
+//! * [`split_weights`]: its automatic end weights (per unknown, from the
+//!   equations and unknowns only);
 //! * [`split_fields`]: the unknowns and equation residuals of a solved
 //!   split-domain problem at any point.
 
@@ -35,6 +37,7 @@ pub mod split_ends;
 pub mod split_fields;
 pub mod split_input;
 pub mod split_solve;
+pub mod split_weights;
 
 pub use compiled::CompiledSystem;
 pub use error::PlanError;

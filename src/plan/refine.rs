@@ -12,8 +12,10 @@
 //! polynomials cannot approximate. The solver tries two trial spaces, plain
 //! piecewise polynomials and, for those unknowns, polynomials times
 //! `(b-t)^(-1/2)`, on levels 1 and 2, and keeps the one whose two levels
-//! agree better (a heuristic: the file needs no annotation, and the choice
-//! is reported).
+//! agree better on the unknowns (a heuristic: the file needs no
+//! annotation, and the choice is reported). The choice is made per
+//! unknown, from the equations and the unknowns only: the requested
+//! outputs never enter it ([`choose_weights`]).
 use serde::Serialize;
 
 use crate::numeric::solve::DEFAULT_MAX_COND;
@@ -376,15 +378,20 @@ fn outputs(
     Ok(out)
 }
 
-/// Relative distance between two levels (unknowns on the grid, outputs).
-fn distance(a: &Solved, b: &Solved) -> f64 {
-    let mut d: f64 = 0.0;
-    for (pa, pb) in a.phi.iter().zip(&b.phi) {
-        if let (Some(pa), Some(pb)) = (pa, pb) {
+/// Per unknown, the distance of two levels on the grid relative to the
+/// unknown's scale (its largest `|u/weight|`, at least 1); `None` where a
+/// level does not compute it.
+fn unknown_distances(a: &Solved, b: &Solved) -> Vec<Option<f64>> {
+    a.phi
+        .iter()
+        .zip(&b.phi)
+        .map(|(pa, pb)| {
+            let (pa, pb) = (pa.as_ref()?, pb.as_ref()?);
             let scale = pb
                 .iter()
                 .filter(|v| v.is_finite())
                 .fold(1.0f64, |m, v| m.max(v.abs()));
+            let mut d: f64 = 0.0;
             for (x, y) in pa.iter().zip(pb) {
                 if x.is_finite() && y.is_finite() {
                     d = d.max((x - y).abs() / scale);
@@ -392,14 +399,109 @@ fn distance(a: &Solved, b: &Solved) -> f64 {
                     d = f64::INFINITY;
                 }
             }
-        }
-    }
+            Some(d)
+        })
+        .collect()
+}
+
+/// Relative distance between two levels (unknowns on the grid, outputs).
+fn distance(a: &Solved, b: &Solved) -> f64 {
+    let mut d = unknown_distances(a, b)
+        .into_iter()
+        .flatten()
+        .fold(0.0f64, f64::max);
     for (x, y) in a.outputs.iter().zip(&b.outputs) {
         if let (Some(x), Some(y)) = (x, y) {
             d = d.max((x - y).abs() / y.abs().max(1.0));
         }
     }
     d
+}
+
+/// A trial space tried on levels 1 and 2: its weights, the distance of
+/// the two levels per unknown and the score it is ranked by (the largest
+/// of those distances and the least-squares residual).
+struct Trial {
+    weights: Vec<Vec<Factor>>,
+    per_unknown: Vec<Option<f64>>,
+    score: f64,
+    levels: (Solved, Solved),
+}
+
+fn trial(
+    sys: &CompiledSystem,
+    s: &Setup,
+    weights: &[Vec<Factor>],
+    opts: &SolveOptions,
+) -> Result<Trial, PlanError> {
+    let a = solve_one(sys, s, weights, 1, opts)?;
+    let b = solve_one(sys, s, weights, 2, opts)?;
+    let per_unknown = unknown_distances(&a, &b);
+    let score = per_unknown
+        .iter()
+        .flatten()
+        .fold(b.sol.residual, |m, &d| m.max(d));
+    Ok(Trial {
+        weights: weights.to_vec(),
+        per_unknown,
+        score,
+        levels: (a, b),
+    })
+}
+
+/// The end weights, chosen from the equations and the unknowns only
+/// (never from the requested outputs, so that asking for one more output
+/// cannot change the trial space): every candidate of [`Setup`] (one
+/// weight for every unknown) on levels 1 and 2, then the combination that
+/// gives each unknown the candidate weight whose two levels agree best on
+/// that unknown; the trial whose largest per-unknown distance (or
+/// least-squares residual) is smallest is kept, the earliest on a tie.
+fn choose_weights(
+    sys: &CompiledSystem,
+    s: &Setup,
+    opts: &SolveOptions,
+) -> Result<Trial, PlanError> {
+    let mut best: Option<Trial> = None;
+    let mut first_err = None;
+    // Per unknown: the smallest distance met and the weight giving it.
+    let mut per: Vec<Option<(f64, Vec<Factor>)>> = vec![None; sys.unknowns.len()];
+    let mut tried: Vec<Vec<Vec<Factor>>> = Vec::new();
+    for w in &s.candidates {
+        tried.push(w.clone());
+        match trial(sys, s, w, opts) {
+            Ok(t) => {
+                for (j, d) in t.per_unknown.iter().enumerate() {
+                    if let Some(d) = *d
+                        && per[j].as_ref().is_none_or(|p| d < p.0)
+                    {
+                        per[j] = Some((d, w[j].clone()));
+                    }
+                }
+                if best.as_ref().is_none_or(|b| t.score < b.score) {
+                    best = Some(t);
+                }
+            }
+            Err(e) => {
+                first_err.get_or_insert(e);
+            }
+        }
+    }
+    let Some(mut best) = best else {
+        return Err(first_err.unwrap_or(PlanError::Invalid("nothing to solve".into())));
+    };
+    // Unknowns no trial computed keep the best trial's weight.
+    let combo: Vec<Vec<Factor>> = per
+        .into_iter()
+        .enumerate()
+        .map(|(j, p)| p.map_or_else(|| best.weights[j].clone(), |p| p.1))
+        .collect();
+    if !tried.contains(&combo)
+        && let Ok(t) = trial(sys, s, &combo, opts)
+        && t.score < best.score
+    {
+        best = t;
+    }
+    Ok(best)
 }
 
 /// Solves `prog` by `opts.method`, refining until two levels agree: the
@@ -440,28 +542,10 @@ pub fn solve_derived(
     }
     let s = setup(sys, derivation)?;
     let max_level = opts.max_level.max(2);
-    // Levels 1 and 2 for every candidate weight; keep the best.
-    let mut best: Option<(f64, usize, Solved, Solved)> = None;
-    let mut first_err = None;
-    for (ci, w) in s.candidates.iter().enumerate() {
-        let pair = solve_one(sys, &s, w, 1, opts)
-            .and_then(|a| solve_one(sys, &s, w, 2, opts).map(|b| (a, b)));
-        match pair {
-            Ok((a, b)) => {
-                let d = distance(&a, &b).max(b.sol.residual);
-                if best.as_ref().is_none_or(|x| d < x.0) {
-                    best = Some((d, ci, a, b));
-                }
-            }
-            Err(e) => {
-                first_err.get_or_insert(e);
-            }
-        }
-    }
-    let Some((mut est, ci, _, mut last)) = best else {
-        return Err(first_err.unwrap_or(PlanError::Invalid("nothing to solve".into())));
-    };
-    let weights = &s.candidates[ci];
+    let chosen = choose_weights(sys, &s, opts)?;
+    let weights = &chosen.weights;
+    let (first, mut last) = chosen.levels;
+    let mut est = distance(&first, &last).max(last.sol.residual);
     let mut level = 2;
     let mut prev: Option<f64> = None;
     let mut bound = est;

@@ -1,4 +1,5 @@
-//! Solving a split-domain problem: the unknown scalar (e.g. the stick
+//! Solving a split-domain problem: the ends no declaration names first get
+//! their automatic weights (`split_weights.rs`); the unknown scalar (e.g. the stick
 //! radius `c`) is found from its condition by a safeguarded root solve in
 //! the variable `s = ln((x - lo)/(hi - x))` of its declared range (so a
 //! root near an end is resolved to a relative accuracy in its distance to
@@ -175,6 +176,7 @@ pub fn solve_split_input_fields(
             "{ns} unknown scalars: the split-domain solver handles at most one so far"
         )));
     }
+    super::split_weights::choose(&mut problem)?;
     let mut levels: Vec<Level> = Vec::new();
     let mut previous: Option<Discrete> = None;
     for k in 0..=opts.max_level {
