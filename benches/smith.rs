@@ -204,13 +204,25 @@ fn trailing(c: &mut Criterion) {
 
 /// Issue 29's stall families over Q[x] (`benches/stall_families.py`
 /// writes them; `benches/data/issue29_*.lmx`), those answered within a few
-/// seconds: the non-square diagonals (monomial route) and the rank-deficient
-/// and rectangular inputs of the general elimination. Criterion's "time" is
+/// seconds: the non-square diagonals (monomial route), the rank-deficient
+/// and rectangular inputs (unit-factor rank certificate), the sparse ones
+/// (Hermite certificate with the local pivots moved last) and the 2×2 with
+/// one huge coefficient (D alone from the adjugate). Criterion's "time" is
 /// process CPU time per call. `cargo bench --bench smith -- smith_stall`.
 fn stall(c: &mut Criterion) {
     let mut g = c.benchmark_group("smith_stall");
     g.sample_size(10);
-    for case in ["diag_39x40", "diag_40x41", "rankdef_12_d2", "rect_13x10_d2"] {
+    for case in [
+        "diag_39x40",
+        "diag_40x41",
+        "rankdef_12_d2",
+        "rankdef_16_d1",
+        "rect_13x10_d2",
+        "rect_16x19_d2",
+        "sparse_sing_17",
+        "sparse_24_e24",
+        "bigc_2_d50",
+    ] {
         let a = first_matrix(&format!("benches/data/issue29_{case}.lmx"));
         g.bench_function(case, |b| b.iter_custom(|iters| cpu_time_of(iters, &a)));
     }

@@ -7,7 +7,9 @@ whole process), PARI/GP's `matsnf(M, 3)` (its own `getabstime()`) and
 Singular's jacobson.lib `smith(M, 1)` (its own `timer`), interleaved: the
 three runs of one matrix follow each other. Peers get a CPU limit and are
 reported as "> T". The invariant factors' degrees are compared where a
-peer finished.
+peer finished. PARI's `matsnf` takes square matrices only, so a non-square
+input goes to PARI bordered with zero rows or columns (same nonzero
+invariant factors).
 
 Usage: stall_families.py BIN OUTDIR [--only NAME,...] [--timeout 30]
        [--ours-timeout 60] [--no-pari] [--no-singular] [--emit-only]
@@ -145,7 +147,16 @@ def lmx(m):
     return f"var x\nmatrix A = [\n  {rows}\n]\nsmith A\n"
 
 
+def padded_square(m):
+    """m bordered with zero rows or columns to a square: the same nonzero
+    invariant factors (PARI's `matsnf` takes square matrices only)."""
+    rows, cols = len(m), len(m[0])
+    k = max(rows, cols)
+    return [[m[i][j] if i < rows and j < cols else [0] for j in range(k)] for i in range(k)]
+
+
 def run_pari(m, timeout):
+    m = padded_square(m)
     rows = ";".join(",".join(poly_str(e) for e in row) for row in m)
     prog = (
         f"M=[{rows}];t=getabstime();r=matsnf(M,3);t=getabstime()-t;D=r[3];"

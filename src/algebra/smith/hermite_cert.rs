@@ -275,7 +275,7 @@ pub fn certify_factors(
     }
     // 4. H from the local Hermite basis modulo the repeated part of c.
     let block = local_block(a, c, &g);
-    let Some((first, h, t)) = block else {
+    let Some((first, h, t, perm)) = block else {
         push(
             &mut cert,
             "Hermite basis modulo the repeated part of c",
@@ -306,14 +306,28 @@ pub fn certify_factors(
     if !t_ok {
         return (cert, Vec::new());
     }
-    // 5. L(A) ⊆ L(H).
-    let contained = contained_in(a, first, &h, &st);
+    // 5. L(A·P) ⊆ L(H), P the column permutation of step 4 (A·P has A's
+    // invariant factors).
+    let moved = perm.iter().enumerate().any(|(s, &j)| s != j);
+    let ap = if moved {
+        permute_columns(a, &perm)
+    } else {
+        a.clone()
+    };
+    let contained = contained_in(&ap, first, &h, &st);
     push(
         &mut cert,
         "L(A) ⊆ L(H)",
         contained,
         if contained {
-            "every column s of (A_2 − A_1·h)·V_T is divisible by (D_T)_ss, so A·H⁻¹ is polynomial; hence each invariant factor t_i of H divides f_i".to_string()
+            format!(
+                "every column s of (A_2 − A_1·h)·V_T is divisible by (D_T)_ss, so A·H⁻¹ is polynomial{}; hence each invariant factor t_i of H divides f_i",
+                if moved {
+                    " (A with its columns permuted so that the unit pivots of the local Hermite basis come first: same invariant factors)"
+                } else {
+                    ""
+                }
+            )
         } else {
             "A·H⁻¹ is not polynomial".to_string()
         },
@@ -359,19 +373,39 @@ pub fn certify_factors(
 /// with `h = U_1⁻¹·h′` by back substitution modulo c_loc (only the k
 /// trailing columns: the leading block is never reduced). How h is
 /// obtained does not matter to the certificate, which checks this H.
+#[allow(clippy::type_complexity)]
 fn local_block(
     a: &Matrix<QxRing>,
     c: &QPoly,
     g: &QPoly,
-) -> Option<(usize, Matrix<QxRing>, Matrix<QxRing>)> {
+) -> Option<(usize, Matrix<QxRing>, Matrix<QxRing>, Vec<usize>)> {
     let r = &a.ring;
     let n = a.rows();
     let (c_loc, _) = super::trailing::repeated_part(r, &r.normalize(c), &r.normalize(g))?;
     if c_loc.degree()? > super::trailing::MAX_LOCAL_DEGREE {
         return None;
     }
-    let rows: Vec<Vec<QPoly>> = (0..n).map(|i| a.row(i).to_vec()).collect();
-    let hl = super::trailing::hnf_mod(r, &rows, &c_loc)?;
+    let mut rows: Vec<Vec<QPoly>> = (0..n).map(|i| a.row(i).to_vec()).collect();
+    let mut hl = super::trailing::hnf_mod(r, &rows, &c_loc)?;
+    let unit = |hl: &[Vec<QPoly>], i: usize| hl[i][i].degree() == Some(0);
+    let mut perm: Vec<usize> = (0..n).collect();
+    let first0 = (0..n).find(|&i| !unit(&hl, i))?;
+    if (first0..n).any(|i| unit(&hl, i)) {
+        // A non-unit pivot before unit ones (sparse inputs): the unit-pivot
+        // columns S have full rank modulo every prime of c_loc (H[S, S] is
+        // unit triangular and H = W·A with W invertible there), so with S
+        // first the non-unit pivots come last and T is as small as it can
+        // be for this lattice.
+        perm = (0..n)
+            .filter(|&i| unit(&hl, i))
+            .chain((0..n).filter(|&i| !unit(&hl, i)))
+            .collect();
+        rows = rows
+            .iter()
+            .map(|row| perm.iter().map(|&j| row[j].clone()).collect())
+            .collect();
+        hl = super::trailing::hnf_mod(r, &rows, &c_loc)?;
+    }
     let first = (0..n).find(|&i| hl[i][i].degree() != Some(0))?;
     let k = n - first;
     if !(1..=MAX_BLOCK).contains(&k) || (0..first).any(|i| !r.is_one(&hl[i][i])) {
@@ -409,7 +443,15 @@ fn local_block(
             t.set(q, s, hl[first + q][first + s].clone());
         }
     }
-    Some((first, hm, t))
+    Some((first, hm, t, perm))
+}
+
+/// A with its columns in the order `perm` (column s is A's column perm[s]).
+fn permute_columns(a: &Matrix<QxRing>, perm: &[usize]) -> Matrix<QxRing> {
+    let data = (0..a.rows())
+        .flat_map(|i| perm.iter().map(move |&j| a.get(i, j).clone()))
+        .collect();
+    Matrix::new(a.ring.clone(), a.rows(), perm.len(), data)
 }
 
 /// Step 5: every column s of `(A_2 − A_1·h)·V_T` divisible by `(D_T)_ss`.

@@ -36,7 +36,7 @@ pub const MIN_SIZE: usize = 48;
 pub const ALGORITHM: &str = "det by images mod word primes at N + 1 points (CRT above Hadamard's bound, re-checked mod a further prime); d_(n−1) = 1 from two (n−1)-minors coprime modulo a prime that keeps the first one's degree (no adjugate)";
 
 /// Integer rows `Ã = Δ·A` as coefficient vectors.
-fn integer_rows(a: &Matrix<QxRing>) -> Vec<Vec<Vec<BigInt>>> {
+pub(super) fn integer_rows(a: &Matrix<QxRing>) -> Vec<Vec<Vec<BigInt>>> {
     (0..a.rows())
         .map(|i| {
             let l = a.row(i).iter().fold(BigInt::one(), |l, p| {
@@ -51,7 +51,7 @@ fn integer_rows(a: &Matrix<QxRing>) -> Vec<Vec<Vec<BigInt>>> {
 }
 
 /// Least of the sums of row and of column degrees of the submatrix.
-fn bound(m: &[Vec<Vec<BigInt>>], rows: &[usize], cols: &[usize]) -> usize {
+pub(super) fn bound(m: &[Vec<Vec<BigInt>>], rows: &[usize], cols: &[usize]) -> usize {
     let deg = |p: &Vec<BigInt>| p.len().saturating_sub(1);
     let r: usize = rows
         .iter()
@@ -98,7 +98,13 @@ pub(super) fn det_mod(f: Fp, m: &mut [u64], n: usize) -> u64 {
 
 /// The polynomial mod p of degree ≤ `deg` equal to det of the submatrix
 /// at `x = 0, …, deg` (Newton interpolation).
-fn minor_mod(f: Fp, img: &[Vec<Vec<u64>>], rows: &[usize], cols: &[usize], deg: usize) -> Vec<u64> {
+pub(super) fn minor_mod(
+    f: Fp,
+    img: &[Vec<Vec<u64>>],
+    rows: &[usize],
+    cols: &[usize],
+    deg: usize,
+) -> Vec<u64> {
     let k = rows.len();
     let mut m = vec![0u64; k * k];
     let mut vals = Vec::with_capacity(deg + 1);
@@ -132,7 +138,7 @@ fn minor_mod(f: Fp, img: &[Vec<Vec<u64>>], rows: &[usize], cols: &[usize], deg: 
     modular::trim(p)
 }
 
-fn reduce_all(f: Fp, m: &[Vec<Vec<BigInt>>]) -> Vec<Vec<Vec<u64>>> {
+pub(super) fn reduce_all(f: Fp, m: &[Vec<Vec<BigInt>>]) -> Vec<Vec<Vec<u64>>> {
     m.iter()
         .map(|row| {
             row.iter()

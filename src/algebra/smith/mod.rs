@@ -24,6 +24,7 @@ pub mod modes;
 pub mod monomial;
 pub mod nonsingular;
 pub mod principal_form;
+pub mod rank_cert;
 pub mod several;
 pub mod small;
 pub mod trailing;
