@@ -168,6 +168,7 @@ pub fn system() -> Result<CompiledSystem, PlanError> {
         derived_pivots: Some(vec![(1, 1)]),
         domain: (0.0, 1.0),
         interior: Vec::new(),
+        features: Vec::new(),
     };
     sys.check()?;
     Ok(sys)

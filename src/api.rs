@@ -474,14 +474,10 @@ impl Problem {
             tol: opts.tol,
             max_level: opts.max_level.unwrap_or(DEFAULT_MAX_LEVEL),
             method: opts.method,
+            max_memory: opts.max_memory,
             ..crate::report::SolveSettings::default()
         };
         settings.check()?;
-        if let Some(bytes) = opts.max_memory {
-            return Err(invalid(format!(
-                "max_memory = {bytes}: no memory limit is implemented for solves; leave it unset"
-            )));
-        }
         let problem;
         let me = if opts.set.is_empty() {
             self
@@ -587,8 +583,11 @@ pub struct SolveOptions {
     /// The highest refinement level (default [`DEFAULT_MAX_LEVEL`], at
     /// most 14).
     pub max_level: Option<usize>,
-    /// A memory limit in bytes. No limit is implemented yet: setting it is
-    /// refused as invalid input rather than ignored.
+    /// The memory budget in bytes (default: the rule of
+    /// [`crate::numeric::budget`], half the free memory). A refinement
+    /// level that would not fit is not built: the solve stops at the last
+    /// level that did (not converged, with a warning) or fails with the
+    /// size it would have needed.
     pub max_memory: Option<u64>,
     /// The unknown the eliminations solve for (default: the file's `solve
     /// for`, else the first unknown).

@@ -227,10 +227,6 @@ fn unconverged_is_ok_and_failures_are_errors() {
             ..SolveOptions::default()
         },
         SolveOptions {
-            max_memory: Some(1 << 30),
-            ..SolveOptions::default()
-        },
-        SolveOptions {
             set: vec![("k".into(), "1".into())],
             ..SolveOptions::default()
         },
@@ -238,6 +234,15 @@ fn unconverged_is_ok_and_failures_are_errors() {
         let e = p.solve(&bad).expect_err("refused");
         assert_eq!(e.kind(), ErrorKind::InvalidInput, "{e}");
     }
+    // A memory budget no level fits: the size it would need (exit 3).
+    let e = p
+        .solve(&SolveOptions {
+            max_memory: Some(1024),
+            ..SolveOptions::default()
+        })
+        .expect_err("over the budget");
+    assert_eq!(e.exit_code(), 3, "{e}");
+    assert!(e.to_string().contains("would need about"), "{e}");
 }
 
 #[test]

@@ -190,3 +190,39 @@ fn extreme_hertz_split_points_are_refused_in_the_users_terms() {
     let (code, _, err) = run(&args);
     assert_eq!(code, 0, "--c 0.5: {err}");
 }
+
+/// `--max-memory` bounds `solve`, `run` and `hertz`: a level over the
+/// budget is never built. With room for two levels `solve` stops there,
+/// marked (exit 4, the budget named in the JSON warnings); with room for
+/// none, `solve`, `run` and `hertz` refuse with the size needed (exit 3).
+/// A size that is not one is a usage error.
+#[test]
+fn max_memory_stops_the_ladder_or_names_the_size_needed() {
+    let file = "tests/data/traps/budget_stop.lmx".to_string();
+    let args = |v: &[&str]| v.iter().map(|s| s.to_string()).collect::<Vec<_>>();
+    let (code, out, err) = run(&[
+        args(&["solve", "--json", "--tol", "1e-15", "--max-memory", "100K"]),
+        vec![file.clone()],
+    ]
+    .concat());
+    assert_eq!(code, 4, "{err}");
+    let j: Value = serde_json::from_str(&out).expect("JSON");
+    let warnings = j["warnings"].to_string();
+    assert!(
+        warnings.contains("the last within the memory budget"),
+        "{warnings}"
+    );
+    assert_eq!(j["levels"].as_u64(), Some(2), "{out}");
+    for cmd in [
+        args(&["solve", "--max-memory", "1K", &file]),
+        args(&["run", "--max-memory", "1K", &file]),
+        args(&["hertz", "--nu", "0.25", "--mu", "0.3", "--max-memory", "1K"]),
+    ] {
+        let (code, _, err) = run(&cmd);
+        assert_eq!(code, 3, "{cmd:?}: {err}");
+        assert!(err.contains("would need about"), "{cmd:?}: {err}");
+        assert!(err.contains("--max-memory"), "{cmd:?}: {err}");
+    }
+    let (code, _, err) = run(&args(&["solve", "--max-memory", "lots", &file]));
+    assert_eq!(code, 1, "{err}");
+}

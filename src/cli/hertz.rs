@@ -41,6 +41,9 @@ pub struct HertzArgs {
     /// Target accuracy (finite, > 0): refine until successive levels agree to this.
     #[arg(long, default_value = "1e-10", allow_hyphen_values = true)]
     tol: f64,
+    /// Memory budget, e.g. 2G or 500M (default: half the free memory, and of `ulimit -v`).
+    #[arg(long, value_name = "SIZE", value_parser = crate::numeric::budget::parse_size)]
+    max_memory: Option<u64>,
     /// Print one JSON object instead of text.
     #[arg(long)]
     json: bool,
@@ -177,7 +180,7 @@ pub fn hertz_command(a: &HertzArgs, w: &mut dyn Write) -> Result<(), CliError> {
     for path in [&a.csv, &a.plot].into_iter().flatten() {
         check_writable(path, &[])?;
     }
-    let s = match solve_with_limit(nu, given, &opts) {
+    let s = match crate::hertz::front::solve_within(nu, given, &opts, a.max_memory) {
         Ok(s) => s,
         Err(Refusal { error, limit }) => {
             // With --json a refusal at a physical limit is still one JSON

@@ -170,6 +170,9 @@ pub struct SolveFlags {
     /// Highest refinement level tried (levels are numbered from 0; at most 14).
     #[arg(long, default_value_t = 8, allow_hyphen_values = true)]
     pub max_level: usize,
+    /// Memory budget, e.g. 2G or 500M (default: half the free memory, and of `ulimit -v`). A level that would not fit is not built: the result of the last level that did is printed and marked (exit 4), or, if none fits, the size needed is reported (exit 3).
+    #[arg(long, value_name = "SIZE", value_parser = crate::numeric::budget::parse_size)]
+    pub max_memory: Option<u64>,
     /// Print one JSON object instead of text.
     #[arg(long)]
     pub json: bool,
@@ -209,6 +212,9 @@ pub struct OutputArgs {
 struct RunArgs {
     /// A lambdamat source file (.lmx).
     file: PathBuf,
+    /// Memory budget of each solve, e.g. 2G or 500M (default: half the free memory, and of `ulimit -v`).
+    #[arg(long, value_name = "SIZE", value_parser = crate::numeric::budget::parse_size)]
+    max_memory: Option<u64>,
     #[command(flatten)]
     out: OutputArgs,
 }
@@ -298,7 +304,7 @@ pub fn main() -> i32 {
     }
     let mut stdout = output::Stdout::new();
     let result = match cli.command {
-        Command::Run(a) => run::run(&a.file, &a.out, &mut stdout),
+        Command::Run(a) => run::run(&a.file, &a.out, a.max_memory, &mut stdout),
         Command::Smith(a) => smith::smith_command(&a, &mut stdout),
         Command::Reduce(a) => reduce::reduce_command(&a, &mut stdout),
         Command::Solve(a) => solve::solve_command(&a, &mut stdout),

@@ -21,7 +21,12 @@ use std::io::Write;
 use std::path::PathBuf;
 
 /// `lambdamat run FILE`.
-pub fn run(file: &PathBuf, out: &OutputArgs, w: &mut dyn Write) -> Result<(), CliError> {
+pub fn run(
+    file: &PathBuf,
+    out: &OutputArgs,
+    max_memory: Option<u64>,
+    w: &mut dyn Write,
+) -> Result<(), CliError> {
     let (p, src) = load_with_source(file)?;
     let principal = principal(&p, None)?;
     let mut results = Vec::new();
@@ -99,6 +104,7 @@ pub fn run(file: &PathBuf, out: &OutputArgs, w: &mut dyn Write) -> Result<(), Cl
                 }
                 let settings = SolveSettings {
                     unknown: Some(p.unknowns[*unknown].clone()),
+                    max_memory,
                     ..SolveSettings::default()
                 };
                 let r = crate::report::solve(&p, &settings).map_err(|e| solve::located(e, &src))?;

@@ -41,6 +41,7 @@ pub fn settings(flags: &SolveFlags) -> Result<SolveSettings, CliError> {
         tol: flags.tol,
         max_level: flags.max_level,
         method,
+        max_memory: flags.max_memory,
         ..SolveSettings::default()
     };
     s.check()?;

@@ -621,6 +621,12 @@ fn system_fn(
     );
     let interior: Vec<String> = sys.interior.iter().map(|&z| literal(z)).collect();
     list_field(out, "interior", &interior);
+    let features: Vec<String> = sys
+        .features
+        .iter()
+        .map(|&(at, w)| format!("({}, {})", literal(at), literal(w)))
+        .collect();
+    list_field(out, "features", &features);
     let _ = writeln!(out, "    }};");
     let _ = writeln!(out, "    sys.check()?;");
     let _ = writeln!(out, "    Ok(sys)");

@@ -822,10 +822,21 @@ pub fn solve_with_limit(
     given: Given,
     opts: &SplitOptions,
 ) -> Result<HertzResult, Refusal> {
+    solve_within(nu, given, opts, None)
+}
+
+/// [`solve_with_limit`] within a memory budget of `max_memory` bytes
+/// (`None`: the default of [`crate::numeric::budget`]).
+pub fn solve_within(
+    nu: f64,
+    given: Given,
+    opts: &SplitOptions,
+    max_memory: Option<u64>,
+) -> Result<HertzResult, Refusal> {
     if let Some(refusal) = extreme_given_c(nu, given) {
         return Err(refusal);
     }
-    solve_inner(nu, given, opts).map_err(|failure| {
+    solve_inner(nu, given, opts, max_memory).map_err(|failure| {
         let limit = Limit::classify(nu, given, &failure);
         let error = match failure {
             Failure::Plan(e) | Failure::Spurious(e) | Failure::ThinSlip(e) => e,
@@ -907,7 +918,12 @@ impl From<PlanError> for Failure {
     }
 }
 
-fn solve_inner(nu: f64, given: Given, opts: &SplitOptions) -> Result<HertzResult, Failure> {
+fn solve_inner(
+    nu: f64,
+    given: Given,
+    opts: &SplitOptions,
+    budget: Option<u64>,
+) -> Result<HertzResult, Failure> {
     if !(opts.tol > 0.0 && opts.tol.is_finite()) {
         return Err(invalid(format!(
             "--tol {}: the tolerance must be a finite number > 0, e.g. 1e-10",
@@ -932,6 +948,7 @@ fn solve_inner(nu: f64, given: Given, opts: &SplitOptions) -> Result<HertzResult
         tol: opts.tol,
         max_level: opts.max_level,
         grid: 2,
+        max_memory: budget,
         ..SolveSettings::default()
     };
     let (report, solution) = solve_split_solution(SplitInput::from_program(&prog)?, &settings)?;

@@ -17,12 +17,14 @@
 //!   systems;
 //! * [`elimination`]: the coupled block solve, operator products through
 //!   an intermediate basis and commutator defects;
+//! * [`budget`]: the memory budget of the solver ladders;
 //! * [`error`]: the layer's error enum.
 //!
 //! Problem-specific code (the Hertz problem, solvers for systems from the
 //! language) builds on this layer and must not copy its quadrature.
 pub mod assemble;
 pub mod basis;
+pub mod budget;
 pub mod elimination;
 pub mod error;
 pub mod gamma;

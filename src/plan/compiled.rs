@@ -131,6 +131,10 @@ pub struct CompiledSystem {
     pub domain: (f64, f64),
     /// Constant limits strictly inside the interval (meshes are graded there).
     pub interior: Vec<f64>,
+    /// Narrow features of the kernels (in `t`) and right sides (in `x`),
+    /// as `(point, width)` ([`super::features`]): meshes are graded there
+    /// down to the width.
+    pub features: Vec<(f64, f64)>,
 }
 
 impl CompiledSystem {
@@ -178,6 +182,21 @@ impl CompiledSystem {
             let name = &prog.symbols[d.symbol];
             operators[d.symbol] = Some(build_operator(d, name, domain)?);
         }
+        let mut features = Vec::new();
+        {
+            use super::features::{Var, features as of};
+            for d in prog.operators.iter().filter(|d| used(d.symbol)) {
+                for t in &d.terms {
+                    if let crate::system::Term::Integral { kernel, .. } = t {
+                        features.extend(of(kernel, Var::T, domain));
+                    }
+                }
+            }
+            for eq in &prog.equations {
+                features.extend(of(&eq.rhs, Var::X, domain));
+            }
+        }
+        let features: Vec<(f64, f64)> = features.iter().map(|f| (f.at, f.width)).collect();
         let equations = prog
             .equations
             .iter()
@@ -217,6 +236,7 @@ impl CompiledSystem {
             derived_pivots: None,
             domain,
             interior,
+            features,
         };
         sys.check()?;
         Ok(sys)

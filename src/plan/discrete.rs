@@ -76,39 +76,21 @@ pub struct Discretisation {
 }
 
 impl Discretisation {
-    /// A level on `domain` graded toward its ends and `interior` points;
+    /// A level on `domain` graded toward its ends and the `interior`
+    /// points marked `true` (the others are plain breakpoints);
     /// `ops[s]` is the operator of symbol `s` (with its name) or `None`,
     /// `weights[j]` the weight factors of unknown `j`.
     pub fn new(
         domain: (f64, f64),
-        interior: &[f64],
+        interior: &[(f64, bool)],
         spec: LevelSpec,
         ops: Vec<Option<(String, Operator)>>,
         weights: &[Vec<Factor>],
     ) -> Result<Discretisation, PlanError> {
         let (lo, hi) = domain;
-        let mut gradings = vec![
-            Grading {
-                at: lo,
-                side: Side::Right,
-                layers: spec.layers_lo,
-            },
-            Grading {
-                at: hi,
-                side: Side::Left,
-                layers: spec.layers,
-            },
-        ];
-        for &z in interior.iter().filter(|&&z| z > lo && z < hi) {
-            gradings.push(Grading {
-                at: z,
-                side: Side::Both,
-                layers: spec.layers,
-            });
-        }
         let ctx = PlanError::numeric("building the mesh");
         let mesh = split_long(
-            Mesh::graded(lo, hi, &gradings, spec.sigma).map_err(ctx)?,
+            Mesh::graded(lo, hi, &gradings(domain, interior, spec), spec.sigma).map_err(ctx)?,
             spec.max_panel * (hi - lo),
         );
         let basis = |w: Vec<Factor>| {
@@ -207,6 +189,56 @@ impl Discretisation {
         }
         Ok(v)
     }
+}
+
+/// The graded points of a level: both ends and the interior points.
+fn gradings(domain: (f64, f64), interior: &[(f64, bool)], spec: LevelSpec) -> Vec<Grading> {
+    let (lo, hi) = domain;
+    let mut gradings = vec![
+        Grading {
+            at: lo,
+            side: Side::Right,
+            layers: spec.layers_lo,
+        },
+        Grading {
+            at: hi,
+            side: Side::Left,
+            layers: spec.layers,
+        },
+    ];
+    for &(z, graded) in interior.iter().filter(|&&(z, _)| z > lo && z < hi) {
+        gradings.push(Grading {
+            at: z,
+            side: Side::Both,
+            layers: if graded { spec.layers } else { 0 },
+        });
+    }
+    gradings
+}
+
+/// The coefficients per basis of the level [`Discretisation::new`] would
+/// build on `domain`, counted without building it (a float: the memory
+/// budget must measure a level too large to allocate).
+pub fn level_dim(
+    domain: (f64, f64),
+    interior: &[(f64, bool)],
+    spec: LevelSpec,
+) -> Result<f64, PlanError> {
+    let (lo, hi) = domain;
+    let mesh = Mesh::graded(lo, hi, &gradings(domain, interior, spec), spec.sigma)
+        .map_err(PlanError::numeric("building the mesh"))?;
+    let h = spec.max_panel * (hi - lo);
+    Ok(mesh
+        .levels
+        .iter()
+        .enumerate()
+        .map(|(k, &l)| {
+            let (a, b) = mesh.panel(k);
+            let nodes =
+                ((spec.n_min as f64 + l as f64).round()).clamp(1.0, spec.n_max.max(1) as f64);
+            ((b - a) / h).ceil().max(1.0) * nodes
+        })
+        .sum())
 }
 
 /// Splits panels longer than `h` into equal pieces of the same layer.

@@ -36,6 +36,10 @@ pub enum PlanError {
     /// to name the physical limit without reading the message.
     #[error("scalar root: no convergence: {}", .0.message)]
     RootAtEnd(Box<RootAtEnd>),
+    /// The next level does not fit the memory budget (and no level before
+    /// it was solved).
+    #[error("{0}")]
+    OverBudget(crate::numeric::budget::OverBudget),
     /// The numerics refused (singular, ill-conditioned, non-finite, ...).
     #[error("{context}: {source}")]
     Numeric {
@@ -155,7 +159,10 @@ impl PlanError {
     pub fn is_input_error(&self) -> bool {
         !matches!(
             self,
-            PlanError::Numeric { .. } | PlanError::Singular(_) | PlanError::RootAtEnd(_)
+            PlanError::Numeric { .. }
+                | PlanError::Singular(_)
+                | PlanError::RootAtEnd(_)
+                | PlanError::OverBudget(_)
         )
     }
 }

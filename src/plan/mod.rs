@@ -28,6 +28,7 @@ pub mod compile;
 pub mod compiled;
 pub mod discrete;
 pub mod error;
+pub mod features;
 pub mod methods;
 pub mod operators;
 pub mod refine;

@@ -18,6 +18,7 @@
 //! outputs never enter it ([`choose_weights`]).
 use serde::Serialize;
 
+use crate::numeric::budget;
 use crate::numeric::solve::DEFAULT_MAX_COND;
 use crate::numeric::{Factor, Limits, Operator, Singularity};
 use crate::system::Program;
@@ -58,6 +59,11 @@ pub fn rounding_floor(cond: f64) -> f64 {
 /// Longest panel, in peak widths, for systems with peaked kernels.
 const PEAK_PANELS: f64 = 1.0;
 
+/// Narrower features than this fraction of the interval (or of their
+/// position) are refused: the panels graded toward them would be a few
+/// hundred rounding units wide.
+const FEATURE_FLOOR: f64 = 1e-11;
+
 /// Defects above this are reported as warnings.
 pub const DEFECT_WARNING: f64 = 1e-8;
 
@@ -75,6 +81,11 @@ pub struct SolveOptions {
     pub max_cond: f64,
     /// Number of points of the output grid.
     pub grid: usize,
+    /// Memory budget in bytes (`None`: the default of
+    /// [`crate::numeric::budget`]). A level that would not fit is not
+    /// built: the ladder stops at the last level that did (marked not
+    /// converged), or refuses with the size it would have needed.
+    pub max_memory: Option<u64>,
 }
 
 impl Default for SolveOptions {
@@ -85,6 +96,7 @@ impl Default for SolveOptions {
             max_level: 7,
             max_cond: DEFAULT_MAX_COND,
             grid: 101,
+            max_memory: None,
         }
     }
 }
@@ -169,7 +181,9 @@ struct Setup {
     peak: f64,
     ops: Vec<Option<(String, Operator)>>,
     domain: (f64, f64),
-    interior: Vec<f64>,
+    /// Interior breakpoints, and whether the mesh is graded toward each
+    /// (the constant limits and narrow features are).
+    interior: Vec<(f64, bool)>,
     candidates: Vec<Vec<Vec<Factor>>>,
     target: usize,
     derivation: Option<Derivation>,
@@ -273,12 +287,41 @@ fn setup(sys: &CompiledSystem, derivation: Option<Derivation>) -> Result<Setup, 
             }
         }
     }
+    let mut interior: Vec<(f64, bool)> = sys.interior.iter().map(|&z| (z, true)).collect();
+    let (lo, len) = (sys.domain.0, sys.domain.1 - sys.domain.0);
+    for &(at, width) in &sys.features {
+        if width > 0.0 && width < FEATURE_FLOOR * len.max(at.abs()) {
+            return Err(PlanError::Numeric {
+                context: "resolving a narrow feature".into(),
+                source: crate::numeric::NumericError::InvalidMesh(format!(
+                    "the formulas have a feature of width {width:.1e} at {at} (a narrow peak or a pole beside the interval), narrower than the solver resolves ({FEATURE_FLOOR:.0e} of the interval)"
+                )),
+            });
+        }
+        // The point itself, graded; breakpoints at `at ± 2^k·width`
+        // (k = 0, 1, …) across the interval: panels no wider than the
+        // feature beside it and no wider than their distance from it
+        // beyond (a Lorentzian's tail varies on that scale), refined in
+        // degree from level to level.
+        if at > lo && at < sys.domain.1 {
+            interior.push((at, true));
+        }
+        let mut d = width;
+        while width > 0.0 && d < len {
+            for z in [at - d, at + d] {
+                if z > lo && z < sys.domain.1 {
+                    interior.push((z, false));
+                }
+            }
+            d *= 2.0;
+        }
+    }
     Ok(Setup {
         hertz,
         peak,
         ops,
         domain: sys.domain,
-        interior: sys.interior.clone(),
+        interior,
         candidates,
         target: sys.target,
         derivation,
@@ -301,13 +344,8 @@ fn grid(domain: (f64, f64), n: usize) -> Vec<f64> {
         .collect()
 }
 
-fn solve_one(
-    sys: &CompiledSystem,
-    s: &Setup,
-    weights: &[Vec<Factor>],
-    level: usize,
-    opts: &SolveOptions,
-) -> Result<Solved, PlanError> {
+/// The mesh and degrees of `level` for the system prepared in `s`.
+fn level_spec(s: &Setup, level: usize) -> LevelSpec {
     let mut spec = LevelSpec::level(level);
     if !s.hertz {
         // Other kernels are not even in x: grade toward both ends.
@@ -316,6 +354,41 @@ fn solve_one(
     // Solutions of equations with peaked kernels vary on the peak's scale.
     let len = s.domain.1 - s.domain.0;
     spec.max_panel = spec.max_panel.min(PEAK_PANELS * s.peak / len);
+    spec
+}
+
+/// Checks that `level` fits the memory budget beside the level the ladder
+/// still holds: the operator matrices (one per symbol and basis, bases of
+/// the unknowns and `mid`) and three copies of the coupled matrix (`u²`
+/// blocks: assembled, factorised, and a product's temporary), for this
+/// level and the one before.
+fn fits(sys: &CompiledSystem, s: &Setup, level: usize, budget: u64) -> Result<(), PlanError> {
+    let u = sys.unknowns.len() as f64;
+    let symbols = s.ops.iter().flatten().count() as f64;
+    let matrices = symbols * (u + 1.0) + 3.0 * u * u;
+    let dim = super::discrete::level_dim(s.domain, &s.interior, level_spec(s, level))?;
+    let held = if level > 1 {
+        super::discrete::level_dim(s.domain, &s.interior, level_spec(s, level - 1))?
+    } else {
+        0.0
+    };
+    let needed = budget::dense_bytes(dim, matrices) + budget::dense_bytes(held, matrices);
+    budget::check(
+        || format!("level {level} ({dim:.0} coefficients per unknown)"),
+        needed,
+        budget,
+    )
+    .map_err(PlanError::OverBudget)
+}
+
+fn solve_one(
+    sys: &CompiledSystem,
+    s: &Setup,
+    weights: &[Vec<Factor>],
+    level: usize,
+    opts: &SolveOptions,
+) -> Result<Solved, PlanError> {
+    let spec = level_spec(s, level);
     let mut disc = Discretisation::new(s.domain, &s.interior, spec, s.ops.clone(), weights)?;
     let sol = solve_level(
         &mut disc,
@@ -542,6 +615,8 @@ pub fn solve_derived(
     }
     let s = setup(sys, derivation)?;
     let max_level = opts.max_level.max(2);
+    let budget = opts.max_memory.unwrap_or_else(budget::default_budget);
+    fits(sys, &s, 2, budget)?;
     let chosen = choose_weights(sys, &s, opts)?;
     let weights = &chosen.weights;
     let (first, mut last) = chosen.levels;
@@ -549,7 +624,12 @@ pub fn solve_derived(
     let mut level = 2;
     let mut prev: Option<f64> = None;
     let mut bound = est;
+    let mut over = None;
     while bound > opts.tol && level < max_level {
+        if let Err(PlanError::OverBudget(e)) = fits(sys, &s, level + 1, budget) {
+            over = Some(e);
+            break;
+        }
         let next = solve_one(sys, &s, weights, level + 1, opts)?;
         let d = distance(&last, &next);
         if d > est && est < 1e-8 {
@@ -568,7 +648,15 @@ pub fn solve_derived(
     let est = honest(est, prev)
         .max(rounding_floor(last.sol.cond))
         .max(last.sol.residual);
-    report(sys, &s, weights, last, est, level, opts)
+    let mut r = report(sys, &s, weights, last, est, level, opts)?;
+    if let Some(e) = over
+        && !r.converged
+    {
+        r.warnings.push(format!(
+            "stopped at level {level}, the last within the memory budget: {e}"
+        ));
+    }
+    Ok(r)
 }
 
 /// The error estimate of the last level from the distances `d` (last two

@@ -128,6 +128,8 @@ pub struct SplitProblem {
     /// Assembled blocks, by everything that defines them (see
     /// [`SplitProblem::block`]).
     cache: std::sync::Mutex<std::collections::HashMap<Vec<u64>, Arc<DMatrix<f64>>>>,
+    /// The memory budget in bytes ([`crate::numeric::budget`]).
+    pub budget: u64,
 }
 
 /// A product of two or more operator symbols with its coefficient,
@@ -437,6 +439,7 @@ impl SplitProblem {
             end_check: None,
             probe: None,
             cache: Default::default(),
+            budget: crate::numeric::budget::default_budget(),
         })
     }
 
@@ -542,6 +545,15 @@ impl SplitProblem {
                 ((lvl.n_min as f64 + lvl.slope * l as f64).round() as usize).clamp(1, lvl.n_max)
             })
             .collect();
+        // The coupled matrix of every unknown on the whole mesh, four
+        // times (assembled blocks, the system, its factors, a temporary).
+        let coefficients = nu as f64 * counts.iter().sum::<usize>() as f64;
+        crate::numeric::budget::check(
+            || format!("a level of {coefficients:.0} coefficients"),
+            crate::numeric::budget::dense_bytes(coefficients, 4.0),
+            self.budget,
+        )
+        .map_err(PlanError::OverBudget)?;
         let sub_mesh = |lo: f64, hi: f64| -> Result<(Mesh, Vec<usize>), PlanError> {
             let i0 = mesh.breaks.iter().position(|&z| z == lo);
             let i1 = mesh.breaks.iter().position(|&z| z == hi);

@@ -98,6 +98,9 @@ pub struct SplitReport {
     /// answer beyond its estimate (then the mesh was graded there), when
     /// the check was made.
     pub end_check: Option<super::split_ends::EndCheck>,
+    /// Why the ladder stopped before the tolerance was reached, when it
+    /// was the memory budget.
+    pub stopped: Option<String>,
 }
 
 pub(super) struct Level {
@@ -168,8 +171,22 @@ pub fn solve_split_input_fields(
     input: SplitInput,
     opts: &SplitOptions,
 ) -> Result<SplitSolution, PlanError> {
+    solve_split_within(input, opts, None)
+}
+
+/// [`solve_split_input_fields`] within a memory budget of `max_memory`
+/// bytes (`None`: the default of [`crate::numeric::budget`]): a level over
+/// it is not built, and the last level that fitted is reported, marked.
+pub fn solve_split_within(
+    input: SplitInput,
+    opts: &SplitOptions,
+    max_memory: Option<u64>,
+) -> Result<SplitSolution, PlanError> {
     check_tolerance(opts)?;
     let mut problem = SplitProblem::from_input(input)?;
+    if let Some(b) = max_memory {
+        problem.budget = b;
+    }
     let ns = problem.contact.scalars.len();
     if ns > 1 {
         return Err(PlanError::Invalid(format!(
@@ -181,18 +198,45 @@ pub fn solve_split_input_fields(
     let mut previous: Option<Discrete> = None;
     for k in 0..=opts.max_level {
         let lvl = SplitLevel::level(k);
-        let (d, scalars, slope) = if ns == 0 {
-            (problem.discretise(&[], &lvl)?, vec![], 0.0)
+        let attempt = if ns == 0 {
+            problem.discretise(&[], &lvl).map(|d| (d, vec![], 0.0))
         } else {
-            match find_scalar(&problem, &lvl, &levels, opts.tol) {
-                Ok((x, slope, d)) => (d, vec![x], slope),
-                // On the first level a root beyond the resolved distance
-                // from an end may still give an answer to the tolerance.
-                Err(PlanError::RootAtEnd(r)) if levels.is_empty() => {
-                    return super::split_end::answer_at_end(problem, r, opts);
-                }
-                Err(e) => return Err(e),
+            find_scalar(&problem, &lvl, &levels, opts.tol).map(|(x, slope, d)| (d, vec![x], slope))
+        };
+        let (d, scalars, slope) = match attempt {
+            Ok(a) => a,
+            // On the first level a root beyond the resolved distance
+            // from an end may still give an answer to the tolerance.
+            Err(PlanError::RootAtEnd(r)) if levels.is_empty() => {
+                return super::split_end::answer_at_end(problem, r, opts);
             }
+            // Over the memory budget: the last level that fitted, marked.
+            Err(PlanError::OverBudget(e)) if previous.is_some() && !levels.is_empty() => {
+                let this = levels.pop().expect("checked");
+                let d = previous.take().expect("checked");
+                let rt = if ns > 0 {
+                    2.0 * root_tolerance(opts.tol)
+                } else {
+                    0.0
+                };
+                let est = if levels.is_empty() {
+                    f64::INFINITY
+                } else {
+                    (estimate(&levels, &this) + rt).max(d.consistency)
+                };
+                let mut report = report(&problem, &d, &levels, &this, est, false, opts.tol, k, rt);
+                report.stopped = Some(format!(
+                    "stopped after {k} levels, the last within the memory budget: {e}"
+                ));
+                return Ok(SplitSolution {
+                    report,
+                    problem,
+                    discrete: d,
+                    previous: None,
+                    level: k - 1,
+                });
+            }
+            Err(e) => return Err(e),
         };
         let outputs = (0..problem.sys.outputs.len())
             .map(|o| problem.output(&d, o))
@@ -457,6 +501,7 @@ pub(super) fn report(
             .collect(),
         end_answer: None,
         end_check: problem.end_check().cloned(),
+        stopped: None,
     };
     // Side conditions that contradict the equations leave a least-squares
     // residual: no answer is more accurate than it (relative, as it is).

@@ -38,7 +38,7 @@ use serde_json::{Map, Value, json};
 use crate::plan::split_fields::{Approach, LevelFields};
 use crate::plan::{
     CompiledSystem, Method, PlanError, SolveOptions, SolveReport, SplitInput, SplitOptions,
-    SplitSolution, solve_split_input_fields, solve_system,
+    SplitSolution, solve_system,
 };
 use crate::system::Program;
 
@@ -111,6 +111,9 @@ pub struct SolveSettings {
     pub method: Option<Method>,
     /// Points of the output grid.
     pub grid: usize,
+    /// Memory budget in bytes (`--max-memory`; `None`: the default of
+    /// [`crate::numeric::budget`]).
+    pub max_memory: Option<u64>,
 }
 
 impl Default for SolveSettings {
@@ -121,6 +124,7 @@ impl Default for SolveSettings {
             max_level: 8,
             method: None,
             grid: GRID_POINTS,
+            max_memory: None,
         }
     }
 }
@@ -169,6 +173,7 @@ pub fn solve_compiled(sys: &CompiledSystem, s: &SolveSettings) -> Result<Report,
         tol: s.tol,
         max_level: s.max_level,
         grid: s.grid,
+        max_memory: s.max_memory,
         ..SolveOptions::default()
     };
     Ok(from_one_interval(&solve_system(sys, &opts)?, s.tol))
@@ -192,7 +197,7 @@ pub fn solve_split_solution(
         tol: s.tol,
         max_level: s.max_level,
     };
-    let sol = solve_split_input_fields(input, &opts)?;
+    let sol = crate::plan::split_solve::solve_split_within(input, &opts, s.max_memory)?;
     let r = from_split(&sol, s.grid)?;
     Ok((r, sol))
 }
@@ -297,7 +302,7 @@ pub fn from_split(sol: &SplitSolution, grid: usize) -> Result<Report, PlanError>
     for (name, f) in &unknowns {
         error_estimates.insert(name.clone(), f.error_estimate);
     }
-    let warnings = Vec::new();
+    let warnings = r.stopped.iter().cloned().collect();
     let mut extra = Map::new();
     extra.insert("notes".into(), json!(text::split_notes(r)));
     extra.insert("dim".into(), json!(r.dim));

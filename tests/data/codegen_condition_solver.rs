@@ -113,6 +113,7 @@ pub fn system() -> Result<CompiledSystem, PlanError> {
         derived_pivots: Some(Vec::new()),
         domain: (-1.0, 1.0),
         interior: Vec::new(),
+        features: Vec::new(),
     };
     sys.check()?;
     Ok(sys)

@@ -148,6 +148,7 @@ pub fn system() -> Result<CompiledSystem, PlanError> {
         derived_pivots: Some(vec![(1, 0)]),
         domain: (0.0, 1.0),
         interior: vec![0.5],
+        features: Vec::new(),
     };
     sys.check()?;
     Ok(sys)
