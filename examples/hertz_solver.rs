@@ -38,6 +38,7 @@
 //! equation k1 p + k2 q = 1 on [0, 1]
 //! equation k3 p + k4 q = 0 on [0, c)
 //! relation q = (1801/10000)*p on [c, 1]
+//! inequality abs(q) <= (1801/10000)*p on [0, c)
 //! singular p at (1) ~ (1 - x)^(-alpha)
 //! singular q at (c)- ~ B*(x/sqrt(c^2 - (x^2)))
 //! condition B = 0
@@ -60,8 +61,8 @@ use lambdamat::plan::compiled::{
     CompiledEquation, CompiledOutput, CompiledSystem, OutputTerm, words,
 };
 use lambdamat::plan::split_input::{
-    RealFn, SplitCondition, SplitContact, SplitInput, SplitInterval, SplitKind, SplitRelation,
-    SplitSingular,
+    RealFn, SplitCondition, SplitContact, SplitInequality, SplitInput, SplitInterval, SplitKind,
+    SplitLinTerm, SplitRelation, SplitSingular,
 };
 use lambdamat::system::contact::{RFunc, Scalar, real_pow};
 
@@ -262,6 +263,24 @@ pub fn input() -> Result<SplitInput, PlanError> {
                 lo_closed: true,
                 hi_closed: true,
             },
+        }],
+        inequalities: vec![SplitInequality {
+            abs: true,
+            lhs: vec![SplitLinTerm {
+                coeff: RealFn::new(const_1),
+                unknown: Some(1),
+            }],
+            rhs: vec![SplitLinTerm {
+                coeff: RealFn::new(const_1801_10000),
+                unknown: Some(0),
+            }],
+            domain: SplitInterval {
+                lo: RealFn::new(const_0),
+                hi: RealFn::new(slot_c),
+                lo_closed: true,
+                hi_closed: false,
+            },
+            text: "abs(q) <= (1801/10000)*p".into(),
         }],
         singulars: vec![
             SplitSingular {

@@ -278,13 +278,13 @@ fn negative_poisson_ratio_solves() {
 fn the_ends_are_refused_with_their_limit() {
     // ν = −0.9, μ = 0.01: the stick zone (c ≈ 1e-46) is below the
     // resolved range (c is bounded at the end, src/plan/split_end.rs); the roots
-    // near c → 1 violate the Coulomb bound and are not returned.
+    // near c → 1 violate the Coulomb inequality and are not returned.
     // At tol 1e-10 it is answered at the end (tests/end_answers.rs); at
     // 1e-11 the bounded c (within 5e-11) is not enough.
     let r = root_at_end_tol("-9/10", "1/100", 1e-11);
     let e = PlanError::RootAtEnd(Box::new(r)).to_string();
     assert!(
-        e.contains("violates the bound") && e.contains("closer than"),
+        e.contains("violates the inequality") && e.contains("closer than"),
         "{e}"
     );
     // ν = 1/2 (γ = 0): no coupling; the stick zone fills the contact.
@@ -350,7 +350,7 @@ fn the_ends_are_structured_refusals_naming_the_scalar_the_end_and_the_trend() {
     assert!(
         rejected
             .iter()
-            .any(|(x, why)| *x > 0.99 && why.contains("violates the bound"))
+            .any(|(x, why)| *x > 0.99 && why.contains("violates the inequality"))
     );
     // The message is the user's text, unchanged.
     let text = PlanError::RootAtEnd(Box::new(r)).to_string();

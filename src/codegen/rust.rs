@@ -8,7 +8,7 @@
 //! output alone). This file owns printing only; which expressions to print
 //! is [`super`]'s business.
 use crate::plan::compile::{AbelParts, const_exponent};
-use crate::system::expr::{Expr, Func};
+use crate::system::expr::Expr;
 
 /// Precedence of a printed expression: what it may appear inside of
 /// without parentheses.
@@ -242,11 +242,11 @@ impl Body {
                     self.call("powf", vec![a, b])
                 }
             },
-            Expr::Call(Func::Acot, a) => {
+            Expr::Call(f, a) if !f.is_f64_method() => {
                 let a = self.node(a);
                 let a = self.fit(vec![a]).pop().expect("one");
                 Code::new(
-                    format!("lambdamat::system::expr::acot({})", a.text),
+                    format!("lambdamat::system::expr::{}({})", f.name(), a.text),
                     Prec::Atom,
                 )
             }

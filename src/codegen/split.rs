@@ -273,6 +273,46 @@ fn contact_lit(c: &Contact, fns: &mut Fns) -> String {
             )
         })
         .collect();
+    let inequalities: Vec<String> = c
+        .inequalities
+        .iter()
+        .enumerate()
+        .map(|(i, q)| {
+            let role = format!("inequality_{}", i + 1);
+            let what = format!("Inequality {}", i + 1);
+            let mut side = |terms: &[crate::system::contact::LinTerm], name: &str| {
+                let items: Vec<String> = terms
+                    .iter()
+                    .enumerate()
+                    .map(|(j, t)| {
+                        let coeff = fns.real(
+                            &format!("{role}_{name}_{}", j + 1),
+                            &format!("{what}, {name} side, factor {}", j + 1),
+                            &t.coeff,
+                        );
+                        lit(
+                            "SplitLinTerm",
+                            &[("coeff", coeff), ("unknown", format!("{:?}", t.unknown))],
+                        )
+                    })
+                    .collect();
+                list(&items)
+            };
+            let lhs = side(&q.lhs, "smaller");
+            let rhs = side(&q.rhs, "larger");
+            let domain = fns.interval(&role, &what, &q.domain);
+            lit(
+                "SplitInequality",
+                &[
+                    ("abs", q.abs.to_string()),
+                    ("lhs", lhs),
+                    ("rhs", rhs),
+                    ("domain", domain),
+                    ("text", format!("{:?}.into()", q.text)),
+                ],
+            )
+        })
+        .collect();
     let singulars: Vec<String> = c
         .singulars
         .iter()
@@ -356,6 +396,7 @@ fn contact_lit(c: &Contact, fns: &mut Fns) -> String {
         ("unknown_domains", list(&unknown_domains)),
         ("equation_domains", list(&equation_domains)),
         ("relations", list(&relations)),
+        ("inequalities", list(&inequalities)),
         ("singulars", list(&singulars)),
         ("coefficients", list(&coefficients)),
         ("conditions", list(&conditions)),

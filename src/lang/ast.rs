@@ -202,6 +202,17 @@ pub enum Stmt {
         /// Where it holds.
         domain: Interval,
     },
+    /// `inequality abs(q) <= mu*p on [0, c)`
+    Inequality {
+        /// The left side.
+        lhs: Expr,
+        /// `>=` (true) or `<=`.
+        ge: bool,
+        /// The right side.
+        rhs: Expr,
+        /// Where it must hold.
+        domain: Interval,
+    },
     /// `scalar c in (0, 1)` or `scalar c in (0, 1) ~ estimate`
     Scalar {
         /// The scalar's name.

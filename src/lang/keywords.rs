@@ -42,6 +42,7 @@ pub const KEYWORDS: &[&str] = &[
     "scalar",
     "singular",
     "condition",
+    "inequality",
     "on",
     "in",
     "at",

@@ -175,6 +175,7 @@ pub fn lower(file: &File, v: &Validated) -> Result<Program, LangError> {
             | Stmt::Param { .. }
             | Stmt::Unknown(..)
             | Stmt::Relation { .. }
+            | Stmt::Inequality { .. }
             | Stmt::Scalar { .. }
             | Stmt::Singular { .. }
             | Stmt::Condition { .. } => {}
@@ -225,6 +226,14 @@ pub(crate) fn fexpr(e: &Expr, scope: &Scope) -> Result<SExpr, LangError> {
     Ok(match &e.kind {
         ExprKind::Name(id) if id.name == "x" => SExpr::X,
         ExprKind::Name(id) if id.name == "t" => SExpr::T,
+        // A real parameter stands for its definition.
+        ExprKind::Name(id) => match scope.get(&id.name) {
+            Some(Entry {
+                sort: Sort::Param(i),
+                ..
+            }) => fexpr(scope.real_def(i).ok_or_else(|| internal(e))?, scope)?,
+            _ => return Err(internal(e)),
+        },
         ExprKind::Pi => SExpr::Pi,
         ExprKind::Neg(a) => SExpr::Neg(b(a)?),
         ExprKind::Binary(op, x, y) => {

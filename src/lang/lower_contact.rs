@@ -9,10 +9,12 @@ use super::ast::{BinOp, Expr, ExprKind, File, Ident, Interval, Stmt};
 use super::error::{ErrorKind, LangError};
 use super::lower::constant;
 use super::scope::{Entry, Scope, Sort};
-use super::validate_contact::{coefficient_term, is_inf, relation_form, weight_form};
+use super::validate_contact::{
+    coefficient_term, inequality_sides, is_inf, linear_side, relation_form, weight_form,
+};
 use crate::system::contact::{
-    Condition, Contact, Interval as CInterval, RBin, RExpr, RFunc, RealParam, Relation, Scalar,
-    Singular, SingularKind,
+    Condition, Contact, Inequality, Interval as CInterval, LinTerm, RBin, RExpr, RFunc, RealParam,
+    Relation, Scalar, Singular, SingularKind,
 };
 
 fn internal(span: super::ast::Span, what: &str) -> LangError {
@@ -192,17 +194,85 @@ pub fn lower_contact(file: &File, scope: &Scope) -> Result<Contact, LangError> {
                         })
                     )
                 };
-                let (factor, other) = relation_form(value, is_unknown)
-                    .ok_or_else(|| internal(value.span, "a relation"))?;
+                let (coeff, other) = match relation_form(value, is_unknown) {
+                    Some((factor, other)) => (
+                        match factor {
+                            Some(k) => rexpr(k, scope, &slots)?,
+                            None => RExpr::Const(num_traits::One::one()),
+                        },
+                        unknown(other, scope)?,
+                    ),
+                    // `u = 0`: stored as `u = 0·u`.
+                    None => (RExpr::Const(num_traits::Zero::zero()), unknown(u, scope)?),
+                };
                 c.relations.push(Relation {
                     unknown: unknown(u, scope)?,
-                    coeff: match factor {
-                        Some(k) => rexpr(k, scope, &slots)?,
-                        None => RExpr::Const(num_traits::One::one()),
-                    },
-                    other: unknown(other, scope)?,
+                    coeff,
+                    other,
                     domain: interval(domain, scope, &slots)?,
                 });
+            }
+            Stmt::Inequality {
+                lhs,
+                ge,
+                rhs,
+                domain,
+            } => {
+                let is_unknown = |n: &str| {
+                    matches!(
+                        scope.get(n),
+                        Some(Entry {
+                            sort: Sort::Unknown(_),
+                            ..
+                        })
+                    )
+                };
+                let (abs, small, large) = inequality_sides(lhs, *ge, rhs);
+                let mut sides = Vec::new();
+                for side in [small, large] {
+                    let mut terms = Vec::new();
+                    linear_side(side, &is_unknown, false, &mut terms)
+                        .ok_or_else(|| internal(side.span, "an inequality"))?;
+                    let mut lin = Vec::new();
+                    for (neg, k, u) in terms {
+                        let mut coeff = match k {
+                            Some(k) => rexpr(k, scope, &slots)?,
+                            None => RExpr::Const(num_traits::One::one()),
+                        };
+                        if neg {
+                            coeff = RExpr::Neg(Box::new(coeff));
+                        }
+                        lin.push(LinTerm {
+                            coeff,
+                            unknown: u.map(|u| unknown(u, scope)).transpose()?,
+                        });
+                    }
+                    sides.push(lin);
+                }
+                let rhs_terms = sides.pop().unwrap_or_default();
+                let lhs_terms = sides.pop().unwrap_or_default();
+                let mut q = Inequality {
+                    abs,
+                    lhs: lhs_terms,
+                    rhs: rhs_terms,
+                    domain: interval(domain, scope, &slots)?,
+                    text: String::new(),
+                };
+                let names: Vec<String> = scope
+                    .scalars
+                    .iter()
+                    .cloned()
+                    .chain(
+                        scope
+                            .params
+                            .iter()
+                            .enumerate()
+                            .filter(|(i, _)| scope.is_real_param(*i))
+                            .map(|(_, (n, _))| n.clone()),
+                    )
+                    .collect();
+                q.text = q.to_text(&scope.unknowns, &names);
+                c.inequalities.push(q);
             }
             Stmt::Singular {
                 unknown: u,
@@ -224,10 +294,10 @@ pub fn lower_contact(file: &File, scope: &Scope) -> Result<Contact, LangError> {
                         func: rexpr(g, scope, &slots)?,
                     },
                     None => {
-                        let (_, exp) =
-                            weight_form(body).ok_or_else(|| internal(body.span, "a weight"))?;
+                        let (_, exp) = weight_form(body, scope)
+                            .ok_or_else(|| internal(body.span, "a weight"))?;
                         SingularKind::Weight {
-                            exponent: rexpr(exp, scope, &slots)?,
+                            exponent: rexpr(&exp, scope, &slots)?,
                         }
                     }
                 };

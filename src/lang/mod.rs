@@ -196,21 +196,31 @@ fn fits_here(src: &str) -> bool {
 
 /// An upper bound on how deep any pass of the front end recurses for `src`,
 /// in levels: the most `(`, `+`, `-`, `*`, `/` and `^` between two
-/// characters that never occur inside an expression (`,` `;` `=` `[` `]`
-/// `~`), comments left out. Every node of an expression tree that has
+/// characters that never occur inside an expression (`;` `=` `[` `]` `~`,
+/// and `,` outside brackets; a `,` inside brackets, which may separate a
+/// call's arguments, counts three levels), comments left out. Every node of an expression tree that has
 /// children (a sum, product, power, negation, call or integral) and every
 /// bracket the parser descends into is one of those characters, so an
 /// expression's tree depth and bracket nesting are both at most the count of
 /// the stretch it lies in.
 pub fn depth_bound(src: &str) -> usize {
     let (mut most, mut here, mut in_comment) = (0usize, 0usize, false);
+    let mut open = 0usize;
     for b in src.bytes() {
         match b {
             b'\n' => in_comment = false,
             _ if in_comment => {}
             b'#' => in_comment = true,
             b'(' | b'+' | b'-' | b'*' | b'/' | b'^' => {
+                open += usize::from(b == b'(');
                 here += 1;
+                most = most.max(here);
+            }
+            b')' => open = open.saturating_sub(1),
+            // A `,` inside brackets may separate a call's arguments
+            // (`beta(a, b)`, written out three levels deeper): no reset.
+            b',' if open > 0 => {
+                here += 3;
                 most = most.max(here);
             }
             b',' | b';' | b'=' | b'[' | b']' | b'~' => here = 0,

@@ -167,6 +167,19 @@ fn statement(pair: Pair<'_, Rule>) -> Result<Statement, LangError> {
                 domain,
             }
         }
+        Rule::inequality_def => {
+            let mut it = pair.into_inner().skip(1);
+            let lhs = expr(next(&mut it, span)?)?;
+            let ge = next(&mut it, span)?.as_rule() == Rule::ge;
+            let rhs = expr(next(&mut it, span)?)?;
+            let domain = interval_of_domain(next(&mut it, span)?, span)?;
+            Stmt::Inequality {
+                lhs,
+                ge,
+                rhs,
+                domain,
+            }
+        }
         Rule::scalar_decl => {
             let mut it = pair.into_inner().skip(1);
             let name = ident(&next(&mut it, span)?);
@@ -399,6 +412,60 @@ fn build(pair: Pair<'_, Rule>) -> Result<Built, LangError> {
         .parse(pair.into_inner())
 }
 
+/// A call `f(a)`; `beta(a, b)` is written out as its definition
+/// `gamma(a)*gamma(b)/gamma(a + b)` (so every later pass sees functions of
+/// one argument), and any other name with two or more arguments is refused.
+fn call(f: Ident, mut args: Vec<Built>, span: Span) -> Result<Built, LangError> {
+    let depth = args.iter().map(|a| a.depth).max().unwrap_or(0) + 3;
+    match (f.name.as_str(), args.len()) {
+        (name @ "beta", n) if n != 2 => Err(wrong_arity(name, "two arguments", n, span)),
+        (_, 1) => {
+            let a = args
+                .pop()
+                .ok_or_else(|| internal(span, "a call without argument"))?;
+            node(ExprKind::Call(f, Box::new(a.expr)), span, depth)
+        }
+        ("beta", 2) => {
+            let b = args
+                .pop()
+                .ok_or_else(|| internal(span, "beta's argument"))?
+                .expr;
+            let a = args
+                .pop()
+                .ok_or_else(|| internal(span, "beta's argument"))?
+                .expr;
+            let name = |f: &Ident| Ident {
+                name: "gamma".into(),
+                span: f.span,
+            };
+            let g = |e: Expr| Expr {
+                span: e.span,
+                kind: ExprKind::Call(name(&f), Box::new(e)),
+            };
+            let bin = |op, x: Expr, y: Expr| Expr {
+                span,
+                kind: ExprKind::Binary(op, Box::new(x), Box::new(y)),
+            };
+            let sum = bin(BinOp::Add, a.clone(), b.clone());
+            let num = bin(BinOp::Mul, g(a), g(b));
+            node(bin(BinOp::Div, num, g(sum)).kind, span, depth)
+        }
+        (name, n) => Err(wrong_arity(name, "one argument", n, span)),
+    }
+}
+
+fn wrong_arity(name: &str, want: &str, n: usize, span: Span) -> LangError {
+    LangError::new(
+        ErrorKind::WrongSort,
+        format!("`{name}` takes {want}, not {n}"),
+        span,
+        "wrong number of arguments",
+    )
+    .with_help(
+        "`beta(a, b)` takes two arguments; every other function and an unknown's value take one",
+    )
+}
+
 fn primary(pair: Pair<'_, Rule>) -> Result<Built, LangError> {
     let span = span_of(&pair);
     match pair.as_rule() {
@@ -417,8 +484,8 @@ fn primary(pair: Pair<'_, Rule>) -> Result<Built, LangError> {
         Rule::call => {
             let mut it = pair.into_inner();
             let f = ident(&next(&mut it, span)?);
-            let arg = build(next(&mut it, span)?)?;
-            node(ExprKind::Call(f, Box::new(arg.expr)), span, arg.depth + 1)
+            let args = it.map(build).collect::<Result<Vec<_>, _>>()?;
+            call(f, args, span)
         }
         Rule::integral => {
             let mut it = pair.into_inner().peekable();
@@ -575,7 +642,9 @@ fn describe_rule(rule: Rule) -> Option<&'static str> {
         | Rule::kw_relation
         | Rule::kw_scalar
         | Rule::kw_singular
-        | Rule::kw_condition => STATEMENT,
+        | Rule::kw_condition
+        | Rule::kw_inequality => STATEMENT,
+        Rule::le | Rule::ge => "`<=` or `>=`",
         Rule::kw_on => "`on`",
         Rule::kw_in => "`in`",
         Rule::kw_at => "`at`",
@@ -601,7 +670,8 @@ fn describe_rule(rule: Rule) -> Option<&'static str> {
         | Rule::relation_def
         | Rule::scalar_decl
         | Rule::singular_decl
-        | Rule::condition_def => STATEMENT,
+        | Rule::condition_def
+        | Rule::inequality_def => STATEMENT,
         Rule::number
         | Rule::paren
         | Rule::integral
@@ -624,7 +694,7 @@ fn describe_rule(rule: Rule) -> Option<&'static str> {
     })
 }
 
-const STATEMENT: &str = "a statement (`var`, `principal`, `matrix`, `smith`, `check`, `param`, `unknown`, `operator`, `equation`, `relation`, `scalar`, `singular`, `condition`, `solve` or `output`)";
+const STATEMENT: &str = "a statement (`var`, `principal`, `matrix`, `smith`, `check`, `param`, `unknown`, `operator`, `equation`, `relation`, `inequality`, `scalar`, `singular`, `condition`, `solve` or `output`)";
 
 /// What is written at byte `pos`, in words.
 fn found_at(src: &str, pos: usize) -> (String, Option<String>, usize) {

@@ -31,13 +31,25 @@ fn contact(program: &Program, slots: &[String], out: &mut String) {
     let c = &program.contact;
     let unknown = |i: usize| program.unknowns.get(i).map_or("?", String::as_str);
     for r in &c.relations {
+        let zero = matches!(&r.coeff, crate::system::contact::RExpr::Const(q) if num_traits::Zero::is_zero(q));
+        let value = if zero && r.other == r.unknown {
+            "0".to_string()
+        } else {
+            format!("({})*{}", r.coeff.to_text(slots), unknown(r.other))
+        };
         let _ = writeln!(
             out,
-            "relation {} = ({})*{} on {}",
+            "relation {} = {value} on {}",
             unknown(r.unknown),
-            r.coeff.to_text(slots),
-            unknown(r.other),
             interval(&r.domain, slots)
+        );
+    }
+    for q in &c.inequalities {
+        let _ = writeln!(
+            out,
+            "inequality {} on {}",
+            q.to_text(&program.unknowns, slots),
+            interval(&q.domain, slots)
         );
     }
     for s in &c.singulars {

@@ -72,6 +72,10 @@ pub struct Scope {
     pub outputs: Vec<String>,
     /// `real_params[i]`: parameter `i` is real (not an exact rational).
     pub real_params: Vec<bool>,
+    /// `real_defs[i]`: the definition of real parameter `i` when it uses
+    /// no scalar (such a parameter may stand in right sides and outputs,
+    /// where it is replaced by its definition).
+    pub real_defs: Vec<Option<Expr>>,
     /// Unknown scalars in order.
     pub scalars: Vec<String>,
     /// Singular coefficients in order.
@@ -161,6 +165,11 @@ impl Scope {
         self.real_params.get(i).copied().unwrap_or(false)
     }
 
+    /// The definition of real parameter `i`, if it uses no scalar.
+    pub fn real_def(&self, i: usize) -> Option<&Expr> {
+        self.real_defs.get(i).and_then(Option::as_ref)
+    }
+
     /// The value of parameter `i`, if known.
     pub fn param_value(&self, i: usize) -> Option<&BigRational> {
         self.params.get(i).and_then(|(_, v)| v.as_ref())
@@ -177,9 +186,9 @@ impl Scope {
             ExprKind::Name(id) => matches!(
                 self.get(&id.name),
                 Some(Entry {
-                    sort: Sort::Param(_),
+                    sort: Sort::Param(i),
                     ..
-                })
+                }) if !self.is_real_param(i)
             ),
             ExprKind::Neg(a) => self.is_rational_const(a),
             ExprKind::Binary(BinOp::Pow, a, b) => {

@@ -193,6 +193,11 @@ impl Validator {
                             self.scope.real_params.resize(i + 1, false);
                         }
                         self.scope.real_params[i] = real;
+                        if self.scope.real_defs.len() <= i {
+                            self.scope.real_defs.resize(i + 1, None);
+                        }
+                        self.scope.real_defs[i] =
+                            (real && !self.uses_scalar(value)).then(|| value.clone());
                         if self.processed_params.len() <= i {
                             self.processed_params.resize(i + 1, false);
                         }
@@ -329,6 +334,12 @@ impl Validator {
                     value,
                     domain,
                 } => self.relation(unknown, value, domain),
+                Stmt::Inequality {
+                    lhs,
+                    ge,
+                    rhs,
+                    domain,
+                } => self.inequality(lhs, *ge, rhs, domain),
                 Stmt::Scalar {
                     range, estimate, ..
                 } => {

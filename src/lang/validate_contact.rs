@@ -3,18 +3,14 @@
 //! real parameters (values such as `acot(gamma*mu)/pi` that are not exact
 //! rationals). Every error carries a span; nothing here builds the lowered
 //! program (that is `lower_contact.rs`) or touches the operator part.
-use num_traits::Signed;
+use num_rational::BigRational;
+use num_traits::{One, Signed, Zero};
 
 use super::ast::{BinOp, Expr, ExprKind, Ident, Interval};
 use super::error::{ErrorKind, LangError};
-use super::scope::{Entry, Sort};
+use super::scope::{Entry, Scope, Sort};
 use super::validate::Validator;
 use crate::system::contact::RFunc;
-
-/// Whether `e` is the name `x`.
-pub(super) fn is_x(e: &Expr) -> bool {
-    matches!(&e.kind, ExprKind::Name(id) if id.name == "x")
-}
 
 /// Whether `e` is the name `inf`.
 pub(super) fn is_inf(e: &Expr) -> bool {
@@ -56,17 +52,113 @@ pub(super) fn coefficient_term(e: &Expr) -> Option<(Ident, Expr)> {
     Some((id, g))
 }
 
-/// `(P - x)^e` or `(x - P)^e`: the point expression and the exponent.
-pub(super) fn weight_form(e: &Expr) -> Option<(&Expr, &Expr)> {
-    let ExprKind::Binary(BinOp::Pow, base, exp) = &e.kind else {
-        return None;
+/// Whether `x` occurs in `e`.
+fn uses_x(e: &Expr) -> bool {
+    match &e.kind {
+        ExprKind::Name(id) => id.name == "x",
+        ExprKind::Neg(a) | ExprKind::Call(_, a) => uses_x(a),
+        ExprKind::Binary(_, a, b) => uses_x(a) || uses_x(b),
+        _ => false,
+    }
+}
+
+fn node(kind: ExprKind, span: super::ast::Span) -> Expr {
+    Expr { kind, span }
+}
+
+fn number(q: BigRational, span: super::ast::Span) -> Expr {
+    node(ExprKind::Number(q), span)
+}
+
+/// `e` as `a·x + b` with an exact `a` (terms free of `x` make up `b`, in
+/// source form); `None` when `e` is not of that shape.
+fn linear_x(e: &Expr, scope: &Scope) -> Option<(BigRational, Option<Expr>)> {
+    let bin = |op, a: Expr, b: Expr| node(ExprKind::Binary(op, Box::new(a), Box::new(b)), e.span);
+    if !uses_x(e) {
+        return Some((BigRational::zero(), Some(e.clone())));
+    }
+    match &e.kind {
+        ExprKind::Name(_) => Some((BigRational::one(), None)),
+        ExprKind::Neg(a) => {
+            let (k, c) = linear_x(a, scope)?;
+            Some((-k, c.map(|c| node(ExprKind::Neg(Box::new(c)), e.span))))
+        }
+        ExprKind::Binary(op @ (BinOp::Add | BinOp::Sub), a, b) => {
+            let (ka, ca) = linear_x(a, scope)?;
+            let (kb, cb) = linear_x(b, scope)?;
+            let k = if *op == BinOp::Add { ka + kb } else { ka - kb };
+            let c = match (ca, cb) {
+                (Some(ca), Some(cb)) => Some(bin(*op, ca, cb)),
+                (Some(ca), None) => Some(ca),
+                (None, Some(cb)) if *op == BinOp::Add => Some(cb),
+                (None, Some(cb)) => Some(node(ExprKind::Neg(Box::new(cb)), e.span)),
+                (None, None) => None,
+            };
+            Some((k, c))
+        }
+        ExprKind::Binary(BinOp::Mul, a, b) => {
+            let (f, l) = if uses_x(a) { (b, a) } else { (a, b) };
+            let q = super::lower::constant(f, scope)?;
+            let (k, c) = linear_x(l, scope)?;
+            Some((k * &q, c.map(|c| bin(BinOp::Mul, number(q, e.span), c))))
+        }
+        ExprKind::Binary(BinOp::Div, a, b) => {
+            let q = super::lower::constant(b, scope).filter(|q| !q.is_zero())?;
+            let (k, c) = linear_x(a, scope)?;
+            Some((k / &q, c.map(|c| bin(BinOp::Div, c, number(q, e.span)))))
+        }
+        _ => None,
+    }
+}
+
+/// A weight `|x − P|^e` however it is written: a power, square root or
+/// reciprocal of an expression linear in `x` (`(1 - x)^(-alpha)`,
+/// `(x - (-1))^(-1/2)`, `(1 + x)^(-1/2)`, `1/sqrt(1 + x)`,
+/// `abs(2*x - 2)^(-1/3)`), possibly times a constant (a weight's constant
+/// factor is immaterial: the smooth factor takes it). Returns the point
+/// `P` and the exponent `e`, both in source form.
+pub(super) fn weight_form(e: &Expr, scope: &Scope) -> Option<(Expr, Expr)> {
+    let span = e.span;
+    let half = || number(BigRational::new(1.into(), 2.into()), span);
+    let base = |b: &Expr| -> Option<Expr> {
+        let b = match &b.kind {
+            ExprKind::Call(f, a) if f.name == "abs" => a,
+            _ => b,
+        };
+        let (k, c) = linear_x(b, scope)?;
+        if k.is_zero() {
+            return None;
+        }
+        // a·x + c = a·(x − P) with P = −c/a.
+        Some(match c {
+            None => number(BigRational::zero(), span),
+            Some(c) => node(
+                ExprKind::Neg(Box::new(node(
+                    ExprKind::Binary(BinOp::Div, Box::new(c), Box::new(number(k, span))),
+                    span,
+                ))),
+                span,
+            ),
+        })
     };
-    let ExprKind::Binary(BinOp::Sub, a, b) = &base.kind else {
-        return None;
-    };
-    match (is_x(a), is_x(b)) {
-        (false, true) => Some((a, exp)),
-        (true, false) => Some((b, exp)),
+    let times =
+        |a: Expr, b: Expr| node(ExprKind::Binary(BinOp::Mul, Box::new(a), Box::new(b)), span);
+    match &e.kind {
+        ExprKind::Binary(BinOp::Pow, b, exp) if !uses_x(exp) => match &b.kind {
+            ExprKind::Call(f, a) if f.name == "sqrt" => {
+                Some((base(a)?, times(half(), (**exp).clone())))
+            }
+            _ => Some((base(b)?, (**exp).clone())),
+        },
+        ExprKind::Call(f, a) if f.name == "sqrt" => Some((base(a)?, half())),
+        ExprKind::Binary(BinOp::Div, k, w) if !uses_x(k) => {
+            let (p, exp) = weight_form(w, scope)?;
+            Some((p, node(ExprKind::Neg(Box::new(exp)), span)))
+        }
+        ExprKind::Binary(BinOp::Mul, k, w) | ExprKind::Binary(BinOp::Mul, w, k) if !uses_x(k) => {
+            weight_form(w, scope)
+        }
+        ExprKind::Binary(BinOp::Div, w, k) if !uses_x(k) => weight_form(w, scope),
         _ => None,
     }
 }
@@ -85,6 +177,63 @@ pub(super) fn relation_form(
             _ => None,
         },
         _ => None,
+    }
+}
+
+/// One side of an inequality as terms `(factor, unknown)` (the factor
+/// `None` for 1, the unknown `None` for a constant term), each with its
+/// sign; `None` when it is not such a sum.
+pub(super) fn linear_side<'e>(
+    e: &'e Expr,
+    is_unknown: &impl Fn(&str) -> bool,
+    negate: bool,
+    out: &mut Vec<(bool, Option<&'e Expr>, Option<&'e Ident>)>,
+) -> Option<()> {
+    let mentions = |e: &Expr| mentions_unknown(e, is_unknown);
+    match &e.kind {
+        ExprKind::Neg(a) => linear_side(a, is_unknown, !negate, out),
+        ExprKind::Binary(op @ (BinOp::Add | BinOp::Sub), a, b) => {
+            linear_side(a, is_unknown, negate, out)?;
+            linear_side(b, is_unknown, negate ^ (*op == BinOp::Sub), out)
+        }
+        _ if !mentions(e) => {
+            out.push((negate, Some(e), None));
+            Some(())
+        }
+        _ => {
+            let (k, u) = relation_form(e, is_unknown)?;
+            if k.is_some_and(mentions) {
+                return None;
+            }
+            out.push((negate, k, Some(u)));
+            Some(())
+        }
+    }
+}
+
+fn mentions_unknown(e: &Expr, is_unknown: &impl Fn(&str) -> bool) -> bool {
+    match &e.kind {
+        ExprKind::Name(id) => is_unknown(&id.name),
+        ExprKind::Call(f, a) => is_unknown(&f.name) || mentions_unknown(a, is_unknown),
+        ExprKind::Neg(a) => mentions_unknown(a, is_unknown),
+        ExprKind::Binary(_, a, b) => {
+            mentions_unknown(a, is_unknown) || mentions_unknown(b, is_unknown)
+        }
+        _ => false,
+    }
+}
+
+/// An inequality `lhs <= rhs` (`>=` swapped) as `(abs, smaller, larger)`:
+/// the smaller side without its `abs(…)` if it has one.
+pub(super) fn inequality_sides<'e>(
+    lhs: &'e Expr,
+    ge: bool,
+    rhs: &'e Expr,
+) -> (bool, &'e Expr, &'e Expr) {
+    let (small, large) = if ge { (rhs, lhs) } else { (lhs, rhs) };
+    match &small.kind {
+        ExprKind::Call(f, a) if f.name == "abs" => (true, a, large),
+        _ => (false, small, large),
     }
 }
 
@@ -194,6 +343,27 @@ impl Validator {
                 ));
                 false
             }
+        }
+    }
+
+    /// Whether `e` uses an unknown scalar, directly or through a real
+    /// parameter defined with one.
+    pub(super) fn uses_scalar(&self, e: &Expr) -> bool {
+        match &e.kind {
+            ExprKind::Name(id) => match self.scope.get(&id.name) {
+                Some(Entry {
+                    sort: Sort::Scalar(_),
+                    ..
+                }) => true,
+                Some(Entry {
+                    sort: Sort::Param(i),
+                    ..
+                }) => self.scope.is_real_param(i) && self.scope.real_def(i).is_none(),
+                _ => false,
+            },
+            ExprKind::Neg(a) | ExprKind::Call(_, a) => self.uses_scalar(a),
+            ExprKind::Binary(_, a, b) => self.uses_scalar(a) || self.uses_scalar(b),
+            _ => false,
         }
     }
 
@@ -315,12 +485,49 @@ impl Validator {
                     self.real_expr(k, false);
                 }
             }
+            None if super::lower::constant(value, &self.scope).is_some_and(|q| q.is_zero()) => {}
             None => self.err(wrong(
                 value,
-                "the right side of a relation must be a constant times an unknown",
-                "not `k * unknown`",
-                "write e.g. `relation q = mu*p on [c, 1]`",
+                "the right side of a relation must be 0 or a constant times an unknown",
+                "not `0` or `k * unknown`",
+                "write e.g. `relation p = 0 on [a, 2]` or `relation q = mu*p on [c, 1]`",
             )),
+        }
+        self.interval(domain);
+    }
+
+    /// `inequality lhs <= rhs on domain` (or `>=`).
+    pub(super) fn inequality(&mut self, lhs: &Expr, ge: bool, rhs: &Expr, domain: &Interval) {
+        let (_, small, large) = inequality_sides(lhs, ge, rhs);
+        for side in [small, large] {
+            let scope = &self.scope;
+            let is_unknown = |n: &str| {
+                matches!(
+                    scope.get(n),
+                    Some(Entry {
+                        sort: Sort::Unknown(_),
+                        ..
+                    })
+                )
+            };
+            let mut terms = Vec::new();
+            if linear_side(side, &is_unknown, false, &mut terms).is_none() {
+                self.err(wrong(
+                    side,
+                    "each side of an inequality must be a sum of constant multiples of unknowns and constants (the smaller side may be wrapped in `abs(…)`)",
+                    "not understood",
+                    "write e.g. `inequality abs(q) <= mu*p on [0, c)` or `inequality p >= 0 on [0, a]`",
+                ));
+                continue;
+            }
+            for (_, k, u) in terms {
+                if let Some(u) = u {
+                    self.unknown_ref(u);
+                }
+                if let Some(k) = k {
+                    self.real_expr(k, false);
+                }
+            }
         }
         self.interval(domain);
     }
@@ -341,14 +548,26 @@ impl Validator {
             self.real_expr(g, true);
             return;
         }
-        match weight_form(body) {
+        match weight_form(body, &self.scope) {
             Some((point, exp)) => {
-                self.real_expr(point, false);
-                self.real_expr(exp, false);
+                let ok = self.real_expr(&point, false);
+                self.real_expr(&exp, false);
+                let exact = |e: &Expr| super::lower::constant(e, &self.scope);
+                if ok
+                    && let (Some(p), Some(a)) = (exact(&point), exact(at))
+                    && p != a
+                {
+                    self.err(wrong(
+                        body,
+                        format!("this weight is singular at x = {p}, not at the declared point {a}"),
+                        "another point",
+                        "write the weight of the point after `at`, e.g. `singular f at -1 ~ (1 + x)^(-1/2)`",
+                    ));
+                }
             }
             None => self.err(wrong(
                 body,
-                "singular behaviour must be a weight `(P - x)^e` / `(x - P)^e` or a term `B*g(x)` with a new coefficient name `B`",
+                "singular behaviour must be a weight `|x - P|^e` (a power, square root or reciprocal of an expression linear in x, such as `(1 - x)^(-alpha)` or `1/sqrt(1 + x)`) or a term `B*g(x)` with a new coefficient name `B`",
                 "not understood",
                 "e.g. `singular p at 1 ~ (1 - x)^(-alpha)` or `singular q at c- ~ B*x/sqrt(c^2 - x^2)`",
             )),

@@ -258,7 +258,9 @@ impl Validator {
                 sort: Sort::Param(i),
                 ..
             }) => {
-                if self.scope.is_real_param(i) {
+                let allowed = self.scope.real_def(i).is_some()
+                    && matches!(place, Place::Rhs | Place::Weight(_) | Place::OutputConst);
+                if self.scope.is_real_param(i) && !allowed {
                     self.err(
                         LangError::new(
                             ErrorKind::WrongSort,
@@ -270,7 +272,7 @@ impl Validator {
                             id.span,
                             "real parameter",
                         )
-                        .with_help("kernels, right sides and outputs take exact parameters; real ones go into relations, singular declarations and conditions"),
+                        .with_help("kernels and multipliers take exact parameters; real ones (that use no scalar) may stand in right sides and outputs too"),
                     );
                 }
             }

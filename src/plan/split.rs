@@ -140,7 +140,12 @@ type Product = (f64, Vec<usize>);
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum Status {
     Free,
-    Related { coeff: f64, other: usize },
+    Related {
+        coeff: f64,
+        other: usize,
+    },
+    /// Substituted by 0 (a relation `u = 0`, or a factor that is 0).
+    Zero,
 }
 
 /// An exact singular term `B·g(x)` as discretised.
@@ -199,6 +204,14 @@ impl Discrete {
             Some(Status::Related { coeff, other }) => Some((*coeff, *other)),
             _ => None,
         }
+    }
+
+    /// Whether unknown `u` is substituted by 0 on subinterval `k`.
+    pub fn is_zero(&self, u: usize, k: usize) -> bool {
+        matches!(
+            self.status.get(u).and_then(|s| s.get(k)),
+            Some(Status::Zero)
+        )
     }
 
     /// The coefficients of unknown `u` on its basis `bases[u]`.
@@ -529,9 +542,13 @@ impl SplitProblem {
             }
             for (k, st) in status[r.unknown].iter_mut().enumerate() {
                 if holds(&r.domain, mid(k)) {
-                    *st = Status::Related {
-                        coeff,
-                        other: r.other,
+                    *st = if coeff == 0.0 {
+                        Status::Zero
+                    } else {
+                        Status::Related {
+                            coeff,
+                            other: r.other,
+                        }
                     };
                 }
             }
@@ -1047,6 +1064,7 @@ impl SplitProblem {
             .unwrap_or(0);
         let mut v = match d.status[u].get(k) {
             Some(Status::Related { coeff, other }) => coeff * free(*other).unwrap_or(0.0),
+            Some(Status::Zero) => 0.0,
             _ => free(u).unwrap_or(0.0),
         };
         for (ti, t) in d.terms.iter().enumerate().filter(|(_, t)| t.unknown == u) {
@@ -1058,47 +1076,65 @@ impl SplitProblem {
         v
     }
 
-    /// A relation `u = a·w on I` is the equality case of the bound
-    /// `|u| ≤ |a·w|` (a Coulomb law: the shear reaches `μ p` where the
-    /// surfaces slip and stays below it where they stick). The worst
-    /// violation of that bound where `u` is free, at the nodes of its
-    /// basis: `(x, |u(x)|, |a·w(x)|)` with `|u| > 1.01·|a·w| + 1e-9·max|a·w|`,
-    /// or `None`. A root of the conditions whose solution violates it is
-    /// not the physical free boundary (e.g. the roots of the Hertz
-    /// condition that accumulate at `c → 1`).
-    pub fn relation_violation(&self, d: &Discrete) -> Option<(String, f64, f64, f64)> {
-        let mut worst: Option<(String, f64, f64, f64)> = None;
-        for r in &self.contact.relations {
-            let coeff = r.coeff.eval(&d.vars, 0.0);
-            let Some(b) = &d.bases[r.unknown] else {
-                continue;
+    /// The worst violation of a declared inequality `f(L) ≤ R` (`f` the
+    /// identity or `abs`) at the nodes of the bases of the unknowns of its
+    /// smaller side that lie on its interval: `(text, x, f(L), R)` with
+    /// `f(L) > R + 0.01·|R| + 1e-9·max(|L|, |R|)` (the maximum over those
+    /// nodes), or `None`. A root of the conditions whose solution violates
+    /// one is rejected; without scalars an answer that violates one is
+    /// refused.
+    pub fn inequality_violation(&self, d: &Discrete) -> Option<(String, f64, f64, f64)> {
+        let mut worst: Option<(String, f64, f64, f64, f64)> = None;
+        for q in &self.contact.inequalities {
+            let (lo, hi) = q.domain.eval(&d.vars);
+            let side = |terms: &[super::split_input::SplitLinTerm], x: f64| -> f64 {
+                terms
+                    .iter()
+                    .map(|t| {
+                        let k = t.coeff.eval(&d.vars, x);
+                        match t.unknown {
+                            Some(u) => k * self.value(d, u, x),
+                            None => k,
+                        }
+                    })
+                    .sum()
             };
-            let Some(bw) = &d.bases[r.other] else {
-                continue;
+            // The nodes of the bounded side's unknowns (of the other side's
+            // when the bounded side is a constant).
+            let on = |terms: &[super::split_input::SplitLinTerm]| -> Vec<usize> {
+                terms.iter().filter_map(|t| t.unknown).collect()
             };
-            let xs = b.nodes();
+            let mut us = on(&q.lhs);
+            if us.is_empty() {
+                us = on(&q.rhs);
+            }
+            let mut xs: Vec<f64> = us
+                .iter()
+                .filter_map(|&u| d.bases[u].as_ref())
+                .flat_map(|b| b.nodes())
+                .filter(|&x| x >= lo && x <= hi)
+                .collect();
+            xs.sort_by(f64::total_cmp);
+            xs.dedup();
             let vals: Vec<(f64, f64, f64)> = xs
                 .iter()
                 .map(|&x| {
-                    let u = self.value(d, r.unknown, x).abs();
-                    let (lo, hi) = bw.support();
-                    let w = if x >= lo && x <= hi {
-                        (coeff * bw.eval(self.coefs(d, r.other), x)).abs()
-                    } else {
-                        0.0
-                    };
-                    (x, u, w)
+                    let l = side(&q.lhs, x);
+                    (x, if q.abs { l.abs() } else { l }, side(&q.rhs, x))
                 })
                 .collect();
-            let scale = vals.iter().map(|v| v.2).fold(0.0, f64::max);
-            for (x, u, w) in vals {
-                let excess = u - (1.01 * w + 1e-9 * scale);
-                if excess > 0.0 && worst.as_ref().is_none_or(|o| u - o.3 > excess) {
-                    worst = Some((self.sys.unknowns[r.unknown].clone(), x, u, w));
+            let scale = vals
+                .iter()
+                .map(|v| v.1.abs().max(v.2.abs()))
+                .fold(0.0, f64::max);
+            for (x, l, r) in vals {
+                let excess = l - (r + 0.01 * r.abs() + 1e-9 * scale);
+                if excess > 0.0 && worst.as_ref().is_none_or(|o| excess > o.4) {
+                    worst = Some((q.text.clone(), x, l, r, excess));
                 }
             }
         }
-        worst
+        worst.map(|(t, x, l, r, _)| (t, x, l, r))
     }
 
     /// Number of coefficients of `d`.

@@ -443,6 +443,9 @@ impl<'a> Fields<'a> {
     fn value_with(&self, u: usize, x: f64, side: Approach, terms: bool) -> Result<f64, PlanError> {
         self.unknown(u)?;
         let k = self.piece(x, side)?;
+        if self.d.is_zero(u, k) {
+            return Ok(0.0);
+        }
         if let Some((factor, other)) = self.d.relation(u, k) {
             if self.d.relation(other, k).is_some() {
                 return Err(invalid(format!(

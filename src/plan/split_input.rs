@@ -87,6 +87,31 @@ pub struct SplitRelation {
     pub domain: SplitInterval,
 }
 
+/// One term of a side of a [`SplitInequality`]: `coeff · unknown`, or
+/// the constant `coeff` when `unknown` is `None`.
+#[derive(Clone)]
+pub struct SplitLinTerm {
+    /// The factor.
+    pub coeff: RealFn,
+    /// The unknown it multiplies, if any.
+    pub unknown: Option<usize>,
+}
+
+/// `Σ lhs ≤ Σ rhs` (`|Σ lhs| ≤ Σ rhs` when `abs`) on `domain`.
+#[derive(Clone)]
+pub struct SplitInequality {
+    /// Whether the smaller side is in `abs(…)`.
+    pub abs: bool,
+    /// The smaller side.
+    pub lhs: Vec<SplitLinTerm>,
+    /// The larger side.
+    pub rhs: Vec<SplitLinTerm>,
+    /// Where it must hold.
+    pub domain: SplitInterval,
+    /// Its source text, for messages.
+    pub text: String,
+}
+
 /// What is declared singular about an unknown at a point.
 #[derive(Clone)]
 pub enum SplitKind {
@@ -141,6 +166,8 @@ pub struct SplitContact {
     pub equation_domains: Vec<Option<SplitInterval>>,
     /// Relations.
     pub relations: Vec<SplitRelation>,
+    /// Inequalities the solution must keep.
+    pub inequalities: Vec<SplitInequality>,
     /// Declared singular behaviour.
     pub singulars: Vec<SplitSingular>,
     /// Names of the coefficients of exact singular terms.
@@ -174,6 +201,27 @@ impl SplitContact {
                     coeff: RealFn::from_expr(&r.coeff),
                     other: r.other,
                     domain: SplitInterval::from_interval(&r.domain),
+                })
+                .collect(),
+            inequalities: c
+                .inequalities
+                .iter()
+                .map(|q| {
+                    let side = |t: &[crate::system::contact::LinTerm]| {
+                        t.iter()
+                            .map(|t| SplitLinTerm {
+                                coeff: RealFn::from_expr(&t.coeff),
+                                unknown: t.unknown,
+                            })
+                            .collect()
+                    };
+                    SplitInequality {
+                        abs: q.abs,
+                        lhs: side(&q.lhs),
+                        rhs: side(&q.rhs),
+                        domain: SplitInterval::from_interval(&q.domain),
+                        text: q.text.clone(),
+                    }
                 })
                 .collect(),
             singulars: c

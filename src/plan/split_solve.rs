@@ -6,9 +6,10 @@
 //! that end). On the first level: a scan (a grid in `s`, then toward the
 //! lower end, then toward the upper end, with doubling steps, to at most
 //! `1e-10` of an end), Brent's method on each bracket from the lowest,
-//! and the first root that is not a pole and whose solution keeps the
-//! bound of every relation (`|q| ≤ |μ p|` where `q` is free: the Coulomb
-//! stick inequality) is taken. On every further level: a secant iteration
+//! and the first root that is not a pole and whose solution keeps every
+//! declared inequality (`inequality abs(q) <= mu*p on [0, c)`: the
+//! Coulomb stick inequality) is taken; without a scalar, an answer that
+//! breaks one is refused. On every further level: a secant iteration
 //! warm-started from the previous root with a Newton step on the previous
 //! slope, never shorter than a few ulps of the scalar (near `c → 1` the
 //! root moves by less than one between levels; the step then brackets it
@@ -283,6 +284,21 @@ pub fn solve_split_within(
             }
         }
         if converged || k == opts.max_level {
+            // Without a scalar no root was chosen by the inequalities, so
+            // the answer itself is checked. (With one, the root chosen on
+            // the first level kept them; later levels are not checked
+            // again: near a stick radius below 1e-9 the condition's
+            // rounding noise breaks the Coulomb inequality beside `c` by
+            // a few tens of per cent while the answer is right, see
+            // `S_LIMIT_LO`.)
+            if ns == 0
+                && let Some((text, x, l, r)) = problem.inequality_violation(&d)
+            {
+                return Err(PlanError::Invalid(format!(
+                    "the solution violates the inequality `{text}`: at x = {x:.6e} the smaller side is {l:.6e}, above {r:.6e} by {:.3e}",
+                    l - r
+                )));
+            }
             let est = est.unwrap_or(f64::INFINITY);
             let report = report(
                 &problem,
@@ -656,7 +672,7 @@ pub(super) const S_LIMIT: f64 = 27.7;
 /// to `s = -28`, `c ≈ 6.9e-13`) the roots are found where the asymptotics
 /// put them, but the same noise, magnified about 100-fold in the stick
 /// shear at the nodes nearest `c` (about `1e-14/c` to `5e-14/c`), breaks
-/// the Coulomb bound there: they would be refused anyway.
+/// the Coulomb inequality there: they would be refused anyway.
 pub(super) const S_LIMIT_LO: f64 = 23.0;
 
 /// The largest tolerance of the root in `s`: the distance of a root to the
@@ -801,12 +817,13 @@ pub(super) fn find_scalar(
                         &fresh
                     }
                 };
-                if let Some((u, x, v, w)) = problem.relation_violation(d) {
+                if let Some((text, x, l, r)) = problem.inequality_violation(d) {
                     rejected.push((
                         map.x(s),
                         format!(
-                            "the root {:.6e} violates the bound of its relation: |{u}| = {v:.3e} > {w:.3e} at x = {x:.4e}, where {u} is free",
-                            map.x(s)
+                            "the root {:.6e} violates the inequality `{text}`: at x = {x:.4e} the smaller side is {l:.3e}, above {r:.3e} by {:.3e}",
+                            map.x(s),
+                            l - r
                         ),
                     ));
                     continue;
@@ -873,7 +890,7 @@ pub(super) fn find_scalar(
 /// end. The caller takes the lowest admissible root: a contact condition
 /// has its physical root lowest (the largest slip zone) and may have
 /// further roots accumulating at the upper end (`c → 1`), which violate
-/// the Coulomb bound. No sign change at all is refused, naming the end
+/// the Coulomb inequality. No sign change at all is refused, naming the end
 /// toward which the condition kept its sign.
 #[allow(clippy::type_complexity)]
 fn scan<F>(f: &mut F, map: &ScalarMap) -> Result<Scan, PlanError>

@@ -168,7 +168,8 @@ impl Interval {
     }
 }
 
-/// `unknown = coeff · other` on `domain`.
+/// `unknown = coeff · other` on `domain` (`unknown = 0` is stored with
+/// `coeff` 0 and `other` the unknown itself).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Relation {
     /// Index of the unknown that is substituted.
@@ -179,6 +180,70 @@ pub struct Relation {
     pub other: usize,
     /// Where it holds.
     pub domain: Interval,
+}
+
+/// One term of a side of an [`Inequality`]: `coeff · unknown`, or the
+/// constant `coeff` when `unknown` is `None`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LinTerm {
+    /// The factor (a real expression of the slots).
+    pub coeff: RExpr,
+    /// The unknown it multiplies, if any.
+    pub unknown: Option<usize>,
+}
+
+/// `lhs <= rhs` (or `|lhs| <= rhs` when `abs`) on `domain`: a bound the
+/// solution must keep (e.g. Coulomb's `|q| ≤ μp` where the surfaces
+/// stick). `>=` is stored with its sides swapped.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Inequality {
+    /// Whether the smaller side is `abs(lhs)`.
+    pub abs: bool,
+    /// The smaller side.
+    pub lhs: Vec<LinTerm>,
+    /// The larger side.
+    pub rhs: Vec<LinTerm>,
+    /// Where it must hold.
+    pub domain: Interval,
+    /// Its source text (for messages).
+    pub text: String,
+}
+
+impl Inequality {
+    /// Source text `abs(q) <= (mu)*p` without its interval, with unknown
+    /// names `unknowns` and slot names `slots`.
+    pub fn to_text(&self, unknowns: &[String], slots: &[String]) -> String {
+        let side = |terms: &[LinTerm]| -> String {
+            if terms.is_empty() {
+                return "0".into();
+            }
+            terms
+                .iter()
+                .map(|t| {
+                    let k = t.coeff.to_text(slots);
+                    match t.unknown {
+                        Some(u) => {
+                            let name = unknowns.get(u).map_or("?", String::as_str);
+                            match k.as_str() {
+                                "1" => name.to_string(),
+                                "-1" => format!("-{name}"),
+                                _ => format!("({k})*{name}"),
+                            }
+                        }
+                        None => format!("({k})"),
+                    }
+                })
+                .collect::<Vec<_>>()
+                .join(" + ")
+        };
+        let small = side(&self.lhs);
+        let small = if self.abs {
+            format!("abs({small})")
+        } else {
+            small
+        };
+        format!("{small} <= {}", side(&self.rhs))
+    }
 }
 
 /// An unknown scalar.
@@ -253,6 +318,8 @@ pub struct Contact {
     pub equation_domains: Vec<Option<Interval>>,
     /// Relations.
     pub relations: Vec<Relation>,
+    /// Inequalities the solution must keep.
+    pub inequalities: Vec<Inequality>,
     /// Declared singular behaviour.
     pub singulars: Vec<Singular>,
     /// Names of the coefficients of exact singular terms.
@@ -270,6 +337,7 @@ impl Contact {
     pub fn is_split(&self) -> bool {
         !(self.scalars.is_empty()
             && self.relations.is_empty()
+            && self.inequalities.is_empty()
             && self.singulars.is_empty()
             && self.conditions.is_empty()
             && self.equation_domains.iter().all(Option::is_none))

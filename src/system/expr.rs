@@ -43,10 +43,14 @@ pub enum Func {
     Cosh,
     /// Hyperbolic tangent.
     Tanh,
+    /// Euler's Gamma function Γ (poles at 0, −1, −2, …).
+    Gamma,
+    /// The error function erf.
+    Erf,
 }
 
 /// Every function, in the order the documentation lists them.
-pub const FUNCS: [Func; 14] = [
+pub const FUNCS: [Func; 16] = [
     Func::Sqrt,
     Func::Ln,
     Func::Abs,
@@ -61,7 +65,24 @@ pub const FUNCS: [Func; 14] = [
     Func::Sinh,
     Func::Cosh,
     Func::Tanh,
+    Func::Gamma,
+    Func::Erf,
 ];
+
+/// Euler's Gamma function (libm's `tgamma`; NaN at the poles 0, −1, −2, …,
+/// as for any value outside a function's domain). Generated solvers call it
+/// too, so that they compute what `solve` computes.
+pub fn gamma(v: f64) -> f64 {
+    if v <= 0.0 && v.fract() == 0.0 {
+        return f64::NAN;
+    }
+    libm::tgamma(v)
+}
+
+/// The error function (libm's `erf`; generated solvers call it too).
+pub fn erf(v: f64) -> f64 {
+    libm::erf(v)
+}
 
 /// arccot with values in (0, π): `acot(0) = π/2`, `acot(v) = atan(1/v)`
 /// for `v > 0` and `π + atan(1/v)` for `v < 0` (the branch that is
@@ -77,8 +98,8 @@ pub fn acot(v: f64) -> f64 {
 }
 
 impl Func {
-    /// The function's name in source (and, but for `acot`, the name of
-    /// the `f64` method that computes it).
+    /// The function's name in source (and, but for `acot`, `gamma` and
+    /// `erf`, the name of the `f64` method that computes it).
     pub fn name(self) -> &'static str {
         match self {
             Func::Sqrt => "sqrt",
@@ -95,12 +116,20 @@ impl Func {
             Func::Sinh => "sinh",
             Func::Cosh => "cosh",
             Func::Tanh => "tanh",
+            Func::Gamma => "gamma",
+            Func::Erf => "erf",
         }
     }
 
     /// The function with this source name.
     pub fn from_name(name: &str) -> Option<Func> {
         FUNCS.into_iter().find(|f| f.name() == name)
+    }
+
+    /// Whether `f64` has a method of this name that computes it (else
+    /// generated code calls the function of this module of that name).
+    pub fn is_f64_method(self) -> bool {
+        !matches!(self, Func::Acot | Func::Gamma | Func::Erf)
     }
 
     /// Its value at `v` (IEEE semantics: NaN outside the domain).
@@ -120,6 +149,8 @@ impl Func {
             Func::Sinh => v.sinh(),
             Func::Cosh => v.cosh(),
             Func::Tanh => v.tanh(),
+            Func::Gamma => gamma(v),
+            Func::Erf => erf(v),
         }
     }
 }
@@ -408,7 +439,7 @@ mod tests {
     #[test]
     fn every_function_by_name_and_value() {
         use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI};
-        let cases: [(&str, f64, f64); 14] = [
+        let cases: [(&str, f64, f64); 16] = [
             ("sqrt", 0.25, 0.5),
             ("ln", 1.0, 0.0),
             ("abs", -2.0, 2.0),
@@ -423,6 +454,8 @@ mod tests {
             ("sinh", 0.0, 0.0),
             ("cosh", 0.0, 1.0),
             ("tanh", 0.0, 0.0),
+            ("gamma", 0.5, 1.772_453_850_905_516),
+            ("erf", 1.0, 0.842_700_792_949_714_9),
         ];
         for (name, at, want) in cases {
             let f = Func::from_name(name).expect(name);
@@ -440,5 +473,8 @@ mod tests {
         assert_eq!(acot(0.0), FRAC_PI_2);
         assert!(Func::Asin.apply(2.0).is_nan());
         assert_eq!(Func::from_name("sec"), None);
+        assert!(Func::Gamma.apply(-2.0).is_nan() && Func::Gamma.apply(0.0).is_nan());
+        assert!((Func::Gamma.apply(5.0) - 24.0).abs() < 1e-13);
+        assert!((Func::Gamma.apply(-0.5) + 2.0 * PI.sqrt()).abs() < 1e-14);
     }
 }

@@ -1,0 +1,83 @@
+//! The contact gallery `examples/contact/`: each file states a textbook
+//! contact problem through the Abel reduction of axisymmetric contact
+//! (docs/contact_problems.md) and carries its closed form in a comment.
+//! Each is solved at the default tolerance, must exit 0, and must agree
+//! with the closed form computed here to 1e-9 (and lie within its own
+//! error estimate of it, up to a few ulps).
+
+mod common;
+
+use common::cli::json;
+use std::f64::consts::PI;
+
+/// The value and estimate of `name` among the outputs or scalars.
+fn get(j: &serde_json::Value, name: &str) -> (f64, f64) {
+    let v = j["outputs"][name]
+        .as_f64()
+        .or_else(|| j["scalars"][name].as_f64())
+        .unwrap_or_else(|| panic!("no {name} in {j}"));
+    let e = j["error_estimates"][name]
+        .as_f64()
+        .unwrap_or_else(|| panic!("no estimate of {name}"));
+    (v, e)
+}
+
+/// Solves `file` at the default tolerance and checks each `(name, exact)`.
+fn check(file: &str, want: &[(&str, f64)]) {
+    let j = json(&["solve", file]);
+    assert_eq!(j["converged"], true, "{file}");
+    for &(name, exact) in want {
+        let (v, e) = get(&j, name);
+        let err = (v - exact).abs();
+        assert!(err <= 1e-9, "{file}: {name} = {v}, closed form {exact}");
+        assert!(
+            err <= e + 8.0 * f64::EPSILON * exact.abs(),
+            "{file}: {name} = {v} ± {e}, closed form {exact} (error {err:.2e})"
+        );
+    }
+}
+
+#[test]
+fn flat_punch_load_is_sneddons() {
+    // P = 4·delta (E* = 2, radius 1), delta = 1/3.
+    check("examples/contact/flat_punch.lmx", &[("P", 4.0 / 3.0)]);
+}
+
+#[test]
+fn sphere_at_given_indentation_is_hertz() {
+    // a = sqrt(delta), P = (8/3) a^3, delta = 1/2.
+    let a = 0.5f64.sqrt();
+    check(
+        "examples/contact/sphere_indentation.lmx",
+        &[("a", a), ("P", 8.0 / 3.0 * a.powi(3))],
+    );
+}
+
+#[test]
+fn cone_contact_radius_and_load_are_sneddons() {
+    // a = 2 delta/pi, P = pi a^2, delta = 1.
+    let a = 2.0 / PI;
+    check("examples/contact/cone.lmx", &[("a", a), ("P", PI * a * a)]);
+}
+
+#[test]
+fn power_law_punch_follows_its_beta_function_law() {
+    // f = r^3: K = (n + 1)/2·B(5/2, 1/2) = 3π/4, a = (delta/K)^(1/3),
+    // P = 4·a·delta·n/(n + 1) = 3a, delta = 1.
+    let a = (4.0 / (3.0 * PI)).cbrt();
+    check(
+        "examples/contact/power_law.lmx",
+        &[("a", a), ("P", 3.0 * a)],
+    );
+}
+
+#[test]
+fn cattaneo_mindlin_at_given_shift() {
+    // c = sqrt(1 - S/mu), Q = mu P (1 - c^3), P = 8/3; mu = 1/2, S = 1/4.
+    let (mu, s, p) = (0.5f64, 0.25f64, 8.0 / 3.0);
+    let c = (1.0 - s / mu).sqrt();
+    check(
+        "examples/contact/cattaneo_mindlin_shift.lmx",
+        &[("c", c), ("P", p), ("Q", mu * p * (1.0 - c.powi(3)))],
+    );
+}
