@@ -36,6 +36,10 @@ pub enum PlanError {
     /// to name the physical limit without reading the message.
     #[error("scalar root: no convergence: {}", .0.message)]
     RootAtEnd(Box<RootAtEnd>),
+    /// The answer breaks a declared inequality (where, and by how much,
+    /// in the message): a refusal of the computed result, not of the input.
+    #[error("{0}")]
+    Inequality(String),
     /// The numerics refused (singular, ill-conditioned, non-finite, ...).
     #[error("{context}: {source}")]
     Numeric {
@@ -155,7 +159,10 @@ impl PlanError {
     pub fn is_input_error(&self) -> bool {
         !matches!(
             self,
-            PlanError::Numeric { .. } | PlanError::Singular(_) | PlanError::RootAtEnd(_)
+            PlanError::Numeric { .. }
+                | PlanError::Singular(_)
+                | PlanError::RootAtEnd(_)
+                | PlanError::Inequality(_)
         )
     }
 }
