@@ -369,7 +369,11 @@ mod tests {
         // them included.
         assert_eq!(depth_bound("param a = 1+1+1 # ,;=\n +1"), 3);
         assert_eq!(depth_bound("param a = 1 # ((((((\n"), 0);
-        assert_eq!(depth_bound("unknown p on (0, 1]\n"), 1);
+        // A `,` inside brackets may separate a call's arguments (`beta(a, b)`
+        // is written out three levels deeper): it counts 3, also in an
+        // interval that opens with `(` (an over-count, which is safe).
+        assert_eq!(depth_bound("unknown p on (0, 1]\n"), 4);
+        assert_eq!(depth_bound("param b = beta(1/2, 3/2)"), 6);
         assert_eq!(depth_bound("param κ = (1)"), 1);
     }
 }

@@ -40,6 +40,10 @@ pub enum PlanError {
     /// it was solved).
     #[error("{0}")]
     OverBudget(crate::numeric::budget::OverBudget),
+    /// The answer breaks a declared inequality (where, and by how much,
+    /// in the message): a refusal of the computed result, not of the input.
+    #[error("{0}")]
+    Inequality(String),
     /// The numerics refused (singular, ill-conditioned, non-finite, ...).
     #[error("{context}: {source}")]
     Numeric {
@@ -163,6 +167,7 @@ impl PlanError {
                 | PlanError::Singular(_)
                 | PlanError::RootAtEnd(_)
                 | PlanError::OverBudget(_)
+                | PlanError::Inequality(_)
         )
     }
 }

@@ -294,7 +294,7 @@ pub fn solve_split_within(
             if ns == 0
                 && let Some((text, x, l, r)) = problem.inequality_violation(&d)
             {
-                return Err(PlanError::Invalid(format!(
+                return Err(PlanError::Inequality(format!(
                     "the solution violates the inequality `{text}`: at x = {x:.6e} the smaller side is {l:.6e}, above {r:.6e} by {:.3e}",
                     l - r
                 )));

@@ -230,6 +230,7 @@ impl Inequality {
                                 _ => format!("({k})*{name}"),
                             }
                         }
+                        None if k.chars().all(|c| c.is_ascii_digit()) => k,
                         None => format!("({k})"),
                     }
                 })

@@ -1,0 +1,96 @@
+//! The contact statements as users write them: singular weights in any
+//! equivalent spelling, `relation u = 0`, and `inequality`, which rejects
+//! roots and answers that break it and says where and by how much.
+
+mod common;
+
+use common::cli::{json, lambdamat, lmx_file};
+
+/// The flat punch `k1 p = 1/3` on [0, 1] with the edge weight spelled `w`.
+fn punch(weight: &str, extra: &str) -> String {
+    format!(
+        "unknown p on [0, 1]\noperator k1 = int(x..1) t/sqrt(t^2 - x^2) dt\n\
+         equation k1 p = 1/3 on [0, 1]\nsingular p at 1 ~ {weight}\n{extra}\
+         output P = 2*pi*int(0..1) x*p(x) dx\n"
+    )
+}
+
+fn run(src: &str) -> std::process::Output {
+    let f = lmx_file(src);
+    lambdamat()
+        .args(["solve", f.path().to_str().expect("utf-8")])
+        .output()
+        .expect("runs")
+}
+
+#[test]
+fn equivalent_weights_give_the_same_answer_bit_for_bit() {
+    let spellings = [
+        "(1 - x)^(-1/2)",
+        "(x - 1)^(-1/2)",
+        "1/sqrt(1 - x)",
+        "(-x + 1)^(-1/2)",
+        "3*(2 - 2*x)^(-1/2)",
+        "abs(x - 1)^(-1/2)",
+    ];
+    let mut values = Vec::new();
+    for w in spellings {
+        let f = lmx_file(&punch(w, ""));
+        let j = json(&["solve", f.path().to_str().expect("utf-8")]);
+        let p = j["outputs"]["P"].as_f64().expect("P");
+        assert!((p - 4.0 / 3.0).abs() < 1e-9, "{w}: P = {p}");
+        values.push(p.to_bits());
+    }
+    assert!(values.windows(2).all(|w| w[0] == w[1]), "{values:?}");
+}
+
+#[test]
+fn a_weight_at_another_point_is_an_input_error() {
+    let out = run(&punch("(1 + x)^(-1/2)", ""));
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("singular at x = -1, not at the declared point 1"),
+        "{err}"
+    );
+}
+
+#[test]
+fn a_broken_inequality_is_refused_with_where_and_how_much() {
+    // The punch pressure is positive: p <= 0 cannot hold.
+    let out = run(&punch("(1 - x)^(-1/2)", "inequality p <= 0 on [0, 1]\n"));
+    assert_eq!(out.status.code(), Some(3));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("violates the inequality `p <= 0`") && err.contains("at x = "),
+        "{err}"
+    );
+    assert!(err.contains(" by "), "{err}");
+    // The true one passes.
+    let ok = run(&punch("(1 - x)^(-1/2)", "inequality p >= 0 on [0, 1]\n"));
+    assert_eq!(
+        ok.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&ok.stderr)
+    );
+}
+
+#[test]
+fn a_relation_to_zero_is_a_substitution() {
+    // The sphere at given indentation: p = 0 beyond the contact.
+    let j = json(&["solve", "examples/contact/sphere_indentation.lmx"]);
+    let a = j["scalars"]["a"].as_f64().expect("a");
+    assert!((a - 0.5f64.sqrt()).abs() < 1e-9, "a = {a}");
+    // A nonzero constant is not a substitution.
+    let src = std::fs::read_to_string("examples/contact/sphere_indentation.lmx")
+        .expect("example")
+        .replace("relation p = 0 on [a, 2]", "relation p = 1 on [a, 2]");
+    let out = run(&src);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("must be 0 or a constant times an unknown"),
+        "{err}"
+    );
+}
