@@ -536,3 +536,43 @@ fn principal_six_by_six_whose_det_is_below_the_degree_bound() {
     let note = v["mode_note"].as_str().expect("text");
     assert!(note.contains("transforms omitted"), "{note}");
 }
+
+#[test]
+fn rectangular_and_rank_deficient_inputs_get_unit_factors_with_their_rank() {
+    // 16×19 dense of degree 2 (rank 16) and B·C with B 16×12, C 12×16
+    // (rank 12), seeded by benches/stall_families.py. Their maximal minors
+    // are coprime, so every nonzero invariant factor is 1.
+    for (file, rows, cols, rank) in [
+        ("tests/data/issue29_rect_16x19_d2.lmx", 16, 19, 16),
+        ("tests/data/issue29_rankdef_16_d1.lmx", 16, 16, 12),
+    ] {
+        let v = json(&["smith", file]);
+        assert_eq!(v["verified"], true);
+        assert!(v["U"].is_null(), "{file}");
+        let inv = strings(&v["invariant_factors"]);
+        assert_eq!(inv.len(), rank, "{file}");
+        assert!(inv.iter().all(|f| f == "1"), "{file}: {inv:?}");
+        let d = v["D"].as_array().expect("rows");
+        assert_eq!((d.len(), d[0].as_array().expect("row").len()), (rows, cols));
+        let names = check_names(&v);
+        assert!(names.iter().any(|n| n == "rank A ≥ r and d_r(A) = 1"));
+        assert_eq!(
+            names.iter().any(|n| n == "rank A ≤ r"),
+            rank < rows.min(cols)
+        );
+    }
+}
+
+#[test]
+fn sparse_input_with_two_factors_is_certified_without_elimination_of_a() {
+    // 24×24: random degree-1 diagonal plus 24 entries; PARI's matsnf gives
+    // the factors x − 1 and one of degree 22 (the diagonal shares roots).
+    let v = json(&["smith", "tests/data/issue29_sparse_24_e24.lmx"]);
+    assert_eq!(v["verified"], true);
+    let inv = strings(&v["invariant_factors"]);
+    assert_eq!(inv.len(), 24);
+    assert!(inv[..22].iter().all(|f| f == "1"), "{inv:?}");
+    assert_eq!(inv[22], "x - 1");
+    assert!(inv[23].starts_with("x^22 "), "{}", inv[23]);
+    check_names(&v);
+}

@@ -56,9 +56,6 @@ pub const ALGORITHM: &str = "det and adj by images mod word primes (CRT above a 
 /// certify their Smith form; beyond it the route declines.
 pub const MAX_BLOCK: usize = 16;
 
-/// Quotients kept for the coprimality proof of step 2.
-const QUOTIENTS_KEPT: usize = 16;
-
 fn push(cert: &mut Certificate, property: &str, ok: bool, detail: String) {
     cert.checks.push(Check {
         property: property.to_string(),
@@ -76,9 +73,11 @@ pub fn entries_coprime(b: &Matrix<QxRing>) -> bool {
 }
 
 /// The primitive integer gcd g of B's nonzero entries (as numerators) and
-/// the quotients of the first [`QUOTIENTS_KEPT`] entries by g, or `None`
-/// when an entry is not divisible by the final g (never, unless the
-/// modular gcd gave up).
+/// the quotients of all of them by g (all: the entries of one row of B can
+/// share a factor the other rows lack, as a sparse A's nearly diagonal
+/// adjugate does; the coprimality proof stops at the first quotients whose
+/// images have gcd 1), or `None` when an entry is not divisible by the
+/// final g (never, unless the modular gcd gave up).
 fn entry_gcd(b: &Matrix<QxRing>) -> Option<(Vec<BigInt>, Vec<QPoly>)> {
     let entries: Vec<&QPoly> = b.entries().iter().filter(|e| !e.is_zero()).collect();
     let mut g: Vec<BigInt> = entries.first()?.num().to_vec();
@@ -94,12 +93,10 @@ fn entry_gcd(b: &Matrix<QxRing>) -> Option<(Vec<BigInt>, Vec<QPoly>)> {
     }
     // g now divides the entries it was built from; every entry is divided
     // again here (the proof does not rely on the loop above).
-    let mut quotients = Vec::with_capacity(QUOTIENTS_KEPT);
+    let mut quotients = Vec::with_capacity(entries.len());
     for e in &entries {
         let q = int_div_exact(e.num(), &g)?;
-        if quotients.len() < QUOTIENTS_KEPT {
-            quotients.push(QPoly::from_ints(q));
-        }
+        quotients.push(QPoly::from_ints(q));
     }
     Some((g, quotients))
 }

@@ -277,9 +277,10 @@ const ELIMINATION_ALGORITHM: &str =
     "elimination: least-degree pivot, division with remainder, content removal";
 
 /// Above this estimated size of U (bits of coefficients; the estimate is
-/// pessimistic, e.g. a 24×24 of degree 1 at 1e8 prints about 19 MB) the
+/// pessimistic, e.g. a 24×24 of degree 1 at 1e8 prints about 19 MB; a 4×4
+/// of degree 200 at 2.2e8 took over 60 s to build its transforms) the
 /// one-symbol mode certifies the invariant factors without transforms.
-pub const TRANSFORM_LIMIT_BITS: u64 = 500_000_000;
+pub const TRANSFORM_LIMIT_BITS: u64 = 200_000_000;
 
 /// Diagonal inputs from this size on get the invariant factors without
 /// transforms (when the entries' products are coprime).

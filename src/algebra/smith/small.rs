@@ -205,7 +205,9 @@ fn reconstruct_h(
         if k < first_try.max(1) {
             continue;
         }
-        if k > 200 {
+        // Twice the first try: h larger than that is not of the measured
+        // kind, and the exact route takes over.
+        if k > 200.max(2 * first_try) {
             return None;
         }
         let basis =
@@ -513,7 +515,7 @@ fn lift_rows(
         if k < start {
             continue;
         }
-        if k > 200 {
+        if k > 200.max(2 * start) {
             return None;
         }
         let basis = super::detadj::Garner::new(&fps[..k]);
