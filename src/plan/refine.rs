@@ -15,7 +15,7 @@
 //! agree better on the unknowns (a heuristic: the file needs no
 //! annotation, and the choice is reported). The choice is made per
 //! unknown, from the equations and the unknowns only: the requested
-//! outputs never enter it ([`choose_weights`]).
+//! outputs never enter it (`choose_weights`).
 use serde::Serialize;
 
 use crate::numeric::budget;

@@ -1,6 +1,6 @@
-//! Invariant factors of a non-square or singular A over Q[x] (m×n, rank r)
+//! Invariant factors of a non-square or singular A over Q\[x\] (m×n, rank r)
 //! in the generic case, all r nonzero factors equal to 1, certified
-//! without transforms and without any elimination over Q[x]. This is the
+//! without transforms and without any elimination over Q\[x\]. This is the
 //! D-alone route of the size policy for inputs that are not square and
 //! nonsingular (random rectangular matrices, rank-deficient products
 //! B·C). The checks ([`certify_unit_factors`]), on `Ã = Δ·A` (Δ the rows'
@@ -22,7 +22,7 @@
 //!    `adj Ã[I, J]` exactly ([`super::detadj::det_adj`], images and CRT
 //!    beyond Hadamard's bound); for each column j ∉ J the vector k_j with
 //!    `k_j[J] = −adj·Ã[I, j]`, `k_j[j] = det`, zero elsewhere. `A·K = 0` is
-//!    checked exactly over Z[x], and K's rows outside J are `det·I` with
+//!    checked exactly over Z\[x\], and K's rows outside J are `det·I` with
 //!    `det ≠ 0` (step 2), so K has rank `n − r` and A's nullity is at least
 //!    that.
 //!
