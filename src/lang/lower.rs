@@ -625,15 +625,7 @@ fn weighted(e: &Expr, scope: &Scope) -> Result<Vec<(SExpr, usize)>, LangError> {
 }
 
 fn mentions_unknown(e: &Expr, scope: &Scope) -> bool {
-    let is_unknown = |name: &str| {
-        matches!(
-            scope.get(name),
-            Some(Entry {
-                sort: Sort::Unknown(_),
-                ..
-            })
-        )
-    };
+    let is_unknown = |name: &str| scope.is_unknown(name);
     match &e.kind {
         ExprKind::Name(id) => is_unknown(&id.name),
         ExprKind::Call(f, a) => is_unknown(&f.name) || mentions_unknown(a, scope),

@@ -185,15 +185,7 @@ pub fn lower_contact(file: &File, scope: &Scope) -> Result<Contact, LangError> {
                 value,
                 domain,
             } => {
-                let is_unknown = |n: &str| {
-                    matches!(
-                        scope.get(n),
-                        Some(Entry {
-                            sort: Sort::Unknown(_),
-                            ..
-                        })
-                    )
-                };
+                let is_unknown = |n: &str| scope.is_unknown(n);
                 let (coeff, other) = match relation_form(value, is_unknown) {
                     Some((factor, other)) => (
                         match factor {
@@ -218,15 +210,7 @@ pub fn lower_contact(file: &File, scope: &Scope) -> Result<Contact, LangError> {
                 rhs,
                 domain,
             } => {
-                let is_unknown = |n: &str| {
-                    matches!(
-                        scope.get(n),
-                        Some(Entry {
-                            sort: Sort::Unknown(_),
-                            ..
-                        })
-                    )
-                };
+                let is_unknown = |n: &str| scope.is_unknown(n);
                 let (abs, small, large) = inequality_sides(lhs, *ge, rhs);
                 let mut sides = Vec::new();
                 for side in [small, large] {

@@ -88,6 +88,17 @@ impl Scope {
         self.names.get(name).copied()
     }
 
+    /// Whether `name` is declared as an unknown function.
+    pub fn is_unknown(&self, name: &str) -> bool {
+        matches!(
+            self.get(name),
+            Some(Entry {
+                sort: Sort::Unknown(_),
+                ..
+            })
+        )
+    }
+
     /// Declares `name`; if it is already declared, returns the earlier entry
     /// and changes nothing.
     pub fn declare(

@@ -462,15 +462,7 @@ impl Validator {
     pub(super) fn relation(&mut self, unknown: &Ident, value: &Expr, domain: &Interval) {
         self.unknown_ref(unknown);
         let scope = &self.scope;
-        let is_unknown = |n: &str| {
-            matches!(
-                scope.get(n),
-                Some(Entry {
-                    sort: Sort::Unknown(_),
-                    ..
-                })
-            )
-        };
+        let is_unknown = |n: &str| scope.is_unknown(n);
         match relation_form(value, is_unknown) {
             Some((factor, other)) => {
                 if other.name == unknown.name {
@@ -501,15 +493,7 @@ impl Validator {
         let (_, small, large) = inequality_sides(lhs, ge, rhs);
         for side in [small, large] {
             let scope = &self.scope;
-            let is_unknown = |n: &str| {
-                matches!(
-                    scope.get(n),
-                    Some(Entry {
-                        sort: Sort::Unknown(_),
-                        ..
-                    })
-                )
-            };
+            let is_unknown = |n: &str| scope.is_unknown(n);
             let mut terms = Vec::new();
             if linear_side(side, &is_unknown, false, &mut terms).is_none() {
                 self.err(wrong(

@@ -40,7 +40,13 @@ impl Certificate {
     pub fn failures(&self) -> impl Iterator<Item = &Check> {
         self.checks.iter().filter(|c| !c.ok)
     }
-    fn push(&mut self, property: impl Into<String>, ok: bool, detail: impl Into<String>) {
+    /// Records one checked property.
+    pub(crate) fn push(
+        &mut self,
+        property: impl Into<String>,
+        ok: bool,
+        detail: impl Into<String>,
+    ) {
         self.checks.push(Check {
             property: property.into(),
             ok,

@@ -41,7 +41,7 @@
 //! must not print or choose modes.
 
 use super::SmithDecomposition;
-use super::certify::{Certificate, Check, coprime_mod_p, push_product_check};
+use super::certify::{Certificate, coprime_mod_p, push_product_check};
 use crate::algebra::matrix::Matrix;
 use crate::algebra::modgcd::{int_div_exact, qx_gcd};
 use crate::algebra::modular::{self, Fp};
@@ -55,14 +55,6 @@ pub const ALGORITHM: &str = "det and adj by images mod word primes (CRT above a 
 /// Trailing blocks up to this size are eliminated (with transforms) to
 /// certify their Smith form; beyond it the route declines.
 pub const MAX_BLOCK: usize = 16;
-
-fn push(cert: &mut Certificate, property: &str, ok: bool, detail: String) {
-    cert.checks.push(Check {
-        property: property.to_string(),
-        ok,
-        detail,
-    });
-}
 
 /// Whether B's nonzero entries are shown coprime modulo a prime (the
 /// test [`super::certify::certify_last_factor`] makes): when not, that
@@ -218,8 +210,7 @@ pub fn certify_factors(
         .and_then(|g| r.div_exact(c, g))
         .map(|q| r.normalize(&q));
     let ok2 = proof.is_some() && f_last.is_some();
-    push(
-        &mut cert,
+    cert.push(
         "f_n = c/gcd(B)",
         ok2,
         match (&g, proof) {
@@ -236,8 +227,7 @@ pub fn certify_factors(
     };
     // 3. deg det A.
     let dd = det_degree(a, b, c);
-    push(
-        &mut cert,
+    cert.push(
         "deg det A = D",
         dd.is_some(),
         match dd {
@@ -254,8 +244,7 @@ pub fn certify_factors(
     if g.degree() == Some(0) {
         // One non-trivial factor: f_n has the whole degree or the claim fails.
         let ok = f_last.degree() == Some(big_d);
-        push(
-            &mut cert,
+        cert.push(
             "invariant factors 1, …, 1, f_n",
             ok,
             format!(
@@ -273,8 +262,7 @@ pub fn certify_factors(
     // 4. H from the local Hermite basis modulo the repeated part of c.
     let block = local_block(a, c, &g);
     let Some((first, h, t, perm)) = block else {
-        push(
-            &mut cert,
+        cert.push(
             "Hermite basis modulo the repeated part of c",
             false,
             format!(
@@ -288,8 +276,7 @@ pub fn certify_factors(
     let st = SmithDecomposition::new(&t);
     let tcert = st.certify(&t);
     let t_ok = tcert.verified() && st.d.diagonal().iter().all(|e| !e.is_zero());
-    push(
-        &mut cert,
+    cert.push(
         "Smith form of the trailing block T",
         t_ok,
         if t_ok {
@@ -312,8 +299,7 @@ pub fn certify_factors(
         a.clone()
     };
     let contained = contained_in(&ap, first, &h, &st);
-    push(
-        &mut cert,
+    cert.push(
         "L(A) ⊆ L(H)",
         contained,
         if contained {
@@ -339,8 +325,7 @@ pub fn certify_factors(
     let t_prev = if k >= 2 { dt[k - 2].clone() } else { r.one() };
     let chain = r.div_exact(&f_last, &t_prev).is_some();
     let ok = total == big_d && chain;
-    push(
-        &mut cert,
+    cert.push(
         "invariant factors 1, …, 1, t_(n−k+1), …, t_(n−1), c/g",
         ok,
         format!(

@@ -21,7 +21,7 @@
 //! returns `None` and the caller takes the adjugate route. This module
 //! must not print or choose modes.
 
-use super::certify::{Certificate, Check};
+use super::certify::Certificate;
 use crate::algebra::matrix::Matrix;
 use crate::algebra::modular::{self, Fp, crt, symmetric};
 use crate::algebra::qx::{QPoly, QxRing};
@@ -148,14 +148,6 @@ pub(super) fn reduce_all(f: Fp, m: &[Vec<Vec<BigInt>>]) -> Vec<Vec<Vec<u64>>> {
         .collect()
 }
 
-fn push(cert: &mut Certificate, property: &str, ok: bool, detail: String) {
-    cert.checks.push(Check {
-        property: property.to_string(),
-        ok,
-        detail,
-    });
-}
-
 /// The certificate of the module documentation and f_n = det A/lc, or
 /// `None` (not square, too small, constant, singular, or d_(n−1) not shown
 /// to be 1).
@@ -218,16 +210,14 @@ pub fn certify_generic(a: &Matrix<QxRing>) -> Option<(Certificate, QPoly)> {
     let det_img: Vec<u64> = modular::trim(det.num().iter().map(|c| fc.reduce(c)).collect());
     let recheck = dc == det_img;
     let mut cert = Certificate { checks: Vec::new() };
-    push(
-        &mut cert,
+    cert.push(
         "c = det Ã (Ã = Δ·A, Δ the rows' denominators)",
         recheck,
         format!(
             "det Ã from its values at 0, …, {big_n} modulo {used} word primes, lifted by CRT beyond Hadamard's bound 2^{need} on its coefficients; re-checked modulo p = {pc} at the same points"
         ),
     );
-    push(
-        &mut cert,
+    cert.push(
         "d_(n−1)(A) = 1",
         true,
         format!(
@@ -237,8 +227,7 @@ pub fn certify_generic(a: &Matrix<QxRing>) -> Option<(Certificate, QPoly)> {
             n - 2
         ),
     );
-    push(
-        &mut cert,
+    cert.push(
         "invariant factors 1, …, 1, f",
         recheck,
         "d_(n−1) = 1 gives f_1 = … = f_(n−1) = 1, and f_n = d_n/d_(n−1) = det A up to its leading coefficient".to_string(),

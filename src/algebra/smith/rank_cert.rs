@@ -31,7 +31,7 @@
 //! `None` and the caller takes another route. This module must not print
 //! or choose modes.
 
-use super::certify::{Certificate, Check, mul_cleared};
+use super::certify::{Certificate, mul_cleared};
 use super::minors_cert::{bound, integer_rows, minor_mod, reduce_all};
 use crate::algebra::matrix::Matrix;
 use crate::algebra::modular::{self, Fp};
@@ -74,14 +74,6 @@ fn pivots(f: Fp, mut v: Vec<u64>, m: usize, n: usize) -> (Vec<usize>, Vec<usize>
     // Rows sorted, columns kept in the pairing (the minor is the same up to sign).
     let rows = order.iter().map(|&k| ri[k]).collect();
     (rows, cj)
-}
-
-fn push(cert: &mut Certificate, property: &str, ok: bool, detail: String) {
-    cert.checks.push(Check {
-        property: property.to_string(),
-        ok,
-        detail,
-    });
 }
 
 /// The certificate of the module documentation and the rank r, or `None`
@@ -150,8 +142,7 @@ pub fn certify_unit_factors(a: &Matrix<QxRing>) -> Option<(Certificate, usize)> 
             .collect::<Vec<_>>()
             .join(",")
     };
-    push(
-        &mut cert,
+    cert.push(
         "rank A ≥ r and d_r(A) = 1",
         true,
         format!(
@@ -189,8 +180,7 @@ pub fn certify_unit_factors(a: &Matrix<QxRing>) -> Option<(Certificate, usize)> 
         }
         let prod = mul_cleared(a, &k).or_else(|| a.mul(&k))?;
         let zero = prod.entries().iter().all(|e| e.is_zero());
-        push(
-            &mut cert,
+        cert.push(
             "rank A ≤ r",
             zero,
             format!(
@@ -204,8 +194,7 @@ pub fn certify_unit_factors(a: &Matrix<QxRing>) -> Option<(Certificate, usize)> 
             return None;
         }
     }
-    push(
-        &mut cert,
+    cert.push(
         "invariant factors",
         true,
         format!("rank {r} and d_r = 1: f_1 = … = f_{r} = 1, the other diagonal entries of D zero"),
