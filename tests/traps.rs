@@ -2,7 +2,8 @@
 //! Every file in `tests/data/traps/` states what is true of it in comment
 //! lines: `# exact: NAME = VALUE` (a value the run must bound) or
 //! `# refuse: TEXT` (the run must refuse, exit 2 or 3, with `TEXT` in its
-//! message), and optionally `# args: …` (extra arguments of `solve`).
+//! message), and optionally `# args: …` (extra arguments of `solve`) and
+//! `# unique: false` (the answer is one of several and must say so).
 //! Each run is held to the one contract: exit 0 ⇒ every stated value lies
 //! within its printed estimate; exit 4 ⇒ the same (a marked answer that
 //! did not reach its tolerance still bounds its error); otherwise a
@@ -23,6 +24,9 @@ struct Trap {
     exact: Vec<(String, f64)>,
     refuse: Vec<String>,
     args: Vec<String>,
+    /// `# unique: false`: the answer must say it is one of several
+    /// (JSON `"unique": false` and a warning containing "unique").
+    not_unique: bool,
 }
 
 fn read_trap(path: &Path) -> Trap {
@@ -31,6 +35,7 @@ fn read_trap(path: &Path) -> Trap {
         exact: vec![],
         refuse: vec![],
         args: vec![],
+        not_unique: false,
     };
     for line in text.lines() {
         if let Some(rest) = line.strip_prefix("# exact:") {
@@ -41,6 +46,8 @@ fn read_trap(path: &Path) -> Trap {
             ));
         } else if let Some(rest) = line.strip_prefix("# refuse:") {
             t.refuse.push(rest.trim().to_string());
+        } else if line.trim() == "# unique: false" {
+            t.not_unique = true;
         } else if let Some(rest) = line.strip_prefix("# args:") {
             t.args.extend(rest.split_whitespace().map(String::from));
         }
@@ -92,6 +99,15 @@ fn check(what: &str, trap: &Trap, code: i32, stdout: &str, stderr: &str) {
             let j: Value = serde_json::from_str(stdout)
                 .unwrap_or_else(|e| panic!("{what}: not JSON ({e})\n{stdout}"));
             assert_eq!(j["converged"].as_bool(), Some(code == 0), "{what}");
+            assert_eq!(j["unique"].as_bool(), Some(!trap.not_unique), "{what}");
+            if trap.not_unique {
+                assert!(
+                    j["warnings"].as_array().is_some_and(|w| w
+                        .iter()
+                        .any(|w| w.as_str().is_some_and(|w| w.contains("not unique")))),
+                    "{what}: no warning says the answer is not unique\n{stdout}"
+                );
+            }
             if code == 0 {
                 for key in ["outputs", "scalars", "coefficients", "error_estimates"] {
                     for (name, v) in j[key].as_object().into_iter().flatten() {

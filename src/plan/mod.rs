@@ -22,7 +22,9 @@
 //! * [`split_weights`]: its automatic end weights (per unknown, from the
 //!   equations and unknowns only);
 //! * [`split_fields`]: the unknowns and equation residuals of a solved
-//!   split-domain problem at any point.
+//!   split-domain problem at any point;
+//! * [`uniqueness`]: equations with more than one solution, recognised
+//!   from their operators.
 
 pub mod compile;
 pub mod compiled;
@@ -39,6 +41,7 @@ pub mod split_fields;
 pub mod split_input;
 pub mod split_solve;
 pub mod split_weights;
+pub mod uniqueness;
 
 pub use compiled::CompiledSystem;
 pub use error::PlanError;

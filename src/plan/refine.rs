@@ -165,6 +165,10 @@ pub struct SolveReport {
     pub commutator_defects: Vec<Defect>,
     /// Warnings (large defects, no convergence, model).
     pub warnings: Vec<String>,
+    /// Set when the equation has more than one solution and the answer is
+    /// the one the chosen weight selects: the warning saying so
+    /// (`uniqueness.rs`).
+    pub uniqueness: Option<String>,
     /// The pivots `ordered` executed on the final level, as (equation
     /// numbered from 1, unknown): the derivation's unless a warning says
     /// otherwise (empty for the other methods).
@@ -613,6 +617,7 @@ pub fn solve_derived(
             opts.tol
         )));
     }
+    let choice = super::uniqueness::check(sys)?;
     let s = setup(sys, derivation)?;
     let max_level = opts.max_level.max(2);
     let budget = opts.max_memory.unwrap_or_else(budget::default_budget);
@@ -655,6 +660,9 @@ pub fn solve_derived(
         r.warnings.push(format!(
             "stopped at level {level}, the last within the memory budget: {e}"
         ));
+    }
+    if let super::uniqueness::Uniqueness::Chosen(w) = choice {
+        r.uniqueness = Some(w);
     }
     Ok(r)
 }
@@ -822,6 +830,7 @@ fn report(
         cond: last.sol.cond,
         commutator_defects: defects,
         warnings,
+        uniqueness: None,
         pivots: last
             .sol
             .pivots

@@ -102,6 +102,10 @@ pub struct SplitReport {
     /// Why the ladder stopped before the tolerance was reached, when it
     /// was the memory budget.
     pub stopped: Option<String>,
+    /// Set when the equation has more than one solution and the answer is
+    /// the one the solver's weight selects: the warning saying so
+    /// (`uniqueness.rs`).
+    pub uniqueness: Option<String>,
 }
 
 pub(super) struct Level {
@@ -179,6 +183,20 @@ pub fn solve_split_input_fields(
 /// bytes (`None`: the default of [`crate::numeric::budget`]): a level over
 /// it is not built, and the last level that fitted is reported, marked.
 pub fn solve_split_within(
+    input: SplitInput,
+    opts: &SplitOptions,
+    max_memory: Option<u64>,
+) -> Result<SplitSolution, PlanError> {
+    let choice = super::uniqueness::check_split(&input)?;
+    let mut sol = solve_split_ladder(input, opts, max_memory)?;
+    if let super::uniqueness::Uniqueness::Chosen(w) = choice {
+        sol.report.uniqueness = Some(w);
+    }
+    Ok(sol)
+}
+
+/// [`solve_split_within`] without the uniqueness check.
+fn solve_split_ladder(
     input: SplitInput,
     opts: &SplitOptions,
     max_memory: Option<u64>,
@@ -518,6 +536,7 @@ pub(super) fn report(
         end_answer: None,
         end_check: problem.end_check().cloned(),
         stopped: None,
+        uniqueness: None,
     };
     // Side conditions that contradict the equations leave a least-squares
     // residual: no answer is more accurate than it (relative, as it is).

@@ -222,6 +222,7 @@ pub fn from_one_interval(r: &SolveReport, tol: f64) -> Report {
     let mut unknowns = BTreeMap::new();
     let mut error_estimates = BTreeMap::new();
     let mut warnings = r.warnings.clone();
+    warnings.extend(r.uniqueness.clone());
     for u in &r.unknowns {
         error_estimates.insert(u.name.clone(), u.error_estimate);
         unknowns.insert(
@@ -248,6 +249,7 @@ pub fn from_one_interval(r: &SolveReport, tol: f64) -> Report {
         }
     }
     let mut extra = Map::new();
+    extra.insert("unique".into(), json!(r.uniqueness.is_none()));
     extra.insert("model".into(), json!(r.model));
     extra.insert("target".into(), json!(r.target));
     extra.insert("dim".into(), json!(r.dim));
@@ -302,8 +304,9 @@ pub fn from_split(sol: &SplitSolution, grid: usize) -> Result<Report, PlanError>
     for (name, f) in &unknowns {
         error_estimates.insert(name.clone(), f.error_estimate);
     }
-    let warnings = r.stopped.iter().cloned().collect();
+    let warnings = r.stopped.iter().chain(&r.uniqueness).cloned().collect();
     let mut extra = Map::new();
+    extra.insert("unique".into(), json!(r.uniqueness.is_none()));
     extra.insert("notes".into(), json!(text::split_notes(r)));
     extra.insert("dim".into(), json!(r.dim));
     extra.insert("cond".into(), finite(r.cond));
