@@ -40,6 +40,22 @@ pub enum NumericError {
         /// The limit that was exceeded.
         limit: f64,
     },
+    /// The discretised system has an isolated singular value at the level
+    /// of rounding or discretisation error: the operator has (or nearly
+    /// has) a null space, so the problem has more than one solution or
+    /// none. `smallest` and `next` are the two smallest singular values
+    /// relative to the largest (columns scaled to unit max-norm).
+    #[error(
+        "the problem has more than one solution (or none): the discretised system of size {size} has a null direction (its smallest singular value is {smallest:.1e} of the largest, the next {next:.1e}), so the operator is not invertible; a side condition (`condition …`) can select one solution"
+    )]
+    NullSpace {
+        /// Size of the system.
+        size: usize,
+        /// The smallest singular value over the largest.
+        smallest: f64,
+        /// The second smallest over the largest.
+        next: f64,
+    },
     /// An iteration (root finding, refinement) did not converge.
     #[error("no convergence: {0}")]
     NoConvergence(String),

@@ -14,6 +14,41 @@ use super::lu::DenseLu;
 /// double-precision solve cannot promise even a few correct digits.
 pub const DEFAULT_MAX_COND: f64 = 1e13;
 
+/// Above this (1-norm) condition estimate a square system's singular
+/// values are computed to look for a null direction ([`null_direction`]).
+const NULL_PROBE: f64 = 1e8;
+/// Largest system whose singular values the probe computes (the SVD costs
+/// a few LU factorisations; beyond this the conditioning limit alone acts).
+const NULL_PROBE_SIZE: usize = 1500;
+/// A smallest singular value below this fraction of the largest ...
+const NULL_SMALLEST: f64 = 1e-10;
+/// ... and below this fraction of the next one, ...
+const NULL_GAP: f64 = 1e-3;
+/// ... while the next one is above this fraction of the largest (the rest
+/// of the spectrum is resolved), is a null direction.
+const NULL_NEXT: f64 = 1e-6;
+
+/// The two smallest singular values over the largest when the smallest is
+/// isolated (below [`NULL_GAP`] of the next), tiny (below
+/// [`NULL_SMALLEST`] of the largest) and the next is not (above
+/// [`NULL_NEXT`]): a discrete null space. A well-posed problem's
+/// ill-conditioning grows with the discretisation but spreads over many
+/// singular values (a Hilbert matrix's fall steadily to rounding, where
+/// the smallest ones are noise); a null direction is one value apart.
+pub fn null_direction(singular_values: &[f64]) -> Option<(f64, f64)> {
+    let mut sv: Vec<f64> = singular_values.to_vec();
+    sv.sort_by(|a, b| b.total_cmp(a));
+    let (&largest, rest) = sv.split_first()?;
+    let [.., next, smallest] = rest else {
+        return None;
+    };
+    (largest > 0.0
+        && *smallest < NULL_SMALLEST * largest
+        && *smallest < NULL_GAP * next
+        && *next > NULL_NEXT * largest)
+        .then(|| (smallest / largest, next / largest))
+}
+
 /// An LU factorisation of `A·D` (`D` scales columns to unit max-norm) that
 /// passed the singularity and conditioning checks.
 pub struct CheckedLu {
@@ -59,6 +94,19 @@ impl CheckedLu {
         };
         let inv_norm = me.inverse_norm1_estimate();
         let cond = norm1 * inv_norm;
+        if !(cond <= NULL_PROBE) && n <= NULL_PROBE_SIZE {
+            let mut s = a.clone();
+            for (j, sc) in me.scale.iter().enumerate() {
+                s.column_mut(j).scale_mut(*sc);
+            }
+            if let Some((smallest, next)) = null_direction(s.singular_values().as_slice()) {
+                return Err(NumericError::NullSpace {
+                    size: n,
+                    smallest,
+                    next,
+                });
+            }
+        }
         if !cond.is_finite() || cond > max_cond {
             return Err(NumericError::IllConditioned {
                 size: n,
@@ -205,6 +253,13 @@ pub fn least_squares(
     let svd = scaled.svd(true, true);
     let sv = &svd.singular_values;
     let (smax, smin) = (sv.max(), sv.min());
+    if let Some((smallest, next)) = null_direction(sv.as_slice()) {
+        return Err(NumericError::NullSpace {
+            size: n,
+            smallest,
+            next,
+        });
+    }
     if smin <= 0.0 {
         return Err(NumericError::Singular(n));
     }
@@ -267,6 +322,31 @@ mod tests {
             CheckedLu::new(&h, 1e10),
             Err(NumericError::IllConditioned { .. })
         ));
+    }
+
+    #[test]
+    fn an_isolated_tiny_singular_value_is_a_null_direction() {
+        // f - 3x∫_0^1 t f dt annihilates f = x: on the monomials 1, x, x²
+        // (collocation at 0, 1/2, 1) the system is singular up to rounding.
+        let k = |i: usize, x: f64| {
+            let moment = 1.0 / (i as f64 + 2.0);
+            x.powi(i as i32) - 3.0 * x * moment
+        };
+        let pts = [0.0, 0.5, 1.0];
+        let a = DMatrix::from_fn(3, 3, |r, c| k(c, pts[r]));
+        assert!(matches!(
+            CheckedLu::new(&a, 1e13),
+            Err(NumericError::NullSpace { .. }) | Err(NumericError::Singular(_))
+        ));
+        // A spread of small singular values (Hilbert) is ill-conditioning,
+        // not a null direction.
+        for n in [8, 12, 14] {
+            let h = DMatrix::from_fn(n, n, |i, j| 1.0 / (i + j + 1) as f64);
+            assert_eq!(null_direction(h.singular_values().as_slice()), None);
+        }
+        assert!(null_direction(&[1.0, 0.5, 1e-13]).is_some());
+        assert_eq!(null_direction(&[1.0, 1e-9, 1e-13]), None);
+        assert_eq!(null_direction(&[1.0, 0.5, 1e-9]), None);
     }
 
     #[test]
