@@ -94,7 +94,7 @@ impl CheckedLu {
         };
         let inv_norm = me.inverse_norm1_estimate();
         let cond = norm1 * inv_norm;
-        if !(cond <= NULL_PROBE) && n <= NULL_PROBE_SIZE {
+        if (cond.is_nan() || cond > NULL_PROBE) && n <= NULL_PROBE_SIZE {
             let mut s = a.clone();
             for (j, sc) in me.scale.iter().enumerate() {
                 s.column_mut(j).scale_mut(*sc);
