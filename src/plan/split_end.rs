@@ -56,7 +56,17 @@
 //!   second on (the first has no previous one to give the allowance).
 //!   Each output's error is its level estimate plus its variation bound,
 //!   the scalar's is `δ/2`, and the answer is converged only if every one
-//!   is within the tolerance. If an output has no bound (its allowance
+//!   (singular coefficients included) is within the tolerance.
+//! - **Conditions.** A coefficient that a condition fixes (`condition
+//!   B = 0`) is the condition's value at the root, exactly: it is reported
+//!   so, with estimate 0, once its values at `δ, 2δ, 4δ` show it can reach
+//!   that value inside the gap (it moves toward it and does not level off
+//!   short of it under the power law above; a logarithmic law, equal steps
+//!   per halving, reaches any value). Otherwise the condition is violated
+//!   at the end and the refusal is kept. Its value at `δ` would be the
+//!   answer of the wrong problem, and its variation over the gap is
+//!   unbounded when the condition is logarithmic in the distance (the
+//!   Hertz stick radius), so it was `± inf`. If an output has no bound (its allowance
 //!   known) on two levels in turn whose level estimates are within the
 //!   tolerance, or on the last level, the refusal is kept.
 //!
@@ -611,10 +621,42 @@ pub fn answer_at_end(
             {
                 e.error += v.bound;
             }
+            // A coefficient a condition fixes is known at the root: it is
+            // the condition's value there. Its values at δ, 2δ, 4δ must be
+            // able to reach it inside the gap, else the condition is
+            // violated at the end and there is no end answer.
+            let at_root = problem.contact.values(&[r.end_value + sign * half]);
+            for k in &problem.contact.conditions {
+                let target = k.value.eval(&at_root, 0.0);
+                let v = &vars[n_out + k.coefficient];
+                if let Err(why) = reaches(v, target) {
+                    return refuse(
+                        &r,
+                        format!(
+                            "the condition {} = {target} is not met at the end: {} is {:.12e}, {:.12e}, {:.12e} at {:.1e}, {:.1e}, {:.1e} from the end (each within {:.1e}), and {why}",
+                            v.name,
+                            v.name,
+                            v.values[0],
+                            v.values[1],
+                            v.values[2],
+                            delta,
+                            2.0 * delta,
+                            4.0 * delta,
+                            v.allowance
+                        ),
+                    );
+                }
+                let e = &mut rep.coefficients[k.coefficient];
+                e.value = target;
+                e.error = 0.0;
+            }
+            // Every number printed counts: a coefficient without a bound
+            // (infinite estimate) leaves the answer unconverged.
             let est = rep
                 .scalars
                 .iter()
                 .chain(&rep.outputs)
+                .chain(&rep.coefficients)
                 .fold(0.0f64, |m, e| m.max(e.error));
             rep.error_estimate = est;
             rep.converged = est <= opts.tol;
@@ -648,9 +690,72 @@ pub fn answer_at_end(
     Err(PlanError::Invalid("empty level ladder".into()))
 }
 
+/// Whether a coefficient with values `v.values` at `δ, 2δ, 4δ` from the
+/// end can reach `target` between the end and `δ`: it is there already
+/// (within twice its allowance), or it moves toward it as the end
+/// approaches and the remaining change over `(0, δ)` can be as large as
+/// the distance left. Under the power law `K·x^p` of the outputs'
+/// variations the remaining change is `|d₁|ρ/(1 − ρ)` with
+/// `ρ = 2^(−p) = |d₁|/|d₂|`, taken at its largest within the allowances;
+/// a law that does not fall (`ρ ≥ 1`: logarithmic, as a condition whose
+/// root lies far beyond the end) reaches any value. Otherwise the reason.
+fn reaches(v: &EndVariation, target: f64) -> Result<(), String> {
+    let [b1, b2, b4] = v.values;
+    let eta = 2.0 * v.allowance;
+    let gap = b1 - target;
+    if gap.abs() <= eta {
+        return Ok(());
+    }
+    if !eta.is_finite() {
+        return Err("its allowance is not known".into());
+    }
+    let (d1, d2) = (b1 - b2, b2 - b4);
+    if d1.abs() <= eta || d1.signum() == gap.signum() {
+        return Err(format!(
+            "it does not move toward {target} as the end approaches"
+        ));
+    }
+    let rho = (d1.abs() + eta) / (d2.abs() - eta).max(f64::MIN_POSITIVE);
+    if rho >= 1.0 {
+        return Ok(());
+    }
+    let remaining = (d1.abs() + eta) * rho / (1.0 - rho);
+    if remaining >= gap.abs() {
+        Ok(())
+    } else {
+        Err(format!(
+            "it levels off: the change left toward the end is at most {remaining:.1e}, less than the distance {:.1e} to {target}",
+            gap.abs()
+        ))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_condition_is_reached_by_a_log_law_but_not_by_one_that_levels_off() {
+        let var = |values: [f64; 3]| EndVariation {
+            name: "B".into(),
+            values,
+            exponent: None,
+            allowance: 1e-12,
+            bound: f64::INFINITY,
+        };
+        // B = 0.01·ln(x/1e-30): equal steps per halving, root far beyond.
+        let log = |x: f64| 0.01 * (x / 1e-30).ln();
+        assert!(reaches(&var([log(1e-10), log(2e-10), log(4e-10)]), 0.0).is_ok());
+        // Levelled off (issue 27: -0.13806, -0.13804, -0.13804).
+        assert!(reaches(&var([-0.13806, -0.13804, -0.13803]), 0.0).is_err());
+        // Moving away from the target.
+        assert!(reaches(&var([0.2, 0.1, 0.0]), 0.0).is_err());
+        // A square-root law crossing 0 inside the gap.
+        let sq = |x: f64| 0.1 * (x / 1e-10).sqrt() - 0.02;
+        assert!(reaches(&var([sq(1e-10), sq(2e-10), sq(4e-10)]), 0.0).is_ok());
+        // At the target already.
+        assert!(reaches(&var([1e-13, 0.3, 0.5]), 0.0).is_ok());
+    }
 
     #[test]
     fn a_fall_toward_the_end_counts_only_beyond_the_rounding_noise() {
