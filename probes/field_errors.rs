@@ -38,7 +38,16 @@ fn run() -> Result<(), String> {
     let ref_tol = num(4, 1e-13);
     let ref_level = num(5, 10.0) as usize;
     let t0 = std::time::Instant::now();
-    let s = solve(nu, given, &SplitOptions { tol, max_level: 7 }).map_err(|e| e.to_string())?;
+    let s = solve(
+        nu,
+        given,
+        &SplitOptions {
+            tol,
+            max_level: 7,
+            ..SplitOptions::default()
+        },
+    )
+    .map_err(|e| e.to_string())?;
     let t_solve = t0.elapsed().as_secs_f64();
     let r = solve(
         nu,
@@ -46,6 +55,7 @@ fn run() -> Result<(), String> {
         &SplitOptions {
             tol: ref_tol,
             max_level: ref_level,
+            ..SplitOptions::default()
         },
     );
     let r = r.map_err(|e| format!("reference: {e}"))?;

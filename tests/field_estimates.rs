@@ -31,6 +31,7 @@ fn check(nu: f64, given: Given) -> HertzResult {
     let fine = SplitOptions {
         tol: 1e-13,
         max_level: 11,
+        ..SplitOptions::default()
     };
     let r = solve(nu, given, &fine).expect("reference solves");
     let xs = profile_points(s.c, 200);

@@ -9,7 +9,16 @@ use lambdamat::plan::split::{SplitLevel, SplitProblem};
 use lambdamat::plan::{PlanError, SplitOptions};
 
 fn front(nu: f64, given: Given, tol: f64, max_level: usize) -> HertzResult {
-    solve(nu, given, &SplitOptions { tol, max_level }).expect("the front solves")
+    solve(
+        nu,
+        given,
+        &SplitOptions {
+            tol,
+            max_level,
+            ..SplitOptions::default()
+        },
+    )
+    .expect("the front solves")
 }
 
 #[test]
@@ -34,6 +43,7 @@ fn given_c_is_stable_to_1e_10() {
             &SplitOptions {
                 tol: 1e-12,
                 max_level: 8,
+                ..SplitOptions::default()
             },
         )
         .unwrap();

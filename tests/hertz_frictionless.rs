@@ -10,6 +10,7 @@ fn zero_friction_is_the_punch() {
     let opts = SplitOptions {
         tol: 1e-12,
         max_level: 7,
+        ..SplitOptions::default()
     };
     // ν < 0 (auxetic solids, -1 < ν ≤ 1/2) is accepted like ν ≥ 0.
     for nu in [-0.5, 0.0, 0.25, 0.5] {

@@ -8,7 +8,16 @@ use lambdamat::hertz::front::{Given, HertzResult, solve};
 use lambdamat::plan::SplitOptions;
 
 fn front(nu: f64, given: Given, tol: f64) -> HertzResult {
-    solve(nu, given, &SplitOptions { tol, max_level: 7 }).expect("the front solves")
+    solve(
+        nu,
+        given,
+        &SplitOptions {
+            tol,
+            max_level: 7,
+            ..SplitOptions::default()
+        },
+    )
+    .expect("the front solves")
 }
 
 /// Every entry agrees to 1e-3 in μ except (ν = 0.25, c = 0.5), where we

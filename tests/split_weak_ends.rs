@@ -157,6 +157,7 @@ fn the_split_solver_chooses_end_weights_from_the_equations_only() {
         let opts = SplitOptions {
             tol: 1e-10,
             max_level: 8,
+            ..SplitOptions::default()
         };
         let sol = solve_split_input_fields(SplitInput::from_program(&prog).expect("input"), &opts)
             .expect("solves");

@@ -101,6 +101,7 @@ fn options(tol: f64) -> SplitOptions {
     SplitOptions {
         tol,
         max_level: DEFAULT_MAX_LEVEL,
+        ..SplitOptions::default()
     }
 }
 

@@ -32,29 +32,7 @@ use super::methods::{
 };
 use crate::algebra::derivation::Derivation;
 
-/// The smallest error estimate reported: below it, distances between
-/// levels are rounding noise and say nothing about the error (measured:
-/// true errors of 1.2e-14 beside distances of 1.1e-14).
-pub const ROUNDING_FLOOR: f64 = 1e-13;
-
-/// Rounding errors of a solve grow with the condition number `κ` of its
-/// matrix: the estimate is at least `ROUNDING_GROWTH · ε · κ` (relative to
-/// the solution's scale, like the distances between levels). Measured on
-/// the kernel-class cases (`tests/kernel_classes.rs`): true errors between
-/// 1·εκ and 7·εκ (the airfoil with a side condition: 4.7e-12 at
-/// κ = 4.0e3, where levels 5 and 6 differed by only 1.7e-12), so the
-/// factor leaves a margin of at least 4.
-pub const ROUNDING_GROWTH: f64 = 32.0;
-
-/// The rounding floor of an answer whose matrices have condition `cond`.
-pub fn rounding_floor(cond: f64) -> f64 {
-    let grown = ROUNDING_GROWTH * f64::EPSILON * cond;
-    if grown.is_finite() {
-        grown.max(ROUNDING_FLOOR)
-    } else {
-        ROUNDING_FLOOR
-    }
-}
+pub use crate::numeric::solve::{ROUNDING_FLOOR, ROUNDING_GROWTH, rounding_floor};
 
 /// Longest panel, in peak widths, for systems with peaked kernels.
 const PEAK_PANELS: f64 = 1.0;

@@ -532,6 +532,9 @@ pub fn answer_at_end(
             slope: 0.0,
             outputs,
             coefficients,
+            cond: d.cond,
+            unknowns: Vec::new(),
+            sizes: Vec::new(),
         };
         // Each output's own level estimate.
         let noise: Vec<f64> = (0..n_out)
@@ -682,6 +685,7 @@ pub fn answer_at_end(
                 discrete: d,
                 previous,
                 level: k,
+                shifted: None,
             });
         }
         levels.push(this);

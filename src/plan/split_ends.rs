@@ -245,6 +245,9 @@ pub(super) fn check(
             slope: this.slope,
             outputs: this.outputs.clone(),
             coefficients: this.coefficients.clone(),
+            cond: this.cond,
+            unknowns: Vec::new(),
+            sizes: Vec::new(),
         }];
         let (x, slope, d) = find_scalar(problem, lvl, &warm, opts.tol)?;
         (vec![x], slope, d)
@@ -255,6 +258,9 @@ pub(super) fn check(
         slope,
         outputs: outputs_of(problem, &d)?,
         coefficients: coefficients_of(problem, &d),
+        cond: d.cond,
+        unknowns: Vec::new(),
+        sizes: Vec::new(),
     };
     Ok(Verdict::Climb {
         level: Box::new(level),

@@ -156,22 +156,149 @@ pub struct LevelFields<'a> {
     pub scalar_error: f64,
     /// The last level's subinterval ends that depend on an unknown scalar.
     moving: Vec<f64>,
+    /// The last level discretised at the scalars moved by their estimate
+    /// ([`SplitSolution::shifted`]), when there is one: what the scalars'
+    /// uncertainty makes uncertain at a point is its change there
+    /// ([`LevelFields::windowed`]).
+    shifted: Option<Fields<'a>>,
+    /// Per unknown, what turns its level difference into its estimate
+    /// (the ladder's, [`crate::plan::split_solve::UnknownEstimate`]):
+    /// `(factor, floor)`, the estimate at a point being
+    /// `max(factor·difference, floor)`. `(1, 0)` (the plain difference)
+    /// for an unknown the ladder did not estimate.
+    bounds: Vec<(f64, f64)>,
+}
+
+/// One unknown sampled on the output grid ([`LevelFields::on_grid`]).
+#[derive(Debug, Clone, Default)]
+pub struct GridField {
+    /// The points kept.
+    pub x: Vec<f64>,
+    /// The unknown there (last level).
+    pub values: Vec<f64>,
+    /// The estimate there ([`LevelFields::value`]).
+    pub errors: Vec<f64>,
+    /// The unknown's size: its largest `|u/weight|` on the points kept
+    /// (the weight of its basis; 1 where it has none).
+    pub size: f64,
 }
 
 impl<'a> LevelFields<'a> {
-    /// The fields of `s`'s last two levels.
+    /// The fields of `s`'s last two levels, each unknown's estimate
+    /// bounded as the ladder bounded it (`s.report.unknowns`).
     pub fn new(s: &'a SplitSolution) -> Result<LevelFields<'a>, PlanError> {
-        let last = Fields::new(&s.problem, &s.discrete)?;
+        let mut lf = LevelFields::pair(
+            &s.problem,
+            &s.discrete,
+            s.previous.as_ref(),
+            s.report.scalars.iter().map(|e| e.error).fold(0.0, f64::max),
+        )?;
+        lf.shifted = s
+            .shifted
+            .as_ref()
+            .map(|d| Fields::new(&s.problem, d))
+            .transpose()?;
+        for e in &s.report.unknowns {
+            if let Some(u) = lf.last.unknown_index(&e.name) {
+                lf.bounds[u] = (e.factor, e.floor);
+            }
+        }
+        Ok(lf)
+    }
+
+    /// The fields of discretisation `last` beside `previous` (the level
+    /// before), with the scalars' estimate `scalar_error`; each unknown's
+    /// estimate is the plain level difference (factor 1, no floor).
+    pub fn pair(
+        problem: &'a SplitProblem,
+        last: &'a Discrete,
+        previous: Option<&'a Discrete>,
+        scalar_error: f64,
+    ) -> Result<LevelFields<'a>, PlanError> {
+        let last = Fields::new(problem, last)?;
         Ok(LevelFields {
             moving: last.scalar_ends(),
             last,
-            previous: s
-                .previous
-                .as_ref()
-                .map(|d| Fields::new(&s.problem, d))
-                .transpose()?,
-            scalar_error: s.report.scalars.iter().map(|e| e.error).fold(0.0, f64::max),
+            previous: previous.map(|d| Fields::new(problem, d)).transpose()?,
+            scalar_error,
+            bounds: vec![(1.0, 0.0); problem.sys.unknowns.len()],
+            shifted: None,
         })
+    }
+
+    /// These fields with `shifted`, the last level discretised at the
+    /// scalars moved by their estimate, as the measure of what the
+    /// scalars' uncertainty makes uncertain ([`LevelFields::windowed`]).
+    pub fn with_shifted(
+        mut self,
+        problem: &'a SplitProblem,
+        shifted: Option<&'a Discrete>,
+    ) -> Result<LevelFields<'a>, PlanError> {
+        self.shifted = shifted.map(|d| Fields::new(problem, d)).transpose()?;
+        Ok(self)
+    }
+
+    /// Unknown `u` on `n` equally spaced points of its interval (its
+    /// declared one, else the whole; the last point approached from below,
+    /// the others from above) with the estimates of [`LevelFields::value`]:
+    /// the output grid of every report. Left out are the points where the
+    /// value is not finite, the points at a singular term's own point (of
+    /// any unknown: the fields there are one-sided limits of singular
+    /// behaviours, which the level differences do not estimate) and those
+    /// within the scalars' estimate of an end that moves with them (their
+    /// side is not known); and, when `skip_unestimated`, points whose
+    /// estimate is not finite.
+    pub fn on_grid(
+        &self,
+        u: usize,
+        n: usize,
+        skip_unestimated: bool,
+    ) -> Result<GridField, PlanError> {
+        let p = self.last.problem;
+        let d = self.last.d;
+        let (lo, hi) = (d.breaks[0], d.breaks[d.breaks.len() - 1]);
+        let (a, b) = match p.contact.unknown_domains.get(u).and_then(Option::as_ref) {
+            Some(dom) => {
+                let (a, b) = dom.eval(&d.vars);
+                (a.max(lo), b.min(hi))
+            }
+            None => (lo, hi),
+        };
+        let n = n.max(2);
+        let mut avoid: Vec<(f64, f64)> = d
+            .terms
+            .iter()
+            .map(|t| (t.at, 4.0 * f64::EPSILON * t.at.abs().max(1.0)))
+            .collect();
+        if self.scalar_error.is_finite() {
+            avoid.extend(self.moving.iter().map(|&e| (e, self.scalar_error)));
+        }
+        let mut g = GridField::default();
+        for k in 0..n {
+            let t = a + (b - a) * k as f64 / (n - 1) as f64;
+            if avoid.iter().any(|&(e, r)| (t - e).abs() <= r) {
+                continue;
+            }
+            let side = if k + 1 == n {
+                Approach::Below
+            } else {
+                Approach::Above
+            };
+            let v = self.value(u, t, side)?;
+            if !v.value.is_finite() || (skip_unestimated && !v.error.is_finite()) {
+                continue;
+            }
+            let w = self.last.weight_at(u, t);
+            if w.is_finite() && w != 0.0 {
+                g.size = g
+                    .size
+                    .max(self.last.regular_value(u, t, side)?.abs() / w.abs());
+            }
+            g.x.push(t);
+            g.values.push(v.value);
+            g.errors.push(v.error);
+        }
+        Ok(g)
     }
 
     /// The end of the subinterval of `x` (from `side`) nearest to `x` that
@@ -269,7 +396,11 @@ impl<'a> LevelFields<'a> {
             let last = if i == 0 { value } else { q(&self.last, y, s)? };
             error = error.max(finite_or_inf((q(prev, y, s)? - last).abs()));
         }
-        if let Some(end) = self.moving_end(x, side) {
+        if let Some(sh) = &self.shifted {
+            // Measured: the change at x when the scalars move by their
+            // estimate (a point within it of a moving end changes side).
+            error += finite_or_inf((q(sh, x, side)? - value).abs());
+        } else if let Some(end) = self.moving_end(x, side) {
             // The field next to the end, on x's side (not at it: a
             // singular term may be unbounded there).
             let near = end.0 + 1e-3 * (x - end.0);
@@ -283,8 +414,16 @@ impl<'a> LevelFields<'a> {
 
     /// Unknown `u` at `x` from `side`, with its estimate (the largest level
     /// difference over the window around `x`).
+    /// The estimate is bounded as the ladder bounded the unknown's: at
+    /// least its rounding floor, the difference times its safety factor
+    /// ([`crate::plan::split_solve::UnknownEstimate`]).
     pub fn value(&self, u: usize, x: f64, side: Approach) -> Result<Valued, PlanError> {
-        self.windowed(x, side, |f, y, s| f.value(u, y, s))
+        let v = self.windowed(x, side, |f, y, s| f.value(u, y, s))?;
+        let (factor, floor) = self.bounds.get(u).copied().unwrap_or((1.0, 0.0));
+        Ok(Valued {
+            value: v.value,
+            error: finite_or_inf(factor * v.error).max(floor),
+        })
     }
 }
 
@@ -396,6 +535,14 @@ impl<'a> Fields<'a> {
             term_asms,
             mid,
         })
+    }
+
+    /// The weight of unknown `u`'s basis at `x` (1 where it has none).
+    pub fn weight_at(&self, u: usize, x: f64) -> f64 {
+        match self.d.bases.get(u).and_then(Option::as_ref) {
+            Some(b) => b.weight_at(x),
+            None => 1.0,
+        }
     }
 
     /// Index of the unknown called `name`.

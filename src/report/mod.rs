@@ -20,8 +20,9 @@
 //! and relative tolerance `tol` above (SciPy's `atol = rtol = tol`). On a
 //! file on one interval these are the outputs and the unknowns on the grid
 //! (an unknown's size is its largest `|u/weight|`); on a split-domain file
-//! the scalars and outputs (its unknowns are reported with their pointwise
-//! estimates but do not drive the ladder).
+//! the scalars, outputs and singular coefficients (its unknowns are
+//! reported with pointwise estimates bounded as the ladder's are, but do
+//! not drive it yet).
 //!
 //! * [`text`]: the text report;
 //! * [`svg`]: the plot of the unknowns.
@@ -35,7 +36,7 @@ use std::collections::BTreeMap;
 use serde::Serialize;
 use serde_json::{Map, Value, json};
 
-use crate::plan::split_fields::{Approach, LevelFields};
+use crate::plan::split_fields::LevelFields;
 use crate::plan::{
     CompiledSystem, Method, PlanError, SolveOptions, SolveReport, SplitInput, SplitOptions,
     SplitSolution, solve_system,
@@ -196,6 +197,8 @@ pub fn solve_split_solution(
     let opts = SplitOptions {
         tol: s.tol,
         max_level: s.max_level,
+        grid: s.grid,
+        ..SplitOptions::default()
     };
     let sol = crate::plan::split_solve::solve_split_within(input, &opts, s.max_memory)?;
     let r = from_split(&sol, s.grid)?;
@@ -334,48 +337,16 @@ pub fn from_split(sol: &SplitSolution, grid: usize) -> Result<Report, PlanError>
 /// estimate is not finite (a singular term's own point) are left out.
 fn split_fields(sol: &SplitSolution, grid: usize) -> Result<BTreeMap<String, Field>, PlanError> {
     let lf = LevelFields::new(sol)?;
-    let p = &sol.problem;
-    let d = &sol.discrete;
-    let (lo, hi) = (d.breaks[0], d.breaks[d.breaks.len() - 1]);
-    let n = grid.max(2);
     let mut out = BTreeMap::new();
-    for (u, name) in p.sys.unknowns.iter().enumerate() {
-        let (a, b) = match p.contact.unknown_domains.get(u).and_then(Option::as_ref) {
-            Some(dom) => {
-                let (a, b) = dom.eval(&d.vars);
-                (a.max(lo), b.min(hi))
-            }
-            None => (lo, hi),
-        };
-        let (mut x, mut values) = (Vec::new(), Vec::new());
-        let mut error_estimate = 0.0f64;
-        for k in 0..n {
-            let t = a + (b - a) * k as f64 / (n - 1) as f64;
-            let side = if k + 1 == n {
-                Approach::Below
-            } else {
-                Approach::Above
-            };
-            let v = lf.value(u, t, side)?;
-            if !v.value.is_finite() {
-                continue;
-            }
-            if !v.error.is_finite() && sol.report.converged {
-                // A point a converged solve cannot estimate (a singular
-                // term's own point, where the levels' sides differ).
-                continue;
-            }
-            x.push(t);
-            values.push(v.value);
-            error_estimate = error_estimate.max(v.error);
-        }
+    for (u, name) in sol.problem.sys.unknowns.iter().enumerate() {
+        let g = lf.on_grid(u, grid, sol.report.converged)?;
         out.insert(
             name.clone(),
             Field {
-                x,
-                values,
+                error_estimate: g.errors.iter().fold(0.0, |m: f64, &e| m.max(e)),
+                x: g.x,
+                values: g.values,
                 weight: split_weight(sol, u),
-                error_estimate,
             },
         );
     }
