@@ -257,6 +257,12 @@ fn solve_split_ladder(
     max_memory: Option<u64>,
 ) -> Result<SplitSolution, PlanError> {
     check_tolerance(opts)?;
+    if opts.method != Method::Coupled {
+        return Err(PlanError::Invalid(format!(
+            "--method {}: the split-domain solver runs the full collocation system (--method coupled) only so far",
+            opts.method
+        )));
+    }
     let mut problem = SplitProblem::from_input(input)?;
     if let Some(b) = max_memory {
         problem.budget = b;
