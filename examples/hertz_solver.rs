@@ -253,6 +253,7 @@ pub fn input() -> Result<SplitInput, PlanError> {
                 hi_closed: false,
             }),
         ],
+        rhs: Vec::new(),
         relations: vec![SplitRelation {
             unknown: 1,
             coeff: RealFn::new(const_1801_10000),

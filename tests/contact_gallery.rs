@@ -81,3 +81,26 @@ fn cattaneo_mindlin_at_given_shift() {
         &[("c", c), ("P", p), ("Q", mu * p * (1.0 - c.powi(3)))],
     );
 }
+
+#[test]
+fn sphere_at_given_load_is_hertz() {
+    // Scalars a and delta, fixed by B = 0 and the load P0 = 1:
+    // a^3 = 3 P0 R/(4 E*) = 3/8, delta = a^2 (R = 1, E* = 2).
+    let a = (3.0f64 / 8.0).cbrt();
+    check(
+        "examples/contact/sphere_load.lmx",
+        &[("a", a), ("delta", a * a), ("P", 1.0)],
+    );
+}
+
+#[test]
+fn cattaneo_mindlin_at_given_tangential_force() {
+    // Scalars c and S, fixed by B = 0 and the force Q0 = 7/6:
+    // c = (1 - Q0/(mu P))^(1/3) = 1/2, S = mu (1 - c^2) = 3/8; mu = 1/2.
+    let (mu, q0, p) = (0.5f64, 7.0 / 6.0, 8.0 / 3.0);
+    let c = (1.0 - q0 / (mu * p)).cbrt();
+    check(
+        "examples/contact/cattaneo_mindlin_force.lmx",
+        &[("c", c), ("S", mu * (1.0 - c * c)), ("P", p)],
+    );
+}

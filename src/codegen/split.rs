@@ -249,6 +249,22 @@ fn contact_lit(c: &Contact, fns: &mut Fns) -> String {
     };
     let unknown_domains = domain(&c.unknown_domains, "unknown", "Interval of unknown");
     let equation_domains = domain(&c.equation_domains, "equation", "Where equation");
+    let rhs: Vec<String> = c
+        .rhs
+        .iter()
+        .enumerate()
+        .map(|(i, e)| match e {
+            Some(e) => {
+                let f = fns.real(
+                    &format!("equation_{}_rhs", i + 1),
+                    &format!("Right side of equation {} (it uses a scalar)", i + 1),
+                    e,
+                );
+                format!("Some({f})")
+            }
+            None => "None".into(),
+        })
+        .collect();
     let relations: Vec<String> = c
         .relations
         .iter()
@@ -395,6 +411,7 @@ fn contact_lit(c: &Contact, fns: &mut Fns) -> String {
         ("reals", list(&reals)),
         ("unknown_domains", list(&unknown_domains)),
         ("equation_domains", list(&equation_domains)),
+        ("rhs", list(&rhs)),
         ("relations", list(&relations)),
         ("inequalities", list(&inequalities)),
         ("singulars", list(&singulars)),

@@ -151,10 +151,14 @@ pub fn lower(file: &File, v: &Validated) -> Result<Program, LangError> {
                     let slot = row.get_mut(j).ok_or_else(|| internal_name(u))?;
                     *slot = &*slot + &c;
                 }
-                program.equations.push(Equation {
-                    lhs: row,
-                    rhs: fexpr(rhs, scope)?,
-                });
+                // A right side with a scalar is the split solver's
+                // (`Contact::rhs`); the operator system holds 0 there.
+                let rhs = if super::lower_contact::uses_scalar(rhs, scope) {
+                    SExpr::Const(BigRational::zero())
+                } else {
+                    fexpr(rhs, scope)?
+                };
+                program.equations.push(Equation { lhs: row, rhs });
             }
             Stmt::Output { name, body } => {
                 let terms = output_terms(body, scope)?;

@@ -126,6 +126,27 @@ fn end(e: &Expr, scope: &Scope, infinite: f64) -> Result<f64, LangError> {
         .ok_or_else(|| internal(e.span, "a range end"))
 }
 
+/// Whether `e` uses an unknown scalar, directly or through a real
+/// parameter (such a right side is lowered to [`Contact::rhs`]).
+pub(crate) fn uses_scalar(e: &Expr, scope: &Scope) -> bool {
+    match &e.kind {
+        ExprKind::Name(id) => match scope.get(&id.name) {
+            Some(Entry {
+                sort: Sort::Scalar(_),
+                ..
+            }) => true,
+            Some(Entry {
+                sort: Sort::Param(i),
+                ..
+            }) => scope.is_real_param(i) && scope.real_def(i).is_none(),
+            _ => false,
+        },
+        ExprKind::Neg(a) | ExprKind::Call(_, a) => uses_scalar(a, scope),
+        ExprKind::Binary(_, a, b) => uses_scalar(a, scope) || uses_scalar(b, scope),
+        _ => false,
+    }
+}
+
 /// Builds the split-domain part of a validated file.
 pub fn lower_contact(file: &File, scope: &Scope) -> Result<Contact, LangError> {
     let slots = real_slots(scope);
@@ -176,10 +197,17 @@ pub fn lower_contact(file: &File, scope: &Scope) -> Result<Contact, LangError> {
                     }
                 }
             }
-            Stmt::Equation { domain, .. } => c.equation_domains.push(match domain {
-                Some(d) => Some(interval(d, scope, &slots)?),
-                None => None,
-            }),
+            Stmt::Equation { domain, rhs, .. } => {
+                c.equation_domains.push(match domain {
+                    Some(d) => Some(interval(d, scope, &slots)?),
+                    None => None,
+                });
+                c.rhs.push(if uses_scalar(rhs, scope) {
+                    Some(rexpr(rhs, scope, &slots)?)
+                } else {
+                    None
+                });
+            }
             Stmt::Relation {
                 unknown: u,
                 value,
@@ -312,6 +340,9 @@ pub fn lower_contact(file: &File, scope: &Scope) -> Result<Contact, LangError> {
             }
             _ => {}
         }
+    }
+    if c.rhs.iter().all(Option::is_none) {
+        c.rhs.clear();
     }
     if c.equation_domains.iter().all(Option::is_none) && !c.is_split() {
         c.equation_domains.clear();

@@ -258,8 +258,11 @@ impl Validator {
                 sort: Sort::Param(i),
                 ..
             }) => {
-                let allowed = self.scope.real_def(i).is_some()
-                    && matches!(place, Place::Rhs | Place::Weight(_) | Place::OutputConst);
+                // A real parameter that uses a scalar may stand in a
+                // right side (the split solver evaluates it per scalar).
+                let allowed = (self.scope.real_def(i).is_some()
+                    && matches!(place, Place::Rhs | Place::Weight(_) | Place::OutputConst))
+                    || place == Place::Rhs;
                 if self.scope.is_real_param(i) && !allowed {
                     self.err(
                         LangError::new(
@@ -280,6 +283,11 @@ impl Validator {
                 sort: Sort::Unknown(_),
                 ..
             }) => self.unknown_misplaced(id, place),
+            // An unknown scalar may stand in a right side.
+            Some(Entry {
+                sort: Sort::Scalar(_),
+                ..
+            }) if place == Place::Rhs => {}
             Some(en) => self.err(
                 LangError::new(
                     ErrorKind::WrongSort,

@@ -435,10 +435,16 @@ impl SplitProblem {
             ops.push(row);
             words.push(row_words);
         }
-        if contact.conditions.len() != contact.scalars.len() {
+        // With unknown scalars, side conditions fix scalars too.
+        let fixing = contact.conditions.len()
+            + if contact.scalars.is_empty() {
+                0
+            } else {
+                sys.conditions.len()
+            };
+        if fixing != contact.scalars.len() {
             return Err(invalid(format!(
-                "{} conditions for {} unknown scalars: each scalar needs one condition",
-                contact.conditions.len(),
+                "{fixing} conditions for {} unknown scalars: each scalar needs one condition (a coefficient's `condition B = …` or, with scalars, a side condition `condition 2*pi*int(0..1) x*p(x) dx = P0`)",
                 contact.scalars.len()
             )));
         }
@@ -767,9 +773,8 @@ impl SplitProblem {
             if xs.is_empty() {
                 continue;
             }
-            let f = &self.sys.equations[e].rhs;
             for (i, &x) in xs.iter().enumerate() {
-                rhs[r0 + i] = f(x);
+                rhs[r0 + i] = self.rhs_at(e, &vars, x);
             }
             for j in 0..nu {
                 let op = self.ops[e][j].as_ref();
@@ -835,7 +840,7 @@ impl SplitProblem {
                     t.at
                 ))
             })?;
-            rhs[row] = (self.sys.equations[e].rhs)(t.at);
+            rhs[row] = self.rhs_at(e, &vars, t.at);
             for j in 0..nu {
                 let op = self.ops[e][j].as_ref();
                 if op.is_none() && self.words[e][j].is_empty() {
@@ -901,7 +906,10 @@ impl SplitProblem {
         }
         // Side conditions: one functional row each, solved with the
         // collocation rows by least squares.
-        let (solution, cond, consistency) = if self.sys.conditions.is_empty() {
+        // With unknown scalars they are not rows but fix the scalars
+        // (their residuals follow the coefficient conditions').
+        let side_rows = c.scalars.is_empty();
+        let (solution, cond, consistency) = if self.sys.conditions.is_empty() || !side_rows {
             let lu = CheckedLu::new(&mat, DEFAULT_MAX_COND).map_err(num("split-domain system"))?;
             (
                 lu.solve(&rhs).map_err(num("split-domain system"))?,
@@ -948,6 +956,20 @@ impl SplitProblem {
                 Ok(solution[dim + k] - cond.value.eval(&vars, 0.0))
             })
             .collect::<Result<Vec<f64>, PlanError>>()?;
+        let mut residuals = residuals;
+        if !side_rows {
+            let layout = Layout {
+                breaks: &breaks,
+                bases: &bases,
+                status: &status,
+                terms: &terms,
+                offsets: &offsets,
+            };
+            for cond in &self.sys.conditions {
+                let (row, constant) = layout.functional(&cond.terms)?;
+                residuals.push(constant + row.dot(&solution) - cond.value);
+            }
+        }
         Ok(Discrete {
             vars,
             breaks,
@@ -1032,6 +1054,15 @@ impl SplitProblem {
     pub fn output(&self, d: &Discrete, o: usize) -> Result<f64, PlanError> {
         let (row, constant) = d.layout().functional(&self.sys.outputs[o].terms)?;
         Ok(constant + row.dot(&d.solution))
+    }
+
+    /// The right side of equation `e` at `x` for slot values `vars`: the
+    /// contact's when it uses a scalar, else the operator system's.
+    fn rhs_at(&self, e: usize, vars: &[f64], x: f64) -> f64 {
+        match self.contact.rhs.get(e).and_then(Option::as_ref) {
+            Some(f) => f.eval(vars, x),
+            None => (self.sys.equations[e].rhs)(x),
+        }
     }
 
     fn coefs<'a>(&self, d: &'a Discrete, u: usize) -> &'a [f64] {

@@ -41,6 +41,7 @@ use serde::Serialize;
 
 use super::error::PlanError;
 use super::split::{Discrete, SplitLevel, SplitProblem};
+use super::split_scalars::find_scalars;
 use super::split_solve::{Level, ScalarMap, SplitOptions, find_scalar, history, level_estimate};
 
 /// One quantity's change under the end check.
@@ -176,7 +177,7 @@ pub(super) fn check(
         2.0 * super::split_solve::root_tolerance(opts.tol)
     };
     problem.set_probe(Some((ends.clone(), PROBE_LAYERS)));
-    let probed = probe(problem, lvl, this);
+    let probed = probe(problem, lvl, this, opts.tol);
     problem.set_probe(None);
     let (scalars, outputs) = probed?;
     // Every scalar's and output's change against its own estimate.
@@ -232,7 +233,10 @@ pub(super) fn check(
     let mut graded = problem.graded_ends().to_vec();
     graded.extend(&ends);
     problem.set_graded_ends(graded);
-    let (scalars, slope, d) = if this.scalars.is_empty() || fixed {
+    let (scalars, slope, d) = if this.scalars.len() > 1 && !fixed {
+        let (x, d) = find_scalars(problem, lvl, Some(&this.scalars), opts.tol)?;
+        (x, 0.0, d)
+    } else if this.scalars.is_empty() || fixed {
         (
             this.scalars.clone(),
             this.slope,
@@ -288,9 +292,15 @@ fn probe(
     problem: &SplitProblem,
     lvl: &SplitLevel,
     this: &Level,
+    tol: f64,
 ) -> Result<(Vec<f64>, Vec<f64>), PlanError> {
     let d = problem.discretise(&this.scalars, lvl)?;
     let outputs = outputs_of(problem, &d)?;
+    // Several scalars: their joint root on the probed level.
+    if this.scalars.len() > 1 {
+        let (x, _) = find_scalars(problem, lvl, Some(&this.scalars), tol)?;
+        return Ok((x, outputs));
+    }
     let Some(&x0) = this.scalars.first() else {
         return Ok((Vec::new(), outputs));
     };

@@ -164,6 +164,9 @@ pub struct SplitContact {
     pub unknown_domains: Vec<Option<SplitInterval>>,
     /// Per equation, where it holds (everywhere when `None`).
     pub equation_domains: Vec<Option<SplitInterval>>,
+    /// Per equation, its right side when it uses an unknown scalar (then
+    /// it replaces the operator system's); empty when none does.
+    pub rhs: Vec<Option<RealFn>>,
     /// Relations.
     pub relations: Vec<SplitRelation>,
     /// Inequalities the solution must keep.
@@ -193,6 +196,11 @@ impl SplitContact {
                 .collect(),
             unknown_domains: c.unknown_domains.iter().map(interval).collect(),
             equation_domains: c.equation_domains.iter().map(interval).collect(),
+            rhs: c
+                .rhs
+                .iter()
+                .map(|e| e.as_ref().map(RealFn::from_expr))
+                .collect(),
             relations: c
                 .relations
                 .iter()

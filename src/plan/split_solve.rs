@@ -268,11 +268,6 @@ fn solve_split_ladder(
         problem.budget = b;
     }
     let ns = problem.contact.scalars.len();
-    if ns > 1 {
-        return Err(PlanError::Invalid(format!(
-            "{ns} unknown scalars: the split-domain solver handles at most one so far"
-        )));
-    }
     super::split_weights::choose(&mut problem)?;
     let mut levels: Vec<Level> = Vec::new();
     let mut previous: Option<Discrete> = None;
@@ -280,6 +275,10 @@ fn solve_split_ladder(
         let lvl = SplitLevel::level(k);
         let attempt = if ns == 0 {
             problem.discretise(&[], &lvl).map(|d| (d, vec![], 0.0))
+        } else if ns > 1 {
+            let last = levels.last().map(|l| l.scalars.as_slice());
+            super::split_scalars::find_scalars(&problem, &lvl, last, opts.tol)
+                .map(|(x, d)| (d, x, 0.0))
         } else {
             find_scalar(&problem, &lvl, &levels, opts.tol).map(|(x, slope, d)| (d, vec![x], slope))
         };

@@ -317,6 +317,10 @@ pub struct Contact {
     pub unknown_domains: Vec<Option<Interval>>,
     /// Per equation, where it holds (everywhere when `None`).
     pub equation_domains: Vec<Option<Interval>>,
+    /// Per equation, its right side when it uses an unknown scalar (a
+    /// function of the slots and `x`; the operator system holds 0 there);
+    /// empty when no right side does.
+    pub rhs: Vec<Option<RExpr>>,
     /// Relations.
     pub relations: Vec<Relation>,
     /// Inequalities the solution must keep.
