@@ -301,7 +301,7 @@ fn solve_split_ladder(
                 let est = if levels.is_empty() {
                     f64::INFINITY
                 } else {
-                    (estimate(&levels, &this) + rt).max(d.consistency)
+                    (estimate(&problem, &levels, &this) + rt).max(d.consistency)
                 };
                 let mut report = report(&problem, &d, &levels, &this, est, false, opts.tol, k, rt);
                 report.stopped = Some(format!(
@@ -348,8 +348,8 @@ fn solve_split_ladder(
             (this.unknowns, this.sizes) =
                 unknown_distances(&problem, &d, p, shifted.as_ref(), scalar_error, opts.grid)?;
         }
-        let mut est =
-            (!levels.is_empty()).then(|| (estimate(&levels, &this) + rt).max(d.consistency));
+        let mut est = (!levels.is_empty())
+            .then(|| (estimate(&problem, &levels, &this) + rt).max(d.consistency));
         let mut converged = est.is_some_and(|e| e <= opts.tol);
         // Would grading the undeclared ends move the answer?
         use super::split_ends::{APPROACH_LEVEL, Mode, Verdict, check};
@@ -626,14 +626,14 @@ fn unknown_estimates(levels: &[Level], this: &Level) -> Vec<(f64, f64, f64)> {
 }
 
 /// The estimate that decides convergence: the largest of every scalar's,
-/// output's and coefficient's [`level_estimate`], each divided by
-/// `max(1, |value|)`: converged means every such absolute estimate is
+/// output's and free coefficient's [`level_estimate`] (a coefficient a
+/// condition fixes is excluded), each divided by `max(1, |value|)`: converged means every such absolute estimate is
 /// within `tol·max(1, |value|)` (the rule of [`crate::report`]). The
 /// unknowns' estimates on the output grid ([`unknown_estimates`]) are
 /// reported but do not enter it: on the contact gallery they do not reach
 /// 1e-10 within the level cap (the flat punch's `p(0)` is off by 2.6e-3
-/// on level 6, its estimate 2.6e-3; notes of issue 25).
-fn estimate(levels: &[Level], this: &Level) -> f64 {
+/// on level 6, its estimate 2.6e-3).
+fn estimate(problem: &SplitProblem, levels: &[Level], this: &Level) -> f64 {
     let rel = |e: f64, v: f64| e / v.abs().max(1.0);
     let scalars = (0..this.scalars.len()).map(|i| {
         rel(
@@ -647,12 +647,24 @@ fn estimate(levels: &[Level], this: &Level) -> f64 {
             this.outputs[i],
         )
     });
-    let coefficients = (0..this.coefficients.len()).map(|i| {
-        rel(
-            estimate_of(levels, this, &|l| &l.coefficients, i),
-            this.coefficients[i],
-        )
-    });
+    // A coefficient a condition fixes (`condition B = 0`) is that value at
+    // the root by definition; its computed value differs from it by the
+    // root solve's residual, which the scalars' estimates already carry.
+    let fixed = |i: usize| {
+        problem
+            .contact
+            .conditions
+            .iter()
+            .any(|c| c.coefficient == i)
+    };
+    let coefficients = (0..this.coefficients.len())
+        .filter(|&i| !fixed(i))
+        .map(|i| {
+            rel(
+                estimate_of(levels, this, &|l| &l.coefficients, i),
+                this.coefficients[i],
+            )
+        });
     scalars
         .chain(outputs)
         .chain(coefficients)
