@@ -579,39 +579,73 @@ fn shifted_level(
     problem.discretise(&[moved], lvl).ok()
 }
 
-/// The safety factor on an unknown's last level difference `d` given the
-/// one before, `prev` (the one-interval track's rule): the differences
-/// falling geometrically with ratio `ρ = d/prev`, the remaining error is
-/// about `d·ρ/(1 − ρ)`, more than `d` when `ρ > 1/2`; at least 1.
-/// Infinite without a finite previous difference (one difference cannot
-/// tell a converged field from a stalled one).
-fn safety_factor(d: f64, prev: Option<f64>) -> f64 {
-    match prev {
-        Some(p) if p.is_finite() && d.is_finite() => {
-            let r = if p > 0.0 { d / p } else { f64::INFINITY };
-            if r < 1.0 {
-                (r / (1.0 - r)).max(1.0)
-            } else {
-                // Not shrinking: the last difference is all there is.
-                1.0
-            }
+/// The safety factor on an unknown's last level difference given the
+/// history of its differences `h` (oldest first, the last one `this`
+/// level's), the one-interval track's rule with a stall guard: the
+/// differences falling geometrically with ratio `ρ`, the remaining error
+/// is about `d·ρ/(1 − ρ)`. `ρ` is the larger of the last two ratios, so a
+/// ratio that is not clearly contracting is not trusted on one sighting.
+/// While at most [`UNCONFIRMED_DIFFERENCES`] differences exist the factor
+/// is at least [`UNCONFIRMED_FACTOR`]: the grid's largest difference
+/// contracts faster than the slowest point (measured: the flat punch's
+/// and `examples/mms.lmx`'s `p(0)` were off by 1.007 and 1.012 times
+/// their level difference on the third level, their grids' ratios small).
+/// Infinite without two finite differences (one difference cannot tell a
+/// converged field from a stalled one).
+fn safety_factor(h: &[f64]) -> f64 {
+    let n = h.len();
+    if n < 2 || !h[n - 1].is_finite() || !h[n - 2].is_finite() {
+        return f64::INFINITY;
+    }
+    let ratio = |a: f64, b: f64| {
+        if a == 0.0 {
+            0.0
+        } else if b > 0.0 {
+            a / b
+        } else {
+            f64::INFINITY
         }
-        _ => f64::INFINITY,
+    };
+    let mut r = ratio(h[n - 1], h[n - 2]);
+    if n >= 3 && h[n - 3].is_finite() {
+        r = r.max(ratio(h[n - 2], h[n - 3]));
+    }
+    let tail = if r < 1.0 {
+        (r / (1.0 - r)).max(1.0)
+    } else {
+        // Not shrinking: the last difference is all there is.
+        1.0
+    };
+    if n <= UNCONFIRMED_DIFFERENCES {
+        tail.max(UNCONFIRMED_FACTOR)
+    } else {
+        tail
     }
 }
+
+/// Up to this many level differences of an unknown, its safety factor is
+/// at least [`UNCONFIRMED_FACTOR`] ([`safety_factor`]).
+const UNCONFIRMED_DIFFERENCES: usize = 3;
+
+/// The smallest safety factor on an unknown's level difference while its
+/// contraction is unconfirmed ([`safety_factor`]).
+const UNCONFIRMED_FACTOR: f64 = 2.0;
 
 /// Per unknown of `this` level, `(estimate, factor, floor)` of
 /// [`UnknownEstimate`]; none when `this` carries no level differences.
 fn unknown_estimates(levels: &[Level], this: &Level) -> Vec<(f64, f64, f64)> {
-    let prev = levels.last().filter(|_| refines(levels, this));
     this.unknowns
         .iter()
         .enumerate()
         .map(|(u, &d)| {
             let floor = rounding_floor(this.cond) * this.sizes[u].max(1.0);
-            let p = prev.and_then(|l| l.unknowns.get(u).copied());
             let factor = if refines(levels, this) {
-                safety_factor(d, p)
+                let mut h: Vec<f64> = levels
+                    .iter()
+                    .filter_map(|l| l.unknowns.get(u).copied())
+                    .collect();
+                h.push(d);
+                safety_factor(&h)
             } else {
                 f64::INFINITY
             };
