@@ -30,9 +30,9 @@ const NULL_GAP: f64 = 1e-3;
 const NULL_NEXT: f64 = 1e-6;
 
 /// The two smallest singular values over the largest when the smallest is
-/// isolated (below [`NULL_GAP`] of the next), tiny (below
-/// [`NULL_SMALLEST`] of the largest) and the next is not (above
-/// [`NULL_NEXT`]): a discrete null space. A well-posed problem's
+/// isolated (below `NULL_GAP` of the next), tiny (below
+/// `NULL_SMALLEST` of the largest) and the next is not (above
+/// `NULL_NEXT`): a discrete null space. A well-posed problem's
 /// ill-conditioning grows with the discretisation but spreads over many
 /// singular values (a Hilbert matrix's fall steadily to rounding, where
 /// the smallest ones are noise); a null direction is one value apart.
