@@ -909,6 +909,13 @@ impl SplitProblem {
         // With unknown scalars they are not rows but fix the scalars
         // (their residuals follow the coefficient conditions').
         let side_rows = c.scalars.is_empty();
+        let layout = Layout {
+            breaks: &breaks,
+            bases: &bases,
+            status: &status,
+            terms: &terms,
+            offsets: &offsets,
+        };
         let (solution, cond, consistency) = if self.sys.conditions.is_empty() || !side_rows {
             let lu = CheckedLu::new(&mat, DEFAULT_MAX_COND).map_err(num("split-domain system"))?;
             (
@@ -917,13 +924,6 @@ impl SplitProblem {
                 0.0,
             )
         } else {
-            let layout = Layout {
-                breaks: &breaks,
-                bases: &bases,
-                status: &status,
-                terms: &terms,
-                offsets: &offsets,
-            };
             let nc = self.sys.conditions.len();
             let mut big = DMatrix::zeros(nrows + nc, ncols);
             big.rows_mut(0, nrows).copy_from(&mat);
@@ -958,13 +958,6 @@ impl SplitProblem {
             .collect::<Result<Vec<f64>, PlanError>>()?;
         let mut residuals = residuals;
         if !side_rows {
-            let layout = Layout {
-                breaks: &breaks,
-                bases: &bases,
-                status: &status,
-                terms: &terms,
-                offsets: &offsets,
-            };
             for cond in &self.sys.conditions {
                 let (row, constant) = layout.functional(&cond.terms)?;
                 residuals.push(constant + row.dot(&solution) - cond.value);
