@@ -4,11 +4,11 @@
 //! (`examples/hertz_split_mms.lmx`: p = x, q = 4x³ on [0, 1/2) and
 //! q = μp = x on [1/2, 1]), the flat punch (p = (2δ/π)/√(1 − x²)), the
 //! sphere indentation (p = (4/π)√(a² − x²) on [0, a), a = √δ) and the
-//! one-interval manufactured system `examples/mms.lmx` (p = 1, q = x);
-//! and a method the split solver does not run is refused.
+//! one-interval manufactured system `examples/mms.lmx` (p = 1, q = x).
+//! (`--method` on the split solver is `tests/split_methods.rs`'s.)
 use lambdamat::lang::parse_program;
 use lambdamat::plan::split_fields::LevelFields;
-use lambdamat::plan::{Method, PlanError, SplitOptions, solve_split_fields};
+use lambdamat::plan::{SplitOptions, solve_split_fields};
 use std::f64::consts::PI;
 
 const GRID: usize = 101;
@@ -123,23 +123,4 @@ fn pointwise_estimates_bound_the_one_interval_manufactured_fields() {
         _ => x,
     });
     assert!(compared >= 600, "only {compared} finite estimates compared");
-}
-
-#[test]
-fn a_method_the_split_solver_does_not_run_is_refused() {
-    let text = std::fs::read_to_string("examples/hertz_split_mms.lmx").expect("example");
-    let prog = parse_program(&text, "examples/hertz_split_mms.lmx").expect("parses");
-    for method in [Method::Ordered, Method::Commutative] {
-        let opts = SplitOptions {
-            method,
-            ..SplitOptions::default()
-        };
-        match solve_split_fields(&prog, &opts) {
-            Err(PlanError::Invalid(m)) => assert!(m.contains(method.name()), "{m}"),
-            other => panic!(
-                "{method}: expected a refusal, got {:?}",
-                other.map(|s| s.report)
-            ),
-        }
-    }
 }

@@ -287,7 +287,7 @@ pub fn solve_level(
 /// unknowns other than `target` are eliminated in order, each from its own
 /// equation if possible. Then `target` is solved and the rest
 /// back-substituted.
-fn ordered(
+pub(super) fn ordered(
     mut b: Vec<Vec<DMatrix<f64>>>,
     mut g: Vec<DVector<f64>>,
     target: usize,

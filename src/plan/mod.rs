@@ -17,6 +17,7 @@
 //! * [`split`]: one discretisation of a split-domain (contact) problem;
 //! * [`split_input`]: its input (built from a program or by generated code);
 //! * [`split_solve`]: its scalar root solve and refinement ladder;
+//! * [`split_methods`]: its `ordered` (and `commutative`) methods;
 //! * [`split_scalars`]: the joint root solve of several scalars;
 //! * [`split_ends`]: the ladder's end check (grading undeclared singular
 //!   ends when they matter);
@@ -40,6 +41,7 @@ pub mod split_end;
 pub mod split_ends;
 pub mod split_fields;
 pub mod split_input;
+pub mod split_methods;
 pub mod split_scalars;
 pub mod split_solve;
 pub mod split_weights;

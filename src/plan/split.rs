@@ -130,6 +130,9 @@ pub struct SplitProblem {
     cache: std::sync::Mutex<std::collections::HashMap<Vec<u64>, Arc<DMatrix<f64>>>>,
     /// The memory budget in bytes ([`crate::numeric::budget`]).
     pub budget: u64,
+    /// The method other than `coupled` every discretisation runs
+    /// (`split_methods.rs`); `None`: `coupled`.
+    pub(super) method: Option<super::split_methods::MethodPlan>,
 }
 
 /// A product of two or more operator symbols with its coefficient,
@@ -459,6 +462,7 @@ impl SplitProblem {
             probe: None,
             cache: Default::default(),
             budget: crate::numeric::budget::default_budget(),
+            method: None,
         })
     }
 
@@ -820,6 +824,7 @@ impl SplitProblem {
             r0 += xs.len();
         }
         // One-sided limits of the paired equations at the singular points.
+        let mut term_eq = Vec::with_capacity(terms.len());
         for (ti, t) in terms.iter().enumerate() {
             let row = r0 + ti;
             let k = if t.side < 0 {
@@ -840,6 +845,7 @@ impl SplitProblem {
                     t.at
                 ))
             })?;
+            term_eq.push((t.unknown, e));
             rhs[row] = self.rhs_at(e, &vars, t.at);
             for j in 0..nu {
                 let op = self.ops[e][j].as_ref();
@@ -916,7 +922,21 @@ impl SplitProblem {
             terms: &terms,
             offsets: &offsets,
         };
-        let (solution, cond, consistency) = if self.sys.conditions.is_empty() || !side_rows {
+        let (solution, cond, consistency) = if let Some(m) = &self.method {
+            let eq_rows = points.iter().map(Vec::len).collect();
+            m.solve(
+                self,
+                &super::split_methods::Assembled {
+                    mat: &mat,
+                    rhs: &rhs,
+                    eq_rows,
+                    terms: term_eq,
+                    offsets: &offsets,
+                    paired: &paired,
+                    breaks: &breaks,
+                },
+            )?
+        } else if self.sys.conditions.is_empty() || !side_rows {
             let lu = CheckedLu::new(&mat, DEFAULT_MAX_COND).map_err(num("split-domain system"))?;
             (
                 lu.solve(&rhs).map_err(num("split-domain system"))?,

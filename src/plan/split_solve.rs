@@ -257,13 +257,8 @@ fn solve_split_ladder(
     max_memory: Option<u64>,
 ) -> Result<SplitSolution, PlanError> {
     check_tolerance(opts)?;
-    if opts.method != Method::Coupled {
-        return Err(PlanError::Invalid(format!(
-            "--method {}: the split-domain solver runs the full collocation system (--method coupled) only so far",
-            opts.method
-        )));
-    }
     let mut problem = SplitProblem::from_input(input)?;
+    problem.set_method(opts.method)?;
     if let Some(b) = max_memory {
         problem.budget = b;
     }
@@ -768,7 +763,7 @@ pub(super) fn report(
                 })
                 .collect()
         },
-        method: Method::Coupled.name().to_string(),
+        method: problem.method().name().to_string(),
         error_estimate: est,
         converged,
         tol,

@@ -43,9 +43,6 @@ use crate::plan::{
 };
 use crate::system::Program;
 
-/// The method name of the split-domain solver.
-pub const SPLIT_METHOD: &str = "split-domain collocation";
-
 /// Points of the output grid on which unknowns are reported.
 pub const GRID_POINTS: usize = 101;
 
@@ -193,31 +190,15 @@ pub fn solve_split_solution(
     s: &SolveSettings,
 ) -> Result<(Report, SplitSolution), PlanError> {
     s.check()?;
-    split_method(s.method)?;
     let opts = SplitOptions {
         tol: s.tol,
         max_level: s.max_level,
         grid: s.grid,
-        ..SplitOptions::default()
+        method: s.method.unwrap_or(Method::Coupled),
     };
     let sol = crate::plan::split_solve::solve_split_within(input, &opts, s.max_memory)?;
     let r = from_split(&sol, s.grid)?;
     Ok((r, sol))
-}
-
-/// The methods the split solver can run: it collocates every equation on
-/// its subinterval together (the `coupled` block system); it cannot
-/// eliminate, so `ordered` and `commutative` are refused.
-pub fn split_method(m: Option<Method>) -> Result<(), PlanError> {
-    match m {
-        None | Some(Method::Coupled) => Ok(()),
-        Some(Method::Ordered) => Err(PlanError::Invalid(
-            "--method ordered: a split-domain file is solved as one coupled collocation system on all its subintervals (as --method coupled); an elimination per subinterval is not executed numerically (its single equations are shown by `lambdamat reduce`)".into(),
-        )),
-        Some(Method::Commutative) => Err(PlanError::Invalid(
-            "--method commutative: a split-domain file is solved as one coupled collocation system on all its subintervals (as --method coupled); the seed's single equations per subinterval are shown by `lambdamat reduce`".into(),
-        )),
-    }
 }
 
 /// The report of a one-interval solve.
@@ -307,8 +288,18 @@ pub fn from_split(sol: &SplitSolution, grid: usize) -> Result<Report, PlanError>
     for (name, f) in &unknowns {
         error_estimates.insert(name.clone(), f.error_estimate);
     }
-    let warnings = r.stopped.iter().chain(&r.uniqueness).cloned().collect();
+    let mut warnings: Vec<String> = r.stopped.iter().chain(&r.uniqueness).cloned().collect();
     let mut extra = Map::new();
+    if let Some(m) = sol.problem.method_record() {
+        warnings.extend(m.warnings);
+        extra.insert(
+            "pivots".into(),
+            m.pivots
+                .iter()
+                .map(|(e, u)| json!({"equation": e, "unknown": u}))
+                .collect(),
+        );
+    }
     extra.insert("unique".into(), json!(r.uniqueness.is_none()));
     extra.insert("notes".into(), json!(text::split_notes(r)));
     extra.insert("dim".into(), json!(r.dim));
@@ -317,7 +308,7 @@ pub fn from_split(sol: &SplitSolution, grid: usize) -> Result<Report, PlanError>
     extra.insert("end_answer".into(), json!(r.end_answer));
     extra.insert("end_check".into(), json!(r.end_check));
     Ok(Report {
-        method: SPLIT_METHOD.to_string(),
+        method: r.method.clone(),
         converged: r.converged,
         levels: r.levels,
         tol: r.tol,

@@ -313,12 +313,7 @@ pub fn solver_main(system: fn() -> Result<CompiledSystem, PlanError>) -> i32 {
 /// The `main` of a solver `lambdamat codegen` wrote for a split-domain
 /// file: returns the exit code.
 pub fn split_solver_main(input: fn() -> Result<SplitInput, PlanError>) -> i32 {
-    run_main(|flags, out| {
-        solve_and_print(flags, out, |s| {
-            crate::report::split_method(s.method)?;
-            crate::report::solve_split(input()?, s)
-        })
-    })
+    run_main(|flags, out| solve_and_print(flags, out, |s| crate::report::solve_split(input()?, s)))
 }
 
 #[cfg(test)]

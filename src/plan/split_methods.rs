@@ -1,0 +1,258 @@
+//! The solution methods of the split-domain discretisation (`split.rs`)
+//! other than `coupled`: `ordered` (exact block elimination toward the
+//! target unknown in the pivot order of the system's [`Derivation`], the
+//! recipe of [`super::methods`] executed on the split system's blocks) and
+//! `commutative` (where it applies: the derivation's eliminant
+//! `D_i u_i = Σ_j c_j g_j` evaluated with the split operator matrices, the
+//! seed's single-equation model). Block `A_ij` of the split system is made
+//! of the rows of equation `i` (its collocation rows and the one-sided
+//! limit rows of the singular terms it is paired with) and the columns of
+//! unknown `j` (its basis on its free support, its exact singular terms'
+//! coefficients, and the columns through which a relation substitutes
+//! another unknown). This is a square block system when every equation is
+//! collocated for one and the same unknown on every subinterval where it
+//! holds; a file where it is not, or whose side conditions add rows to no
+//! block, is refused with the feature named. Owns the applicability checks
+//! and these two recipes; the assembly is `split.rs`'s, the elimination
+//! itself `methods.rs`'s and `numeric::elimination`'s; it executes the
+//! derivation and never re-derives.
+use std::sync::Mutex;
+
+use nalgebra::{DMatrix, DVector};
+use serde::Serialize;
+
+use super::error::PlanError;
+use super::methods::{Method, ordered as ordered_blocks};
+use super::split::SplitProblem;
+use crate::algebra::derivation::Derivation;
+use crate::numeric::solve::DEFAULT_MAX_COND;
+
+/// A method other than `coupled`, ready to run on every discretisation of
+/// one problem: the method, the derivation it executes, and the record of
+/// its last solve.
+pub struct MethodPlan {
+    method: Method,
+    derivation: Option<Derivation>,
+    last: Mutex<MethodRecord>,
+}
+
+/// What a method did on its last solve, for the report.
+#[derive(Debug, Clone, Default, Serialize, PartialEq)]
+pub struct MethodRecord {
+    /// The pivots the ordered elimination executed, as (equation,
+    /// unknown), numbered from 1.
+    pub pivots: Vec<(usize, usize)>,
+    /// Where the method departed from the derivation, named.
+    pub warnings: Vec<String>,
+}
+
+/// The assembled split system with the ownership of its rows and columns
+/// (`split.rs` builds it at the point where `coupled` solves).
+pub(super) struct Assembled<'a> {
+    /// The square collocation matrix.
+    pub mat: &'a DMatrix<f64>,
+    /// Its right side.
+    pub rhs: &'a DVector<f64>,
+    /// Collocation rows per equation, in equation order (the singular
+    /// terms' limit rows follow all of them).
+    pub eq_rows: Vec<usize>,
+    /// Per singular term: the unknown it belongs to and the equation its
+    /// limit row is taken from.
+    pub terms: Vec<(usize, usize)>,
+    /// Column offsets of the unknowns' bases (then one column per term).
+    pub offsets: &'a [usize],
+    /// `paired[u][k]`: the equation collocated at unknown `u`'s nodes on
+    /// subinterval `k` (`None` where `u` is not free).
+    pub paired: &'a [Vec<Option<usize>>],
+    /// Subinterval ends.
+    pub breaks: &'a [f64],
+}
+
+/// The solution, condition estimate and least-squares residual (0: the
+/// methods here solve square systems) of one level.
+pub(super) type Solved = (DVector<f64>, f64, f64);
+
+impl SplitProblem {
+    /// Runs `method` on every discretisation from now on, or refuses it
+    /// with the feature of the file that keeps it from applying.
+    pub fn set_method(&mut self, method: Method) -> Result<(), PlanError> {
+        if method == Method::Coupled {
+            self.method = None;
+            return Ok(());
+        }
+        let refuse = |why: &str| {
+            Err(PlanError::Invalid(format!(
+                "--method {method}: {why}; use --method coupled"
+            )))
+        };
+        if method == Method::Commutative {
+            return refuse(
+                "the split-domain solver does not evaluate the commutative model: it computes the target unknown only, while a split-domain solve needs every unknown (its outputs, fields, inequalities and the conditions that fix its scalars)",
+            );
+        }
+        if !self.sys.conditions.is_empty() && self.contact.scalars.is_empty() {
+            return refuse(
+                "side conditions add rows outside every (equation, unknown) block (the system is solved by least squares)",
+            );
+        }
+        let derivation = match self.sys.derivation() {
+            Ok(d) => Some(d),
+            Err(e @ PlanError::Invalid(_)) => return Err(e),
+            Err(_) => None,
+        };
+        self.method = Some(MethodPlan {
+            method,
+            derivation,
+            last: Mutex::new(MethodRecord::default()),
+        });
+        Ok(())
+    }
+
+    /// The method every discretisation runs.
+    pub fn method(&self) -> Method {
+        self.method.as_ref().map_or(Method::Coupled, |m| m.method)
+    }
+
+    /// What the method did on its last solve (`None` for `coupled`).
+    pub fn method_record(&self) -> Option<MethodRecord> {
+        let plan = self.method.as_ref()?;
+        plan.last.lock().ok().map(|r| r.clone())
+    }
+}
+
+impl MethodPlan {
+    /// Solves the assembled system `a` of `problem` by this method.
+    pub(super) fn solve(
+        &self,
+        problem: &SplitProblem,
+        a: &Assembled<'_>,
+    ) -> Result<Solved, PlanError> {
+        let names = &problem.sys.unknowns;
+        let owner = equation_of_unknown(a, names, self.method)?;
+        let n = names.len();
+        // Rows of each equation, columns of each unknown.
+        let mut rows: Vec<Vec<usize>> = vec![Vec::new(); n];
+        let mut r0 = 0;
+        for (e, &len) in a.eq_rows.iter().enumerate() {
+            rows[e].extend(r0..r0 + len);
+            r0 += len;
+        }
+        let dim = a.offsets[a.offsets.len() - 1];
+        let mut cols: Vec<Vec<usize>> = (0..n)
+            .map(|u| (a.offsets[u]..a.offsets[u + 1]).collect())
+            .collect();
+        for (ti, &(u, e)) in a.terms.iter().enumerate() {
+            rows[e].push(r0 + ti);
+            cols[u].push(dim + ti);
+        }
+        for (u, e) in owner.iter().enumerate() {
+            if rows[*e].len() != cols[u].len() {
+                return Err(PlanError::Invalid(format!(
+                    "--method {}: equation {} has {} rows for the {} coefficients of {}: its block is not square; use --method coupled",
+                    self.method,
+                    e + 1,
+                    rows[*e].len(),
+                    cols[u].len(),
+                    names[u]
+                )));
+            }
+        }
+        let blocks: Vec<Vec<DMatrix<f64>>> = rows
+            .iter()
+            .map(|r| {
+                cols.iter()
+                    .map(|c| DMatrix::from_fn(r.len(), c.len(), |i, j| a.mat[(r[i], c[j])]))
+                    .collect()
+            })
+            .collect();
+        let g: Vec<DVector<f64>> = rows
+            .iter()
+            .map(|r| DVector::from_iterator(r.len(), r.iter().map(|&i| a.rhs[i])))
+            .collect();
+        let pivots = self
+            .derivation
+            .as_ref()
+            .map(Derivation::pivot_order)
+            .unwrap_or_default();
+        let sol = ordered_blocks(
+            blocks,
+            g,
+            problem.sys.target,
+            &pivots,
+            names,
+            DEFAULT_MAX_COND,
+        )?;
+        let mut x = DVector::zeros(a.mat.ncols());
+        for (u, c) in cols.iter().enumerate() {
+            let Some(v) = &sol.coefs[u] else {
+                return Err(PlanError::Invalid(format!(
+                    "--method {}: {} was not computed",
+                    self.method, names[u]
+                )));
+            };
+            for (q, &col) in c.iter().enumerate() {
+                x[col] = v[q];
+            }
+        }
+        if let Ok(mut last) = self.last.lock() {
+            *last = MethodRecord {
+                pivots: sol.pivots.iter().map(|&(e, u)| (e + 1, u + 1)).collect(),
+                warnings: sol.warnings,
+            };
+        }
+        Ok((x, sol.cond, 0.0))
+    }
+}
+
+/// The equation collocated for each unknown on every subinterval where it
+/// is free, when that is one equation per unknown and one unknown per
+/// equation (the split system is then a square block system); else the
+/// refusal, naming the subintervals where the pairing changes.
+fn equation_of_unknown(
+    a: &Assembled<'_>,
+    names: &[String],
+    method: Method,
+) -> Result<Vec<usize>, PlanError> {
+    let piece = |k: usize| format!("({}, {})", a.breaks[k], a.breaks[k + 1]);
+    let mut owner = Vec::with_capacity(names.len());
+    for (u, name) in names.iter().enumerate() {
+        let mut found: Option<(usize, usize)> = None;
+        for (k, e) in a.paired[u].iter().enumerate() {
+            let Some(e) = *e else { continue };
+            match found {
+                None => found = Some((e, k)),
+                Some((e0, k0)) if e0 != e => {
+                    return Err(PlanError::Invalid(format!(
+                        "--method {method}: {name} is collocated with equation {} on {} but with equation {} on {} (the equations holding there change with the subinterval), so no equation's rows form one block for it; use --method coupled",
+                        e0 + 1,
+                        piece(k0),
+                        e + 1,
+                        piece(k)
+                    )));
+                }
+                Some(_) => {}
+            }
+        }
+        let Some((e, _)) = found else {
+            return Err(PlanError::Invalid(format!(
+                "--method {method}: {name} is nowhere free (a relation substitutes it everywhere), so it has no block; use --method coupled"
+            )));
+        };
+        if let Some(v) = owner.iter().position(|&o| o == e) {
+            return Err(PlanError::Invalid(format!(
+                "--method {method}: equation {} is collocated for {} on some subintervals and for {name} on others (a relation substitutes one of them), so its rows form no block of one unknown; use --method coupled",
+                e + 1,
+                names[v]
+            )));
+        }
+        owner.push(e);
+    }
+    if owner.len() != a.eq_rows.len() {
+        return Err(PlanError::Invalid(format!(
+            "--method {method}: {} equations for {} unknowns: the blocks are not square; use --method coupled",
+            a.eq_rows.len(),
+            owner.len()
+        )));
+    }
+    Ok(owner)
+}
