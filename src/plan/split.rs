@@ -934,6 +934,7 @@ impl SplitProblem {
                     offsets: &offsets,
                     paired: &paired,
                     breaks: &breaks,
+                    bases: &bases,
                 },
             )?
         } else if self.sys.conditions.is_empty() || !side_rows {

@@ -2,9 +2,11 @@
 //! other than `coupled`: `ordered` (exact block elimination toward the
 //! target unknown in the pivot order of the system's [`Derivation`], the
 //! recipe of [`super::methods`] executed on the split system's blocks) and
-//! `commutative` (where it applies: the derivation's eliminant
-//! `D_i u_i = Σ_j c_j g_j` evaluated with the split operator matrices, the
-//! seed's single-equation model). Block `A_ij` of the split system is made
+//! `commutative` (on files without relations or exact singular terms: the
+//! derivation's eliminant `D_i u_i = Σ_j c_j g_j` evaluated with the split
+//! operator matrices, the seed's single-equation model, with the other
+//! unknowns solved from the ordered elimination's pivot equations given
+//! `u_i`, and the commuted pairs' measured defects). Block `A_ij` of the split system is made
 //! of the rows of equation `i` (its collocation rows and the one-sided
 //! limit rows of the singular terms it is paired with) and the columns of
 //! unknown `j` (its basis on its free support, its exact singular terms'
@@ -24,8 +26,12 @@ use serde::Serialize;
 use super::error::PlanError;
 use super::methods::{Method, ordered as ordered_blocks};
 use super::split::SplitProblem;
+use super::split_input::SplitKind;
 use crate::algebra::derivation::Derivation;
+use crate::numeric::elimination::{apply_to_values, commutator_defect_on, solve_blocks};
 use crate::numeric::solve::DEFAULT_MAX_COND;
+use crate::numeric::{Assembler, NumericError, Operator, PanelBasis};
+use crate::system::NcPoly;
 
 /// A method other than `coupled`, ready to run on every discretisation of
 /// one problem: the method, the derivation it executes, and the record of
@@ -44,6 +50,10 @@ pub struct MethodRecord {
     pub pivots: Vec<(usize, usize)>,
     /// Where the method departed from the derivation, named.
     pub warnings: Vec<String>,
+    /// For the commutative model: the symbol pairs it commuted, each with
+    /// its measured defect `‖KaKb f - KbKa f‖/‖KaKb f‖` for `f = 1 + x`
+    /// (max norm at the nodes; `None` if `KaKb f` vanishes).
+    pub commuted: Vec<([String; 2], Option<f64>)>,
 }
 
 /// The assembled split system with the ownership of its rows and columns
@@ -66,6 +76,8 @@ pub(super) struct Assembled<'a> {
     pub paired: &'a [Vec<Option<usize>>],
     /// Subinterval ends.
     pub breaks: &'a [f64],
+    /// Per unknown, its basis on its free support.
+    pub bases: &'a [Option<PanelBasis>],
 }
 
 /// The solution, condition estimate and least-squares residual (0: the
@@ -85,11 +97,6 @@ impl SplitProblem {
                 "--method {method}: {why}; use --method coupled"
             )))
         };
-        if method == Method::Commutative {
-            return refuse(
-                "the split-domain solver does not evaluate the commutative model: it computes the target unknown only, while a split-domain solve needs every unknown (its outputs, fields, inequalities and the conditions that fix its scalars)",
-            );
-        }
         if !self.sys.conditions.is_empty() && self.contact.scalars.is_empty() {
             return refuse(
                 "side conditions add rows outside every (equation, unknown) block (the system is solved by least squares)",
@@ -100,6 +107,35 @@ impl SplitProblem {
             Err(e @ PlanError::Invalid(_)) => return Err(e),
             Err(_) => None,
         };
+        if method == Method::Commutative {
+            if !self.contact.relations.is_empty() {
+                return refuse(
+                    "relations substitute an unknown on a subinterval, where the eliminant D u = Σ c_j g_j (one equation on the whole interval, every equation and unknown in it) does not hold",
+                );
+            }
+            if self
+                .contact
+                .singulars
+                .iter()
+                .any(|s| matches!(s.kind, SplitKind::Term { .. }))
+            {
+                return refuse(
+                    "exact singular terms (`singular q at c- ~ B*g(x)`) add coefficients and limit rows the eliminant D u = Σ c_j g_j does not have",
+                );
+            }
+            let Some(d) = &derivation else {
+                return refuse(
+                    "the λ-matrix is singular (det(A) = 0 over Q[symbols]), so there is no single equation",
+                );
+            };
+            if d.eliminant.is_none() {
+                return refuse(&format!(
+                    "the eliminant was not derived: det(A) may have up to {:.3e} terms (limit {:.0})",
+                    d.bound.terms,
+                    crate::algebra::derivation::MAX_ELIMINANT_TERMS
+                ));
+            }
+        }
         self.method = Some(MethodPlan {
             method,
             derivation,
@@ -174,6 +210,9 @@ impl MethodPlan {
             .as_ref()
             .map(Derivation::pivot_order)
             .unwrap_or_default();
+        if self.method == Method::Commutative {
+            return self.commutative(problem, a, &owner, &blocks, &g, &cols, &pivots);
+        }
         let sol = ordered_blocks(
             blocks,
             g,
@@ -198,6 +237,7 @@ impl MethodPlan {
             *last = MethodRecord {
                 pivots: sol.pivots.iter().map(|&(e, u)| (e + 1, u + 1)).collect(),
                 warnings: sol.warnings,
+                commuted: Vec::new(),
             };
         }
         Ok((x, sol.cond, 0.0))
@@ -255,4 +295,162 @@ fn equation_of_unknown(
         )));
     }
     Ok(owner)
+}
+
+impl MethodPlan {
+    /// The commutative model on the split system: the target `i` solves
+    /// the derivation's eliminant `D_i u_i = Σ_j c_j g_j` (`D_i` in written
+    /// order, `c_j`'s monomials in symbol-table order, as `methods.rs`
+    /// applies it) collocated at its nodes, products through its basis
+    /// without weight; the other unknowns then solve the equations the
+    /// ordered elimination pivots on, with `u_i` given (so every unknown
+    /// is the model's, consistent with its `u_i`). Records the commuted
+    /// pairs with their measured defects.
+    #[allow(clippy::too_many_arguments)]
+    fn commutative(
+        &self,
+        problem: &SplitProblem,
+        a: &Assembled<'_>,
+        owner: &[usize],
+        blocks: &[Vec<DMatrix<f64>>],
+        g: &[DVector<f64>],
+        cols: &[Vec<usize>],
+        pivots: &[(usize, usize)],
+    ) -> Result<Solved, PlanError> {
+        let sys = &problem.sys;
+        let n = sys.unknowns.len();
+        let der = self
+            .derivation
+            .as_ref()
+            .ok_or_else(|| PlanError::Invalid("commutative model: no derivation".into()))?;
+        let e = der
+            .eliminant
+            .as_ref()
+            .ok_or_else(|| PlanError::Invalid("commutative model: no eliminant".into()))?;
+        let i = der.target;
+        let basis = a.bases[i].as_ref().ok_or_else(|| {
+            PlanError::Invalid("commutative model: the target has no basis".into())
+        })?;
+        // Every unknown is free on the whole interval on the same mesh
+        // (no relations, no terms), so all share the target's nodes.
+        let mut mid = basis.clone();
+        mid.weight.clear();
+        let (asm, mid_asm) = (
+            Assembler::new(basis).map_err(num())?,
+            Assembler::new(&mid).map_err(num())?,
+        );
+        let nodes = basis.nodes();
+        let ctx = || PlanError::numeric("commutative model");
+        let op = |s: usize| -> Result<&Operator, PlanError> {
+            sys.operators[s]
+                .as_ref()
+                .ok_or_else(|| PlanError::Invalid(format!("operator #{s} has no definition")))
+        };
+        // The matrix of `p` (written order) on `inner`'s coefficients,
+        // collocated at the nodes.
+        let poly = |p: &NcPoly, inner: &Assembler| -> Result<DMatrix<f64>, PlanError> {
+            let (sup, mid_sup) = (inner.basis().support(), mid.support());
+            let mut out = DMatrix::zeros(nodes.len(), inner.basis().dim());
+            for (word, c) in p.terms() {
+                let c = super::compile::rational(c);
+                let m = match word.as_slice() {
+                    [] => inner
+                        .matrix_on(&Operator::identity(), &nodes, sup)
+                        .map_err(ctx())?,
+                    [s] => inner.matrix_on(op(*s)?, &nodes, sup).map_err(ctx())?,
+                    [first, middle @ .., inner_s] => {
+                        let mut m = inner.matrix_on(op(*inner_s)?, &nodes, sup).map_err(ctx())?;
+                        for s in middle.iter().rev() {
+                            m = mid_asm.matrix_on(op(*s)?, &nodes, mid_sup).map_err(ctx())? * m;
+                        }
+                        mid_asm
+                            .matrix_on(op(*first)?, &nodes, mid_sup)
+                            .map_err(ctx())?
+                            * m
+                    }
+                };
+                out += m * c;
+            }
+            Ok(out)
+        };
+        let l = poly(&e.lhs_ordered, &asm)?;
+        let mut rhs = DVector::zeros(nodes.len());
+        for (c, gk) in e.multipliers.iter().zip(g).take(n) {
+            if c.is_zero() {
+                continue;
+            }
+            let cm = poly(&NcPoly::from_mpoly(c), &mid_asm)?;
+            rhs += apply_to_values(&cm, &mid, gk).map_err(ctx())?;
+        }
+        let lu = crate::numeric::solve::CheckedLu::new(&l, DEFAULT_MAX_COND).map_err(
+            PlanError::numeric(format!("commutative model det(A) {} = …", sys.unknowns[i])),
+        )?;
+        let ui = lu.solve(&rhs).map_err(ctx())?;
+        let mut cond = lu.cond();
+        // The other unknowns from the pivot equations, u_i given.
+        let others: Vec<usize> = (0..n).filter(|&j| j != i).collect();
+        let eqs: Vec<usize> = if pivots.len() + 1 == n {
+            pivots.iter().map(|&(eq, _)| eq).collect()
+        } else {
+            others.iter().map(|&j| owner[j]).collect()
+        };
+        let mut coefs: Vec<Option<DVector<f64>>> = vec![None; n];
+        if !others.is_empty() {
+            let sub: Vec<Vec<&DMatrix<f64>>> = eqs
+                .iter()
+                .map(|&r| others.iter().map(|&j| &blocks[r][j]).collect())
+                .collect();
+            let rhs: Vec<DVector<f64>> = eqs.iter().map(|&r| &g[r] - &blocks[r][i] * &ui).collect();
+            let rrefs: Vec<&DVector<f64>> = rhs.iter().collect();
+            let (us, c2) =
+                solve_blocks(&sub, &rrefs, DEFAULT_MAX_COND).map_err(PlanError::numeric(
+                    "commutative model: the other unknowns from the pivot equations",
+                ))?;
+            cond = cond.max(c2);
+            for (&j, u) in others.iter().zip(us) {
+                coefs[j] = Some(u);
+            }
+        }
+        coefs[i] = Some(ui);
+        let mut x = DVector::zeros(a.mat.ncols());
+        for (u, c) in cols.iter().enumerate() {
+            let v = coefs[u].as_ref().ok_or_else(ctx_missing)?;
+            for (q, &col) in c.iter().enumerate() {
+                x[col] = v[q];
+            }
+        }
+        // The commuted pairs and their defects on f = 1 + x.
+        let f = DVector::from_vec(mid.interpolate(|t| 1.0 + t));
+        let mut commuted = Vec::new();
+        for p in der.commuted_pairs() {
+            let ka = mid_asm
+                .matrix_on(op(p.a)?, &nodes, mid.support())
+                .map_err(ctx())?;
+            let kb = mid_asm
+                .matrix_on(op(p.b)?, &nodes, mid.support())
+                .map_err(ctx())?;
+            let d = match commutator_defect_on(&ka, &kb, &ka, &kb, &mid, &f) {
+                Ok(v) => Some(v),
+                Err(NumericError::InvalidArgument(_)) => None,
+                Err(e) => return Err(PlanError::numeric("commutator defect")(e)),
+            };
+            commuted.push(([sys.symbols[p.a].clone(), sys.symbols[p.b].clone()], d));
+        }
+        if let Ok(mut last) = self.last.lock() {
+            *last = MethodRecord {
+                pivots: Vec::new(),
+                warnings: Vec::new(),
+                commuted,
+            };
+        }
+        Ok((x, cond, 0.0))
+    }
+}
+
+fn num() -> impl FnOnce(NumericError) -> PlanError {
+    PlanError::numeric("commutative model")
+}
+
+fn ctx_missing() -> PlanError {
+    PlanError::Invalid("commutative model: an unknown was not computed".into())
 }

@@ -292,6 +292,20 @@ pub fn from_split(sol: &SplitSolution, grid: usize) -> Result<Report, PlanError>
     let mut extra = Map::new();
     if let Some(m) = sol.problem.method_record() {
         warnings.extend(m.warnings);
+        if r.method == Method::Commutative.name() {
+            extra.insert("model".into(), json!(true));
+            extra.insert(
+                "commutator_defects".into(),
+                m.commuted
+                    .iter()
+                    .map(|(pair, d)| json!({"pair": pair, "defect": d, "defect_on_solution": null}))
+                    .collect(),
+            );
+            warnings.push(format!(
+                "the commutative method solves the seed's single equation for {} (the eliminant of `lambdamat reduce`), a model that treats the operators as commuting symbols; the other unknowns follow from the ordered elimination's pivot equations; compare with --method ordered",
+                sol.problem.sys.unknowns[sol.problem.sys.target]
+            ));
+        }
         extra.insert(
             "pivots".into(),
             m.pivots
