@@ -94,3 +94,31 @@ fn a_relation_to_zero_is_a_substitution() {
         "{err}"
     );
 }
+
+/// A negative load has no admissible root: the conditions' roots (if any)
+/// pull the sphere out of the half-space, so the solve refuses with exit 3
+/// and says how many starting points it tried, never exit 0.
+#[test]
+fn a_load_without_an_admissible_root_is_refused() {
+    let out = lambdamat()
+        .args([
+            "solve",
+            "examples/contact/sphere_load.lmx",
+            "--set",
+            "P0=-1",
+        ])
+        .output()
+        .expect("runs");
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(3), "{err}");
+    assert!(
+        err.contains("no admissible root of the 2 conditions for a, delta found from")
+            && err.contains("starting points in their declared ranges"),
+        "{err}"
+    );
+    assert!(
+        out.stdout.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&out.stdout)
+    );
+}
