@@ -94,3 +94,60 @@ fn a_relation_to_zero_is_a_substitution() {
         "{err}"
     );
 }
+
+/// A negative load has no admissible root: the conditions' roots (if any)
+/// pull the sphere out of the half-space, so the solve refuses with exit 3
+/// and says how many starting points it tried, never exit 0.
+#[test]
+fn a_load_without_an_admissible_root_is_refused() {
+    let out = lambdamat()
+        .args([
+            "solve",
+            "examples/contact/sphere_load.lmx",
+            "--set",
+            "P0=-1",
+        ])
+        .output()
+        .expect("runs");
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(3), "{err}");
+    assert!(
+        err.contains("no admissible root of the 2 conditions for a, delta found from")
+            && err.contains("starting points in their declared ranges"),
+        "{err}"
+    );
+    assert!(
+        out.stdout.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&out.stdout)
+    );
+}
+
+/// A scalar as the end of an operator's range or of an output's integral
+/// is not supported yet: refused with exit 2 at its line and column.
+#[test]
+fn a_scalar_in_an_operator_range_or_an_output_is_an_input_error() {
+    let sphere = std::fs::read_to_string("examples/contact/sphere_load.lmx").expect("source");
+    for (from, to, at) in [
+        (
+            "output P = 2*pi*int(0..2) x*p(x) dx",
+            "output P = 2*pi*int(0..a) x*p(x) dx",
+            ":31:24",
+        ),
+        (
+            "operator k1 = int(x..2) t/sqrt",
+            "operator k1 = int(x..a) t/sqrt",
+            ":21:22",
+        ),
+    ] {
+        assert!(sphere.contains(from));
+        let out = run(&sphere.replace(from, to));
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{err}");
+        assert!(
+            err.contains("`a` is an unknown scalar, but a constant is needed here")
+                && err.contains(at),
+            "{err}"
+        );
+    }
+}

@@ -231,3 +231,37 @@ fn principal_values_and_side_conditions_are_shown() {
     );
     assert!(text.contains("least squares"), "{text}");
 }
+
+/// A right side that uses an unknown scalar is printed as written (the
+/// text of the expression the split solver evaluates), never as the 0 the
+/// operator algebra holds there; a subinterval where only a substitution
+/// holds (`p = 0 on [a, 2]`) is left out rather than refusing the file.
+#[test]
+fn scalar_right_sides_are_printed_as_solve_runs_them() {
+    let out = stdout(&["reduce", "examples/contact/sphere_load.lmx"]);
+    assert!(
+        out.lines().any(|l| l == "  k1 p = [delta - (x^2)]"),
+        "{out}"
+    );
+    assert!(
+        out.lines()
+            .any(|l| l == "  k1 p = g1    where g1 = delta - (x^2)"),
+        "{out}"
+    );
+    assert!(out.contains("not expanded: the right side `delta - (x^2)` uses an unknown scalar"));
+    assert!(!out.contains("[0]"), "{out}");
+    let j = json(&["reduce", "examples/contact/sphere_load.lmx"]);
+    let r = &j["pieces"][0]["reduction"];
+    assert_eq!(r["eliminant"]["rhs"][0]["value"], "delta - (x^2)");
+    let out = stdout(&["reduce", "examples/contact/cattaneo_mindlin_force.lmx"]);
+    assert!(
+        out.lines()
+            .any(|l| l == "  k1 p = g1    where g1 = 1 - x^2, g2 = S"),
+        "{out}"
+    );
+    let code = stdout(&["codegen", "examples/contact/cattaneo_mindlin_force.lmx"]);
+    assert!(
+        code.contains("/// Right side of equation 2: `S`; it uses an unknown scalar"),
+        "{code}"
+    );
+}

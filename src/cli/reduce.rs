@@ -31,7 +31,9 @@ pub fn reduce_command(a: &ReduceArgs, w: &mut dyn Write) -> Result<(), CliError>
 }
 
 /// The reduction of every subinterval of a split-domain program for
-/// unknown `u` (where it is free; else the first free unknown there).
+/// unknown `u` (where it is free; else the first free unknown there). A
+/// subinterval where no equation holds (only substitutions such as
+/// `p = 0 on [a, 2]`) has nothing to reduce and is left out.
 pub fn split_reductions(
     p: &crate::system::Program,
     u: usize,
@@ -40,6 +42,7 @@ pub fn split_reductions(
     let pieces = crate::reduce::split::pieces(p).map_err(|e| CliError::Invalid(e.to_string()))?;
     pieces
         .into_iter()
+        .filter(|piece| !piece.program.equations.is_empty())
         .map(|piece| {
             let v = piece
                 .program

@@ -161,7 +161,13 @@ fn system_code(
     let mut rhs_fns = Vec::new();
     for (i, eq) in prog.equations.iter().enumerate() {
         let f = names.fresh(&format!("rhs_{}", i + 1));
-        let doc = format!("Right side of equation {}: `{}`.", i + 1, eq.rhs);
+        let doc = match &eq.written {
+            Some(w) => format!(
+                "Right side of equation {}: `{w}`; it uses an unknown scalar, so the operator system holds 0 here and the split input evaluates it.",
+                i + 1
+            ),
+            None => format!("Right side of equation {}: `{}`.", i + 1, eq.rhs),
+        };
         function_x(&mut fns, &f, &doc, &eq.rhs);
         rhs_fns.push(f);
     }

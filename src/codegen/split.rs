@@ -257,7 +257,11 @@ fn contact_lit(c: &Contact, fns: &mut Fns) -> String {
             Some(e) => {
                 let f = fns.real(
                     &format!("equation_{}_rhs", i + 1),
-                    &format!("Right side of equation {} (it uses a scalar)", i + 1),
+                    &format!(
+                        "Right side of equation {} (it uses a scalar): `{}`",
+                        i + 1,
+                        e.to_text(&c.slots())
+                    ),
                     e,
                 );
                 format!("Some({f})")

@@ -152,13 +152,21 @@ pub fn lower(file: &File, v: &Validated) -> Result<Program, LangError> {
                     *slot = &*slot + &c;
                 }
                 // A right side with a scalar is the split solver's
-                // (`Contact::rhs`); the operator system holds 0 there.
-                let rhs = if super::lower_contact::uses_scalar(rhs, scope) {
-                    SExpr::Const(BigRational::zero())
-                } else {
-                    fexpr(rhs, scope)?
+                // (`Contact::rhs`, printed from there); the operator system
+                // holds 0 there.
+                let j = program.equations.len();
+                let (rhs, written) = match program.contact.rhs.get(j) {
+                    Some(Some(e)) => (
+                        SExpr::Const(BigRational::zero()),
+                        Some(e.to_text(&program.contact.slots())),
+                    ),
+                    _ => (fexpr(rhs, scope)?, None),
                 };
-                program.equations.push(Equation { lhs: row, rhs });
+                program.equations.push(Equation {
+                    lhs: row,
+                    rhs,
+                    written,
+                });
             }
             Stmt::Output { name, body } => {
                 let terms = output_terms(body, scope)?;

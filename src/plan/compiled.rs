@@ -203,7 +203,7 @@ impl CompiledSystem {
             .map(|eq| CompiledEquation {
                 lhs: eq.lhs.clone(),
                 rhs: compile_x(&eq.rhs),
-                rhs_text: eq.rhs.to_string(),
+                rhs_text: eq.rhs_text(),
             })
             .collect();
         let outputs = prog

@@ -95,6 +95,10 @@ pub enum ExpandError {
     /// The expansion would be too long to be useful.
     #[error("the expansion would have more than {MAX_TERMS} terms")]
     TooManyTerms,
+    /// A right side uses an unknown scalar, which an iterated integral
+    /// cannot show before `solve` fixes it.
+    #[error("the right side `{0}` uses an unknown scalar; `solve` fixes it with the conditions")]
+    ScalarRhs(String),
 }
 
 /// Splits an expression into a rational factor and the rest (`None` for 1):

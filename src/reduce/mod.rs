@@ -225,7 +225,7 @@ fn steps_form(p: &Program, d: &Derivation, uname: &str) -> Result<StepsForm, Str
             .equations
             .iter()
             .enumerate()
-            .map(|(j, eq)| (format!("g{}", j + 1), eq.rhs.to_string()))
+            .map(|(j, eq)| (format!("g{}", j + 1), eq.rhs_text()))
             .collect(),
     })
 }
@@ -370,7 +370,7 @@ pub fn reduce_with(p: &Program, d: &Derivation) -> Result<Reduction, ReduceError
         .map(|(j, c)| RhsTerm {
             operator: fmt(c),
             equation: j + 1,
-            value: p.equations[j].rhs.to_string(),
+            value: p.equations[j].rhs_text(),
             operator_latex: c.to_latex_with(names),
             operator_node: c.to_node(names),
         })
@@ -461,7 +461,7 @@ fn ordered_form(
                 .equations
                 .iter()
                 .enumerate()
-                .map(|(j, eq)| (format!("g{}", j + 1), eq.rhs.to_string()))
+                .map(|(j, eq)| (format!("g{}", j + 1), eq.rhs_text()))
                 .collect(),
             inverses: o.required_inverses(names),
             inverses_lmx: o.required_inverses_lmx(names),
@@ -584,6 +584,9 @@ fn expand_all(
     }
     let mut rhs = Vec::new();
     for (j, c) in e.multipliers.iter().enumerate() {
+        if let Some(w) = p.equations[j].written.as_ref().filter(|_| !c.is_zero()) {
+            return Err(ExpandError::ScalarRhs(w.clone()));
+        }
         let g = &p.equations[j].rhs;
         if matches!(g, Expr::Const(z) if num_traits::Zero::is_zero(z)) {
             continue;

@@ -156,6 +156,7 @@ pub fn pieces(p: &Program) -> Result<Vec<Piece>, PieceError> {
             .map(|eq| Equation {
                 lhs: keep.iter().map(|&u| eq.lhs[u].clone()).collect(),
                 rhs: eq.rhs,
+                written: eq.written,
             })
             .collect();
         program.directives.clear();

@@ -102,6 +102,18 @@ pub struct Equation {
     pub lhs: Vec<NcPoly>,
     /// The right side, a function of `x`.
     pub rhs: Expr,
+    /// The right side as the split solver runs it, when it uses an unknown
+    /// scalar (`delta - x^2`): `rhs` holds 0 there for the operator
+    /// algebra, and every printer shows this text instead.
+    pub written: Option<String>,
+}
+
+impl Equation {
+    /// The right side as printed: [`Equation::written`] when set, else
+    /// `rhs`.
+    pub fn rhs_text(&self) -> String {
+        self.written.clone().unwrap_or_else(|| self.rhs.to_string())
+    }
 }
 
 /// A number computed from the solution: a sum of terms.
