@@ -29,9 +29,15 @@
 //!   null function is only approximated, so its singular value falls
 //!   with the level no faster than the approximation error.
 //!
-//! Anything else (a first-kind operator other than the two above, an
-//! integral over part of the interval, a singular or peaked kernel, a
-//! side condition) is left to the numerics.
+//! Anything else is left to the numerics: a first-kind operator other
+//! than the two above, and either of the two inside a system (e.g. the
+//! capacity-1 logarithmic kernel in a diagonal block of a triangular
+//! system); an integral over part of the interval (Volterra and Abel
+//! terms); a singular or peaked kernel; any side condition; split-domain
+//! files beyond [`check_split`]. There the only guard is the solver's
+//! discrete check (`numeric::solve::null_direction`: a smallest singular
+//! value below 1e-10 of the largest while the next is not), which sees a
+//! null function only when the trial space represents it to rounding.
 use super::compiled::CompiledSystem;
 use super::error::PlanError;
 use super::split_input::SplitInput;
