@@ -16,12 +16,33 @@
 //!   says so in a warning (containing "unique") naming how to select
 //!   another.
 //!
-//! Anything else (several unknowns, an identity term, a kernel factor that
-//! is not constant, a side condition) is left to the numerics.
+//! * A system of second-kind equations on one interval (every operator a
+//!   combination of multipliers and smooth integrals over the whole
+//!   interval, the multiplier part invertible at every point): `M + K`
+//!   with `K` compact, whose singular values gather at those of `M`, so
+//!   its Nyström matrices at 48 and 96 Gauss–Legendre points (exact to
+//!   rounding for analytic kernels) have a smallest singular value at
+//!   rounding level only when the operator has a null function. Then the
+//!   problem is refused ([`PlanError::Singular`]), naming the null
+//!   function by its values and whether the right side admits solutions.
+//!   A discrete solver need not see this: in a weighted trial space the
+//!   null function is only approximated, so its singular value falls
+//!   with the level no faster than the approximation error.
+//!
+//! Anything else is left to the numerics: a first-kind operator other
+//! than the two above, and either of the two inside a system (e.g. the
+//! capacity-1 logarithmic kernel in a diagonal block of a triangular
+//! system); an integral over part of the interval (Volterra and Abel
+//! terms); a singular or peaked kernel; any side condition; split-domain
+//! files beyond [`check_split`]. There the only guard is the solver's
+//! discrete check (`numeric::solve::null_direction`: a smallest singular
+//! value below 1e-10 of the largest while the next is not), which sees a
+//! null function only when the trial space represents it to rounding.
 use super::compiled::CompiledSystem;
 use super::error::PlanError;
 use super::split_input::SplitInput;
-use crate::numeric::operator::{Limits, Singularity, Term};
+use crate::numeric::operator::{Limits, Operator, Singularity, Term};
+use nalgebra::DMatrix;
 
 /// What the operators say about uniqueness.
 #[derive(Debug, Clone, PartialEq)]
@@ -41,7 +62,11 @@ const EQUAL: f64 = 1e-12;
 /// logarithmic equation, [`Uniqueness::Chosen`] for a Cauchy equation
 /// without a side condition.
 pub fn check(sys: &CompiledSystem) -> Result<Uniqueness, PlanError> {
-    if sys.unknowns.len() != 1 || sys.equations.len() != 1 || !sys.conditions.is_empty() {
+    if !sys.conditions.is_empty() {
+        return Ok(Uniqueness::Unknown);
+    }
+    second_kind_null(sys)?;
+    if sys.unknowns.len() != 1 || sys.equations.len() != 1 {
         return Ok(Uniqueness::Unknown);
     }
     let (a, b) = sys.domain;
@@ -133,6 +158,240 @@ pub fn check_split(input: &SplitInput) -> Result<Uniqueness, PlanError> {
     } else {
         Ok(Uniqueness::Unknown)
     }
+}
+
+/// Gauss–Legendre sizes of the two Nyström matrices of [`second_kind_null`].
+const NYSTROM: [usize; 2] = [48, 96];
+/// A smallest singular value below this fraction of the largest, at both
+/// sizes, is a null direction (the solver's threshold,
+/// `numeric::solve`'s `NULL_SMALLEST`): an eigenvalue `1 - 1e-6` of a
+/// kernel leaves `1e-6`.
+const NULL_RATIO: f64 = 1e-10;
+/// The multiplier part is invertible when its smallest singular value at
+/// every node is above this fraction of its largest anywhere.
+const SECOND_KIND: f64 = 1e-3;
+
+/// One operator symbol sampled at Nyström nodes `x` with weights `w`: the
+/// multiplier part at each node and the matrix `m(x_i) δ_ij + Σ c k(x_i, x_j) w_j`.
+struct Sampled {
+    mult: Vec<f64>,
+    matrix: DMatrix<f64>,
+}
+
+fn sample(op: &Operator, a: f64, b: f64, x: &[f64], w: &[f64]) -> Option<Sampled> {
+    let n = x.len();
+    let mut mult = vec![0.0; n];
+    let mut matrix = DMatrix::<f64>::zeros(n, n);
+    for (c, term) in &op.terms {
+        match term {
+            Term::Multiply(m) => {
+                for (i, xi) in x.iter().enumerate() {
+                    mult[i] += c * m(*xi);
+                }
+            }
+            Term::Integral {
+                limits: Limits::Fixed { a: lo, b: hi },
+                singularity: Singularity::Smooth,
+                kernel,
+            } => {
+                let sign = if (*lo, *hi) == (a, b) {
+                    1.0
+                } else if (*lo, *hi) == (b, a) {
+                    -1.0
+                } else {
+                    return None;
+                };
+                for (i, xi) in x.iter().enumerate() {
+                    for (j, (tj, wj)) in x.iter().zip(w).enumerate() {
+                        matrix[(i, j)] += sign * c * kernel(*xi, *tj) * wj;
+                    }
+                }
+            }
+            _ => return None,
+        }
+    }
+    for (i, m) in mult.iter().enumerate() {
+        matrix[(i, i)] += m;
+    }
+    (mult.iter().all(|v| v.is_finite()) && matrix.iter().all(|v| v.is_finite()))
+        .then_some(Sampled { mult, matrix })
+}
+
+/// The Nyström discretisation of `sys` at `n` Gauss–Legendre points: the
+/// nodes and weights, the block matrix symmetrised to `W^{1/2} A W^{-1/2}`
+/// (its singular values approximate the operator's on L²), and the
+/// smallest singular value of the multiplier part over its largest.
+/// `None` when an operator is not of the second-kind class.
+/// Nyström nodes, weights, the symmetrised matrix and the multiplier
+/// part's smallest-over-largest singular value.
+type Nystrom = (Vec<f64>, Vec<f64>, DMatrix<f64>, f64);
+
+fn nystrom(sys: &CompiledSystem, n: usize) -> Option<Nystrom> {
+    let (a, b) = sys.domain;
+    let nu = sys.unknowns.len();
+    if nu == 0 || sys.equations.len() != nu || a.partial_cmp(&b) != Some(std::cmp::Ordering::Less) {
+        return None;
+    }
+    let (x, w) = crate::numeric::gauss::gauss_legendre(n).ok()?.mapped(a, b);
+    let mut sampled = Vec::with_capacity(sys.operators.len());
+    for op in &sys.operators {
+        sampled.push(match op {
+            Some(op) => Some(sample(op, a, b, &x, &w)?),
+            None => None,
+        });
+    }
+    let mut big = DMatrix::<f64>::zeros(nu * n, nu * n);
+    // The multiplier part at each node, an nu×nu matrix.
+    let mut parts = vec![DMatrix::<f64>::zeros(nu, nu); n];
+    for (i, eq) in sys.equations.iter().enumerate() {
+        for (j, poly) in eq.lhs.iter().enumerate() {
+            for (word, coeff) in poly.terms() {
+                let c: f64 = num_traits::ToPrimitive::to_f64(coeff)?;
+                let mut m = DMatrix::<f64>::identity(n, n);
+                let mut mult = vec![1.0; n];
+                for s in word {
+                    let op = sampled.get(*s)?.as_ref()?;
+                    m *= &op.matrix;
+                    for (v, o) in mult.iter_mut().zip(&op.mult) {
+                        *v *= o;
+                    }
+                }
+                let mut block = big.view_mut((i * n, j * n), (n, n));
+                block += m * c;
+                for (p, v) in parts.iter_mut().zip(&mult) {
+                    p[(i, j)] += c * v;
+                }
+            }
+        }
+    }
+    let root: Vec<f64> = w.iter().map(|v| v.sqrt()).collect();
+    for r in 0..nu * n {
+        for c in 0..nu * n {
+            big[(r, c)] *= root[r % n] / root[c % n];
+        }
+    }
+    let (mut lo, mut hi) = (f64::INFINITY, 0.0f64);
+    for p in &parts {
+        let sv = p.singular_values();
+        lo = lo.min(sv.min());
+        hi = hi.max(sv.max());
+    }
+    let ratio = if hi > 0.0 { lo / hi } else { 0.0 };
+    big.iter()
+        .all(|v| v.is_finite())
+        .then_some((x, w, big, ratio))
+}
+
+/// Refuses a second-kind system whose operator has a null function (see
+/// the module documentation); passes everything else.
+fn second_kind_null(sys: &CompiledSystem) -> Result<(), PlanError> {
+    let mut found = Vec::new();
+    for n in NYSTROM {
+        let Some((x, w, a, part)) = nystrom(sys, n) else {
+            return Ok(());
+        };
+        if part.is_nan() || part < SECOND_KIND {
+            return Ok(());
+        }
+        let svd = a.clone().svd(true, true);
+        let sv = &svd.singular_values;
+        let (k, smallest) = sv.argmin();
+        let largest = sv.max();
+        if !(largest > 0.0 && smallest < NULL_RATIO * largest) {
+            return Ok(());
+        }
+        let next = sv
+            .iter()
+            .enumerate()
+            .filter(|(i, _)| *i != k)
+            .map(|(_, v)| *v)
+            .fold(f64::INFINITY, f64::min);
+        let (Some(u), Some(vt)) = (&svd.u, &svd.v_t) else {
+            return Ok(());
+        };
+        found.push((
+            x,
+            w,
+            smallest / largest,
+            next / largest,
+            vt.row(k).transpose(),
+            u.column(k).into_owned(),
+        ));
+    }
+    let Some((x, w, smallest, next, right, left)) = found.pop() else {
+        return Ok(());
+    };
+    let coarse = found.first().map_or(smallest, |f| f.2);
+    let n = x.len();
+    let root: Vec<f64> = w.iter().map(|v| v.sqrt()).collect();
+    let (a, b) = sys.domain;
+    // The null function at five points of each unknown's interval, by
+    // barycentric interpolation at the Legendre nodes.
+    let at = [a, a + 0.25 * (b - a), 0.5 * (a + b), a + 0.75 * (b - a), b];
+    let mut values = Vec::new();
+    for j in 0..sys.unknowns.len() {
+        let u: Vec<f64> = (0..n).map(|i| right[j * n + i] / root[i]).collect();
+        values.push(at.map(|p| barycentric(&x, &w, &u, a, b, p)));
+    }
+    let top = values
+        .iter()
+        .flatten()
+        .copied()
+        .fold(0.0f64, |m, v| if v.abs() > m.abs() { v } else { m });
+    let shown: Vec<String> = sys
+        .unknowns
+        .iter()
+        .zip(&values)
+        .flat_map(|(name, vs)| {
+            at.iter()
+                .zip(vs)
+                .map(move |(p, v)| format!("{name}({p}) = {:.4}", v / top))
+        })
+        .collect();
+    // Solutions exist only when the right side is orthogonal to the
+    // adjoint's null function (the left singular vector, W^{1/2}-weighted).
+    let (mut dot, mut gnorm, mut ynorm) = (0.0, 0.0, 0.0);
+    for (i, eq) in sys.equations.iter().enumerate() {
+        for r in 0..n {
+            let g = (eq.rhs)(x[r]) * root[r];
+            let y = left[i * n + r];
+            dot += g * y;
+            gnorm += g * g;
+            ynorm += y * y;
+        }
+    }
+    let scale = (gnorm * ynorm).sqrt();
+    let which = if !scale.is_finite() {
+        String::new()
+    } else if dot.abs() <= 1e-8 * scale {
+        "; the right side satisfies the solvability condition, so there are infinitely many solutions".into()
+    } else {
+        "; the right side is not orthogonal to the adjoint's null function, so there is no solution"
+            .into()
+    };
+    Err(PlanError::Singular(format!(
+        "the problem has more than one solution (or none): the operator has a null direction (its Nyström discretisations at {} and {n} points have smallest singular value {coarse:.1e} and {smallest:.1e} of the largest, the next {next:.1e}), proportional to {}{which}; a side condition (`condition …`) can select one solution",
+        NYSTROM[0],
+        shown.join(", ")
+    )))
+}
+
+/// The polynomial through `(x_i, u_i)` at `p`, `x` the Gauss–Legendre
+/// nodes on `[a, b]` with weights `w` (barycentric weights
+/// `(-1)^i √((1 - s_i²) w_i)`).
+fn barycentric(x: &[f64], w: &[f64], u: &[f64], a: f64, b: f64, p: f64) -> f64 {
+    let (mut num, mut den) = (0.0, 0.0);
+    for (i, ((xi, wi), ui)) in x.iter().zip(w).zip(u).enumerate() {
+        let s = (2.0 * xi - a - b) / (b - a);
+        let lam = if i % 2 == 0 { 1.0 } else { -1.0 } * ((1.0 - s * s) * wi).sqrt();
+        let d = p - xi;
+        if d == 0.0 {
+            return *ui;
+        }
+        num += lam / d * ui;
+        den += lam / d;
+    }
+    num / den
 }
 
 /// The kernel factor's value if it is the same (relative to its size) at
