@@ -124,3 +124,60 @@ fn pointwise_estimates_bound_the_one_interval_manufactured_fields() {
     });
     assert!(compared >= 600, "only {compared} finite estimates compared");
 }
+/// With the unknowns driving the ladder ([`SplitOptions::fields_converge`])
+/// at the default tolerance, the manufactured split problem converges and
+/// its pointwise estimates bound the true errors (`check` with that
+/// option), each within `tol·max(1, size)`.
+#[test]
+fn with_the_fields_driving_the_ladder_the_manufactured_fields_converge() {
+    let opts = SplitOptions {
+        fields_converge: true,
+        ..SplitOptions::default()
+    };
+    let path = "examples/hertz_split_mms.lmx";
+    let text = std::fs::read_to_string(path).expect("example");
+    let prog = parse_program(&text, path).expect("parses");
+    let s = solve_split_fields(&prog, &opts).expect("solves");
+    assert!(s.report.converged, "{:?}", s.report.unknowns);
+    let lf = LevelFields::new(&s).expect("fields");
+    let mut compared = 0;
+    for (u, name) in s.problem.sys.unknowns.iter().enumerate() {
+        let est = &s.report.unknowns[u];
+        assert!(
+            est.error <= s.report.tol * est.size.max(1.0),
+            "{name} ± {:.3e}",
+            est.error
+        );
+        let g = lf.on_grid(u, GRID, true).expect("grid");
+        for ((x, v), e) in g.x.iter().zip(&g.values).zip(&g.errors) {
+            let exact = match name.as_str() {
+                "p" => *x,
+                _ if *x < 0.5 => 4.0 * x * x * x,
+                _ => *x,
+            };
+            let err = (v - exact).abs();
+            assert!(err <= *e, "{name}({x}): error {err:.3e} > estimate {e:.3e}");
+            compared += usize::from(e.is_finite());
+        }
+    }
+    assert!(compared >= 190, "only {compared} finite estimates compared");
+}
+
+/// A field the ladder cannot resolve is not converged, whatever its
+/// outputs do: `p + ∫p = 1/x` (`tests/data/errors/not_converged.lmx`,
+/// the one-interval solver's exit 4) on the split solver with the unknowns
+/// driving the ladder.
+#[test]
+fn an_unresolved_field_is_not_converged() {
+    let path = "tests/data/errors/not_converged.lmx";
+    let text = std::fs::read_to_string(path).expect("input");
+    let prog = parse_program(&text, path).expect("parses");
+    let opts = SplitOptions {
+        fields_converge: true,
+        ..SplitOptions::default()
+    };
+    let s = solve_split_fields(&prog, &opts).expect("solves");
+    assert!(!s.report.converged, "{:?}", s.report.unknowns);
+    let p = &s.report.unknowns[0];
+    assert!(p.error > s.report.tol * p.size.max(1.0), "{p:?}");
+}

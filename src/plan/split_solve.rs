@@ -26,7 +26,9 @@
 //! tolerance. Each is reported with its own such estimate, and so is
 //! every unknown's largest pointwise estimate on the output grid
 //! ([`UnknownEstimate`], at least the rounding floor `32·ε·κ` of
-//! [`rounding_floor`]; it does not drive the ladder). Owns this
+//! [`rounding_floor`]), which drives the ladder too when
+//! [`SplitOptions::fields_converge`] is set: each must then be within
+//! `tol·max(1, size)` ([`estimate`]). Owns this
 //! control logic;
 //! the discretisation is `split.rs`'s.
 use serde::Serialize;
@@ -45,8 +47,17 @@ use crate::system::Program;
 #[derive(Debug, Clone, Copy)]
 pub struct SplitOptions {
     /// Stop when every scalar's, output's and coefficient's estimate is
-    /// within `tol·max(1, |value|)`.
+    /// within `tol·max(1, |value|)` (and, with
+    /// [`SplitOptions::fields_converge`], every unknown's largest pointwise
+    /// estimate within `tol·max(1, size)`, its largest `|u/weight|` on the
+    /// output grid).
     pub tol: f64,
+    /// Whether the unknowns' pointwise estimates enter convergence
+    /// ([`estimate`]). Off by default: on, the flat punch's and the sphere
+    /// indentation's pressure at the ungraded end `x = 0` keep them from
+    /// `1e-10` within the level cap, and `32·ε·κ` every field of the
+    /// contact gallery once `κ > 1.4e4` (issue 25's notes).
+    pub fields_converge: bool,
     /// Highest level tried.
     pub max_level: usize,
     /// Points of the output grid the unknowns are estimated on.
@@ -64,6 +75,7 @@ impl Default for SplitOptions {
             max_level: 8,
             grid: 101,
             method: Method::Coupled,
+            fields_converge: false,
         }
     }
 }
@@ -115,7 +127,9 @@ pub struct SplitReport {
     /// The method used.
     pub method: String,
     /// Largest estimate of a scalar, output or coefficient, each relative
-    /// to `max(1, |value|)`: what convergence compares with the tolerance.
+    /// to `max(1, |value|)`, and with [`SplitOptions::fields_converge`] of
+    /// an unknown, relative to `max(1, size)`: what convergence compares
+    /// with the tolerance.
     pub error_estimate: f64,
     /// Whether it is within the tolerance.
     pub converged: bool,
@@ -296,7 +310,8 @@ fn solve_split_ladder(
                 let est = if levels.is_empty() {
                     f64::INFINITY
                 } else {
-                    (estimate(&problem, &levels, &this) + rt).max(d.consistency)
+                    (estimate(&problem, &levels, &this, opts.fields_converge) + rt)
+                        .max(d.consistency)
                 };
                 let mut report = report(&problem, &d, &levels, &this, est, false, opts.tol, k, rt);
                 report.stopped = Some(format!(
@@ -343,8 +358,9 @@ fn solve_split_ladder(
             (this.unknowns, this.sizes) =
                 unknown_distances(&problem, &d, p, shifted.as_ref(), scalar_error, opts.grid)?;
         }
-        let mut est = (!levels.is_empty())
-            .then(|| (estimate(&problem, &levels, &this) + rt).max(d.consistency));
+        let mut est = (!levels.is_empty()).then(|| {
+            (estimate(&problem, &levels, &this, opts.fields_converge) + rt).max(d.consistency)
+        });
         let mut converged = est.is_some_and(|e| e <= opts.tol);
         // Would grading the undeclared ends move the answer?
         use super::split_ends::{APPROACH_LEVEL, Mode, Verdict, check};
@@ -502,7 +518,7 @@ pub(super) fn estimate_of(
     i: usize,
 ) -> f64 {
     if refines(levels, this) {
-        // Not floored at `32·ε·κ` ([`rounding_floor`]): κ reaches 1.4e4
+        // Not floored at `32·ε·κ` ([`rounding_floor`](crate::numeric::solve::rounding_floor)): κ reaches 1.4e4
         // by level 7 on the contact gallery (floor 1.0e-10), where the
         // radii are right to 1e-13 (the cone's `a`), so no example would
         // reach the default tolerance.
@@ -656,13 +672,22 @@ fn unknown_estimates(levels: &[Level], this: &Level) -> Vec<(f64, f64, f64)> {
 
 /// The estimate that decides convergence: the largest of every scalar's,
 /// output's and free coefficient's [`level_estimate`] (a coefficient a
-/// condition fixes is excluded), each divided by `max(1, |value|)`: converged means every such absolute estimate is
-/// within `tol·max(1, |value|)` (the rule of [`crate::report`]). The
-/// unknowns' estimates on the output grid ([`unknown_estimates`]) are
-/// reported but do not enter it: on the contact gallery they do not reach
-/// 1e-10 within the level cap (the flat punch's `p(0)` is off by 2.6e-3
-/// on level 6, its estimate 2.6e-3).
-fn estimate(problem: &SplitProblem, levels: &[Level], this: &Level) -> f64 {
+/// condition fixes is excluded), each divided by `max(1, |value|)`, and
+/// when `fields` ([`SplitOptions::fields_converge`]) of every unknown's
+/// largest pointwise estimate on the output grid ([`unknown_estimates`])
+/// divided by `max(1, size)`, its size being its largest `|u/weight|`
+/// there: converged means every scalar's, output's and coefficient's
+/// absolute estimate is within `tol·max(1, |value|)` (the rule of
+/// [`crate::report`]) and every unknown's within `tol·max(1, size)` at
+/// every point of the grid ([`LevelFields::on_grid`] leaves out a
+/// singular term's own point and points within the scalars' estimate of
+/// an end that moves with them). Measured with the unknowns in
+/// (`probes/unknowns_ladder.rs`): the flat punch's `p(0)`
+/// (`examples/contact/flat_punch.lmx`, the ungraded end) is off by
+/// 2.1e-5, 4.2e-4 and 1.7e-3 on levels 5, 7 and 9 while every other grid
+/// point is within 1e-12, so that file cannot converge; nor can a field
+/// at `κ > 1.4e4`, where `32·ε·κ` exceeds `1e-10`.
+fn estimate(problem: &SplitProblem, levels: &[Level], this: &Level, fields: bool) -> f64 {
     let rel = |e: f64, v: f64| e / v.abs().max(1.0);
     let scalars = (0..this.scalars.len()).map(|i| {
         rel(
@@ -694,9 +719,20 @@ fn estimate(problem: &SplitProblem, levels: &[Level], this: &Level) -> f64 {
                 this.coefficients[i],
             )
         });
+    // Each unknown's largest pointwise estimate on the output grid,
+    // relative to `max(1, size)` (its largest `|u/weight|` there): a
+    // field's absolute error is within `tol` where it is of order one or
+    // below, and within `tol` of its own size where it is larger, as a
+    // scalar's is within `tol·max(1, |value|)`.
+    let unknowns = unknown_estimates(levels, this)
+        .into_iter()
+        .zip(&this.sizes)
+        .filter(|_| fields)
+        .map(|((e, _, _), &size)| rel(e, size));
     scalars
         .chain(outputs)
         .chain(coefficients)
+        .chain(unknowns)
         .fold(0.0, f64::max)
 }
 
