@@ -162,6 +162,11 @@ pub fn check_split(input: &SplitInput) -> Result<Uniqueness, PlanError> {
 
 /// Gauss–Legendre sizes of the two Nyström matrices of [`second_kind_null`].
 const NYSTROM: [usize; 2] = [48, 96];
+/// Largest Nyström block matrix decomposed (unknowns times nodes): six
+/// unknowns at 96 points. A larger system (a chain of 40 smooth
+/// equations would need 3840 rows) is left to the solver's own null
+/// probe, which is bounded likewise.
+const NYSTROM_MAX: usize = 576;
 /// A smallest singular value below this fraction of the largest, at both
 /// sizes, is a null direction (the solver's threshold,
 /// `numeric::solve`'s `NULL_SMALLEST`): an eigenvalue `1 - 1e-6` of a
@@ -229,7 +234,11 @@ type Nystrom = (Vec<f64>, Vec<f64>, DMatrix<f64>, f64);
 fn nystrom(sys: &CompiledSystem, n: usize) -> Option<Nystrom> {
     let (a, b) = sys.domain;
     let nu = sys.unknowns.len();
-    if nu == 0 || sys.equations.len() != nu || a.partial_cmp(&b) != Some(std::cmp::Ordering::Less) {
+    if nu == 0
+        || nu * n > NYSTROM_MAX
+        || sys.equations.len() != nu
+        || a.partial_cmp(&b) != Some(std::cmp::Ordering::Less)
+    {
         return None;
     }
     let (x, w) = crate::numeric::gauss::gauss_legendre(n).ok()?.mapped(a, b);

@@ -195,6 +195,7 @@ pub fn solve_split_solution(
         max_level: s.max_level,
         grid: s.grid,
         method: s.method.unwrap_or(Method::Coupled),
+        ..SplitOptions::default()
     };
     let sol = crate::plan::split_solve::solve_split_within(input, &opts, s.max_memory)?;
     let r = from_split(&sol, s.grid)?;
