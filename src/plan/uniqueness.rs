@@ -323,7 +323,7 @@ fn second_kind_null(sys: &CompiledSystem) -> Result<(), PlanError> {
         // The rest of the spectrum must be resolved: one isolated value at
         // rounding level, not a cluster (`p + 1e20·∫(x + t) p` is
         // invertible, its small singular values all near 1e-20 of the largest).
-        if !(next > NULL_NEXT * largest) {
+        if next.is_nan() || next <= NULL_NEXT * largest {
             return Ok(());
         }
         let (Some(u), Some(vt)) = (&svd.u, &svd.v_t) else {
