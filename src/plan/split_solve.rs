@@ -28,7 +28,7 @@
 //! ([`UnknownEstimate`], at least the rounding floor `32·ε·κ` of
 //! [`rounding_floor`]), which drives the ladder too when
 //! [`SplitOptions::fields_converge`] is set: each must then be within
-//! `tol·max(1, size)` ([`estimate`]). Owns this
+//! `tol·max(1, size)` (`estimate`). Owns this
 //! control logic;
 //! the discretisation is `split.rs`'s.
 use serde::Serialize;
@@ -53,7 +53,7 @@ pub struct SplitOptions {
     /// output grid).
     pub tol: f64,
     /// Whether the unknowns' pointwise estimates enter convergence
-    /// ([`estimate`]). Off by default: on, the flat punch's and the sphere
+    /// (`estimate`). Off by default: on, the flat punch's and the sphere
     /// indentation's pressure at the ungraded end `x = 0` keep them from
     /// `1e-10` within the level cap, and `32·ε·κ` every field of the
     /// contact gallery once `κ > 1.4e4` (issue 25's notes).
