@@ -22,12 +22,12 @@ const NULL_PROBE: f64 = 1e8;
 /// a few LU factorisations; beyond this the conditioning limit alone acts).
 const NULL_PROBE_SIZE: usize = 1500;
 /// A smallest singular value below this fraction of the largest ...
-const NULL_SMALLEST: f64 = 1e-10;
+pub(crate) const NULL_SMALLEST: f64 = 1e-10;
 /// ... and below this fraction of the next one, ...
 const NULL_GAP: f64 = 1e-3;
 /// ... while the next one is above this fraction of the largest (the rest
 /// of the spectrum is resolved), is a null direction.
-const NULL_NEXT: f64 = 1e-6;
+pub(crate) const NULL_NEXT: f64 = 1e-6;
 
 /// The two smallest singular values over the largest when the smallest is
 /// isolated (below `NULL_GAP` of the next), tiny (below

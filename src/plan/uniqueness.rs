@@ -42,6 +42,7 @@ use super::compiled::CompiledSystem;
 use super::error::PlanError;
 use super::split_input::SplitInput;
 use crate::numeric::operator::{Limits, Operator, Singularity, Term};
+use crate::numeric::solve::{NULL_NEXT, NULL_SMALLEST};
 use nalgebra::DMatrix;
 
 /// What the operators say about uniqueness.
@@ -167,15 +168,9 @@ const NYSTROM: [usize; 2] = [48, 96];
 /// equations would need 3840 rows) is left to the solver's own null
 /// probe, which is bounded likewise.
 const NYSTROM_MAX: usize = 576;
-/// A smallest singular value below this fraction of the largest, at both
-/// sizes, is a null direction (the solver's threshold,
-/// `numeric::solve`'s `NULL_SMALLEST`): an eigenvalue `1 - 1e-6` of a
-/// kernel leaves `1e-6`.
-const NULL_RATIO: f64 = 1e-10;
-/// The next singular value must be above this fraction of the largest
-/// (the solver's `NULL_NEXT`) ...
-const NULL_NEXT: f64 = 1e-6;
-/// ... and agree at both sizes to this relative difference.
+/// The next singular value (above the solver's `NULL_NEXT` of the largest)
+/// must agree at both sizes to this relative difference; the smallest
+/// must be below `NULL_SMALLEST` of the largest at both.
 const NEXT_AGREE: f64 = 1e-6;
 /// The multiplier part is invertible when its smallest singular value at
 /// every node is above this fraction of its largest anywhere.
@@ -311,7 +306,7 @@ fn second_kind_null(sys: &CompiledSystem) -> Result<(), PlanError> {
         let sv = &svd.singular_values;
         let (k, smallest) = sv.argmin();
         let largest = sv.max();
-        if !(largest > 0.0 && smallest < NULL_RATIO * largest) {
+        if !(largest > 0.0 && smallest < NULL_SMALLEST * largest) {
             return Ok(());
         }
         let next = sv
