@@ -44,9 +44,10 @@ pub enum NumericError {
     /// of rounding or discretisation error: the operator has (or nearly
     /// has) a null space, so the problem has more than one solution or
     /// none. `smallest` and `next` are the two smallest singular values
-    /// relative to the largest (columns scaled to unit max-norm).
+    /// relative to the largest (columns scaled to unit max-norm). The
+    /// right side is not examined, so the message names both cases.
     #[error(
-        "the problem has more than one solution (or none): the discretised system of size {size} has a null direction (its smallest singular value is {smallest:.1e} of the largest, the next {next:.1e}), so the operator is not invertible; a side condition (`condition …`) can select one solution"
+        "the problem has more than one solution or none: the discretised system of size {size} has a null direction (its smallest singular value is {smallest:.1e} of the largest, the next {next:.1e}), so the operator is not invertible; if the right side lies in its range, any multiple of the null function can be added to a solution and a side condition (`condition …`) can select one; if not, there is no solution and the right side must be changed (this check does not tell which)"
     )]
     NullSpace {
         /// Size of the system.

@@ -7,8 +7,10 @@
 //!   density `1/√((t - a)(b - t))` to `π (α ln((b - a)/4) + β)`, a
 //!   constant; when it vanishes (the logarithmic capacity `(b - a)/4` is
 //!   1 for `β = 0`) the operator has a null space, so the equation has
-//!   infinitely many solutions or none. It is refused
-//!   ([`PlanError::Singular`]), asking for a side condition.
+//!   infinitely many solutions or none: infinitely many when the right
+//!   side `g` has `∫ g(x)/√((x - a)(b - x)) dx = 0`. It is refused
+//!   ([`PlanError::Singular`]), saying which: asking for a side condition,
+//!   or for a right side satisfying that condition.
 //! * `γ PV∫_a^b f(t)/(t - x) dt` (the airfoil equation) annihilates the
 //!   same density: the solutions unbounded at both ends form a
 //!   one-parameter family, and the two classes bounded at one end have
@@ -24,7 +26,9 @@
 //!   rounding for analytic kernels) have a smallest singular value at
 //!   rounding level only when the operator has a null function. Then the
 //!   problem is refused ([`PlanError::Singular`]), naming the null
-//!   function by its values and whether the right side admits solutions.
+//!   function by its values and whether the right side admits solutions
+//!   (is orthogonal to the adjoint's null function): a side condition
+//!   selects one of many, or the right side must change.
 //!   A discrete solver need not see this: in a weighted trial space the
 //!   null function is only approximated, so its singular value falls
 //!   with the level no faster than the approximation error.
@@ -135,9 +139,20 @@ pub fn check(sys: &CompiledSystem) -> Result<Uniqueness, PlanError> {
                     cap.ln()
                 )
             };
-            return Err(PlanError::Singular(format!(
-                "the problem has more than one solution (or none): the logarithmic kernel's operator maps {density} to 0, because {why}, so any multiple of it can be added to a solution; add a side condition such as `{cond}`"
-            )));
+            let head =
+                format!("the logarithmic kernel's operator maps {density} to 0, because {why}");
+            let weighted = format!("∫ g(x)/sqrt(({})*({b} - x)) dx", minus(a));
+            return Err(PlanError::Singular(match log_solvable(sys, a, b) {
+                Solvable::Yes => format!(
+                    "the problem has more than one solution: {head}, so any multiple of it can be added to a solution (the right side g satisfies the solvability condition {weighted} = 0); a side condition such as `{cond}` can select one"
+                ),
+                Solvable::No(v) => format!(
+                    "the problem has no solution: {head}, and the operator's range is the right sides g with {weighted} = 0, but here it is {v:.6e}; a side condition cannot help: the right side must be changed to satisfy that condition"
+                ),
+                Solvable::Unknown => format!(
+                    "the problem has more than one solution or none: {head}; if the right side g satisfies {weighted} = 0 any multiple of that function can be added to a solution and a side condition such as `{cond}` can select one, otherwise there is no solution and the right side must be changed (the integral could not be evaluated reliably)"
+                ),
+            }));
         }
     }
     Ok(Uniqueness::Unknown)
@@ -384,19 +399,68 @@ fn second_kind_null(sys: &CompiledSystem) -> Result<(), PlanError> {
         }
     }
     let scale = (gnorm * ynorm).sqrt();
-    let which = if !scale.is_finite() {
-        String::new()
-    } else if dot.abs() <= 1e-8 * scale {
-        "; the right side satisfies the solvability condition, so there are infinitely many solutions".into()
-    } else {
-        "; the right side is not orthogonal to the adjoint's null function, so there is no solution"
-            .into()
-    };
-    Err(PlanError::Singular(format!(
-        "the problem has more than one solution (or none): the operator has a null direction (its Nyström discretisations at {} and {n} points have smallest singular value {coarse:.1e} and {smallest:.1e} of the largest, the next {next:.1e}), proportional to {}{which}; a side condition (`condition …`) can select one solution",
+    let what = format!(
+        "the operator has a null direction (its Nyström discretisations at {} and {n} points have smallest singular value {coarse:.1e} and {smallest:.1e} of the largest, the next {next:.1e}), proportional to {}",
         NYSTROM[0],
         shown.join(", ")
-    )))
+    );
+    Err(PlanError::Singular(if !scale.is_finite() {
+        format!(
+            "the problem has more than one solution or none: {what}; if the right side is orthogonal to the adjoint's null function any multiple of that direction can be added to a solution and a side condition (`condition …`) can select one, otherwise there is no solution and the right side must be changed (the right side could not be evaluated at every node)"
+        )
+    } else if dot.abs() <= 1e-8 * scale {
+        format!(
+            "the problem has more than one solution: {what}; the right side is orthogonal to the adjoint's null function (the solvability condition), so any multiple of that direction can be added to a solution; a side condition (`condition …`) can select one"
+        )
+    } else {
+        format!(
+            "the problem has no solution: {what}; the right side is not orthogonal to the adjoint's null function (its component along it is {:.1e} of its size), so no function solves the equation; a side condition cannot help: the right side must be changed to be orthogonal to that function",
+            dot.abs() / scale
+        )
+    }))
+}
+
+/// Whether the right side lies in an operator's range.
+enum Solvable {
+    Yes,
+    /// No; the value of the solvability functional.
+    No(f64),
+    /// The functional could not be evaluated reliably.
+    Unknown,
+}
+
+/// The logarithmic operator of [`check`] with its null function
+/// `w = 1/√((x - a)(b - x))` (symmetric kernel: `w` spans the adjoint's
+/// null space too) maps onto the right sides `g` with `∫_a^b g w dx = 0`
+/// (the Chebyshev coefficient of `T_0` of `g`, the only one the operator
+/// does not reach). The integral by Gauss–Chebyshev rules at 64 and 128
+/// points, `π/n Σ g(x_k)`: zero when both are below `1e-10` of
+/// `π/n Σ |g(x_k)|`, nonzero when they agree to `1e-6` and are above
+/// `1e-8` of it; otherwise unknown (e.g. a right side with a feature too
+/// narrow for 128 points).
+fn log_solvable(sys: &CompiledSystem, a: f64, b: f64) -> Solvable {
+    let rhs = &sys.equations[0].rhs;
+    let rule = |n: usize| {
+        let (mut sum, mut abs) = (0.0, 0.0);
+        for k in 0..n {
+            let theta = std::f64::consts::PI * (2 * k + 1) as f64 / (2 * n) as f64;
+            let g = rhs(0.5 * (a + b) + 0.5 * (b - a) * theta.cos());
+            sum += g;
+            abs += g.abs();
+        }
+        let h = std::f64::consts::PI / n as f64;
+        (sum * h, abs * h)
+    };
+    let ((coarse, _), (fine, scale)) = (rule(64), rule(128));
+    if !(coarse.is_finite() && fine.is_finite() && scale.is_finite()) {
+        Solvable::Unknown
+    } else if coarse.abs() <= 1e-10 * scale && fine.abs() <= 1e-10 * scale {
+        Solvable::Yes
+    } else if fine.abs() > 1e-8 * scale && (coarse - fine).abs() <= 1e-6 * fine.abs() {
+        Solvable::No(fine)
+    } else {
+        Solvable::Unknown
+    }
 }
 
 /// The polynomial through `(x_i, u_i)` at `p`, `x` the Gauss–Legendre
@@ -441,16 +505,38 @@ mod tests {
     }
 
     #[test]
-    fn capacity_one_log_equations_are_refused() {
+    fn capacity_one_log_equations_are_refused_saying_whether_a_solution_exists() {
+        // Right sides with ∫ g/√((x - a)(b - x)) = 0: infinitely many
+        // solutions, a side condition selects one.
         for src in [
             "operator k = 1/pi*int(0..4) ln(abs(x - t)) dt\nunknown f on [0, 4]\nequation k f = x - 2\n",
+            "operator k = int(-1..1) ln(abs(2*x - 2*t)) dt\nunknown f on [-1, 1]\nequation k f = x\n",
+        ] {
+            let e = check_src(src).expect_err(src).to_string();
+            assert!(
+                e.starts_with("the problem has more than one solution:"),
+                "{e}"
+            );
+            assert!(
+                e.contains("condition int(") && e.contains("can select one"),
+                "{e}"
+            );
+            assert!(!e.contains("no solution"), "{e}");
+        }
+        // ∫ 1/√(1 - x²) = π ≠ 0: no solution, and no side condition helps.
+        for src in [
             "operator k = int(-1..1) ln(abs(2*x - 2*t)) dt\nunknown f on [-1, 1]\nequation k f = 1\n",
             "operator k = int(-1..1) ln(abs(x - t)) dt + ln(2)*int(-1..1) dt\nunknown f on [-1, 1]\nequation k f = 1\n",
+            "operator k = int(-2..2) ln(abs(x - t)) dt\nunknown f on [-2, 2]\nequation k f = x^2\n",
         ] {
             let e = check_src(src).expect_err(src);
             assert!(!e.is_input_error(), "{e}");
-            assert!(e.to_string().contains("more than one solution"), "{e}");
-            assert!(e.to_string().contains("condition int("), "{e}");
+            let e = e.to_string();
+            assert!(e.starts_with("the problem has no solution:"), "{e}");
+            assert!(
+                e.contains("cannot help") && !e.contains("can select one"),
+                "{e}"
+            );
         }
     }
 
@@ -480,8 +566,32 @@ mod tests {
 
     #[test]
     fn second_kind_null_functions_are_found_and_ill_conditioning_is_not_one() {
+        // The right side decides between many solutions and none: ∫ e^x·1
+        // ≠ 0, while x - 2e^x/(e² - 1) is orthogonal to e^x.
+        let rank_one =
+            "operator k = id - int(0..1) 2*exp(x)*exp(t)/(exp(2) - 1) dt\nunknown f on [0, 1]\n";
+        let e = check_src(&format!("{rank_one}equation k f = 1\n"))
+            .expect_err("no solution")
+            .to_string();
+        assert!(e.starts_with("the problem has no solution:"), "{e}");
+        assert!(
+            e.contains("cannot help") && !e.contains("can select one"),
+            "{e}"
+        );
+        let e = check_src(&format!(
+            "{rank_one}equation k f = x - 2*exp(x)/(exp(2) - 1)\n"
+        ))
+        .expect_err("many solutions")
+        .to_string();
+        assert!(
+            e.starts_with("the problem has more than one solution:"),
+            "{e}"
+        );
+        assert!(
+            e.contains("can select one") && !e.contains("no solution"),
+            "{e}"
+        );
         for src in [
-            "operator k = id - int(0..1) 2*exp(x)*exp(t)/(exp(2) - 1) dt\nunknown f on [0, 1]\nequation k f = 1\n",
             "operator k = id - int(0..1) 3*x*t dt\nunknown f on [0, 1]\nequation k*k f = x\n",
             "operator k = int(0..1) 3*x*t dt\nunknown f on [0, 1]\nunknown g on [0, 1]\nequation f - k g = 1\nequation g - f = 0\n",
         ] {
