@@ -242,3 +242,29 @@ fn max_memory_stops_the_ladder_or_names_the_size_needed() {
     let (code, _, err) = run(&args(&["solve", "--max-memory", "lots", &file]));
     assert_eq!(code, 1, "{err}");
 }
+
+/// Peaked right sides (`lorentz_rhs_*.lmx` at 0.123456789,
+/// `lorentz_irrational_*.lmx` at 1/√7; widths 1e-2…1e-8) across
+/// tolerances: the width-1e-5 peak was wrong with exit 0 from
+/// `--tol 1e-6` upward. Every run is held to the same contract.
+#[test]
+fn peaked_right_sides_keep_the_contract_at_every_tolerance() {
+    for stem in ["lorentz_rhs", "lorentz_irrational"] {
+        for k in [2, 4, 6, 8] {
+            let path = format!("tests/data/traps/{stem}_{k}.lmx");
+            let trap = read_trap(Path::new(&path));
+            for tol in ["1e-4", "1e-6", "1e-8", "1e-12"] {
+                let args: Vec<String> = ["solve", "--json", &path, "--tol", tol]
+                    .iter()
+                    .map(|s| s.to_string())
+                    .collect();
+                let (code, out, err) = run(&args);
+                assert!(
+                    code == 0 || code == 4,
+                    "{path} --tol {tol}: exit {code}\n{err}"
+                );
+                check(&format!("{path} --tol {tol}"), &trap, code, &out, &err);
+            }
+        }
+    }
+}
