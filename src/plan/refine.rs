@@ -511,13 +511,23 @@ fn trial(
 /// gives each unknown the candidate weight whose two levels agree best on
 /// that unknown; the trial whose largest per-unknown distance (or
 /// least-squares residual) is smallest is kept, the earliest on a tie.
+///
+/// A trial refused for a null direction of its discretised operator
+/// (`NumericError::NullSpace`) is not merely a weight that does not fit:
+/// in that class the problem has more than one solution or none. The
+/// refusal is kept ([`Chosen::null`]): it is the error when no weight
+/// succeeds, and [`solve_derived`] reports it when the chosen weight's
+/// answer does not converge, or states that the answer is not unique
+/// when it does (a weight can exclude a null function legitimately, as
+/// the airfoil equation's classes bounded at one end do).
 fn choose_weights(
     sys: &CompiledSystem,
     s: &Setup,
     opts: &SolveOptions,
-) -> Result<Trial, PlanError> {
+) -> Result<Chosen, PlanError> {
     let mut best: Option<Trial> = None;
     let mut first_err = None;
+    let mut null: Option<(Vec<Vec<Factor>>, PlanError)> = None;
     // Per unknown: the smallest distance met and the weight giving it.
     let mut per: Vec<Option<(f64, Vec<Factor>)>> = vec![None; sys.unknowns.len()];
     let mut tried: Vec<Vec<Vec<Factor>>> = Vec::new();
@@ -536,13 +546,19 @@ fn choose_weights(
                     best = Some(t);
                 }
             }
+            Err(e) if is_null_direction(&e) => {
+                null.get_or_insert((w.clone(), e));
+            }
             Err(e) => {
                 first_err.get_or_insert(e);
             }
         }
     }
     let Some(mut best) = best else {
-        return Err(first_err.unwrap_or(PlanError::Invalid("nothing to solve".into())));
+        return Err(match null {
+            Some((w, e)) => in_class(e, &weights_text(sys, s, &w), ""),
+            None => first_err.unwrap_or(PlanError::Invalid("nothing to solve".into())),
+        });
     };
     // Unknowns no trial computed keep the best trial's weight.
     let combo: Vec<Vec<Factor>> = per
@@ -556,7 +572,85 @@ fn choose_weights(
     {
         best = t;
     }
-    Ok(best)
+    let null = null.map(|(w, e)| (weights_text(sys, s, &w), e));
+    Ok(Chosen { trial: best, null })
+}
+
+/// [`choose_weights`]'s answer: the trial kept, and the first null-direction
+/// refusal met under another weight (that weight's text and the error).
+struct Chosen {
+    trial: Trial,
+    null: Option<(String, PlanError)>,
+}
+
+/// Whether `e` is the solver's discrete null-direction refusal.
+fn is_null_direction(e: &PlanError) -> bool {
+    matches!(
+        e,
+        PlanError::Numeric {
+            source: crate::numeric::NumericError::NullSpace { .. },
+            ..
+        }
+    )
+}
+
+/// The singular values of a null-direction refusal, in words.
+fn null_numbers(e: &PlanError) -> String {
+    match e {
+        PlanError::Numeric {
+            source: crate::numeric::NumericError::NullSpace { smallest, next, .. },
+            ..
+        } => format!("smallest singular value {smallest:.1e} of the largest, the next {next:.1e}"),
+        e => e.to_string(),
+    }
+}
+
+/// A null-direction refusal `e` naming the trial space it was met in
+/// (`weight`) and, after it, `more`.
+fn in_class(e: PlanError, weight: &str, more: &str) -> PlanError {
+    match e {
+        PlanError::Numeric { context, source } => PlanError::Numeric {
+            context: format!("{context}, in the trial space of weight {weight}{more}"),
+            source,
+        },
+        e => e,
+    }
+}
+
+/// A weight as the report prints it, e.g. `(x - 0)^(0.5)*(4 - x)^(-0.5)`
+/// or `1`.
+fn weight_text(fs: &[Factor], hi: f64) -> String {
+    match fs {
+        [] => "1".to_string(),
+        fs => fs
+            .iter()
+            .map(|f| {
+                if f.at >= hi {
+                    format!("({} - x)^({})", f.at, f.exponent)
+                } else {
+                    format!("(x - {})^({})", f.at, f.exponent)
+                }
+            })
+            .collect::<Vec<_>>()
+            .join("*"),
+    }
+}
+
+/// The weights of all unknowns: one text when they agree, else
+/// `name: weight` for each.
+fn weights_text(sys: &CompiledSystem, s: &Setup, weights: &[Vec<Factor>]) -> String {
+    if weights.iter().all(|w| *w == weights[0]) {
+        weights
+            .first()
+            .map_or_else(|| "1".into(), |w| weight_text(w, s.domain.1))
+    } else {
+        sys.unknowns
+            .iter()
+            .zip(weights)
+            .map(|(n, w)| format!("{n}: {}", weight_text(w, s.domain.1)))
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
 }
 
 /// Solves `prog` by `opts.method`, refining until two levels agree: the
@@ -600,7 +694,10 @@ pub fn solve_derived(
     let max_level = opts.max_level.max(2);
     let budget = opts.max_memory.unwrap_or_else(budget::default_budget);
     fits(sys, &s, 2, budget)?;
-    let chosen = choose_weights(sys, &s, opts)?;
+    let Chosen {
+        trial: chosen,
+        null,
+    } = choose_weights(sys, &s, opts)?;
     let weights = &chosen.weights;
     let (first, mut last) = chosen.levels;
     let mut est = distance(&first, &last).max(last.sol.residual);
@@ -641,6 +738,26 @@ pub fn solve_derived(
     }
     if let super::uniqueness::Uniqueness::Chosen(w) = choice {
         r.uniqueness = Some(w);
+    }
+    if let Some((other, e)) = null {
+        let here = weights_text(sys, &s, weights);
+        if !r.converged {
+            // The chosen space only approximates what the other represents:
+            // its answer drifts with the level (exit 4 without a cause).
+            return Err(in_class(
+                e,
+                &other,
+                &format!(
+                    " (in the trial space of weight {here} the refinement did not reach the tolerance)"
+                ),
+            ));
+        }
+        if r.uniqueness.is_none() {
+            r.uniqueness = Some(format!(
+                "the solution is not unique across trial spaces: in the trial space of weight {other} the discretised operator has a null direction ({}), so in that class the problem has more than one solution or none; the answer is the one in the class of the weight {here} shown, where the operator is invertible; a side condition (`condition …`) can select another",
+                null_numbers(&e)
+            ));
+        }
     }
     Ok(r)
 }
@@ -695,20 +812,7 @@ fn report(
                 error_estimate = error_estimate.max(est * scale * w.abs());
             }
         }
-        let weight = match weights[j].as_slice() {
-            [] => "1".to_string(),
-            fs => fs
-                .iter()
-                .map(|f| {
-                    if f.at >= s.domain.1 {
-                        format!("({} - x)^({})", f.at, f.exponent)
-                    } else {
-                        format!("(x - {})^({})", f.at, f.exponent)
-                    }
-                })
-                .collect::<Vec<_>>()
-                .join("*"),
-        };
+        let weight = weight_text(&weights[j], s.domain.1);
         unknowns.push(UnknownValues {
             name: sys.unknowns[j].clone(),
             x,
