@@ -268,3 +268,23 @@ fn peaked_right_sides_keep_the_contract_at_every_tolerance() {
         }
     }
 }
+
+/// The contact file with a spike (`contact_spike.lmx`: a unit-mass
+/// Gaussian of width 1e-4 at t = 1/(2π) in a kernel, the Hertz solution
+/// manufactured to solve it) across tolerances: the spike is graded to in
+/// the split-domain mesh, so every run answers (it refused, "no admissible
+/// root", the spike unseen) and bounds the true a and P.
+#[test]
+fn the_contact_spike_is_answered_within_its_estimate_at_every_tolerance() {
+    let path = "tests/data/traps/contact_spike.lmx";
+    let trap = read_trap(Path::new(path));
+    for tol in ["1e-4", "1e-8", "1e-10"] {
+        let args: Vec<String> = ["solve", "--json", path, "--tol", tol]
+            .iter()
+            .map(|s| s.to_string())
+            .collect();
+        let (code, out, err) = run(&args);
+        assert_eq!(code, 0, "--tol {tol}: {err}");
+        check(&format!("{path} --tol {tol}"), &trap, code, &out, &err);
+    }
+}

@@ -527,6 +527,34 @@ impl SplitProblem {
                 layers: lvl.end_layers().min(most),
             });
         }
+        // Narrow features of the kernels and right sides (`features.rs`,
+        // e.g. a spike `exp(-((t - c)/ε)²)` at a fixed `t`): graded from
+        // both sides with the layers that shrink the panels to the
+        // feature's width (`scale`) and the level's layers beyond, so that
+        // the panels at the feature's scale carry the level's node counts
+        // (those touching a graded point have the fewest) and gain nodes
+        // from level to level. A feature narrower than the grading cap
+        // resolves is refused by name.
+        for &(z, width) in &self.sys.features {
+            if !(inside(z) && width > 0.0 && width < super::features::NARROW * (b - a)) {
+                continue;
+            }
+            let scale = ((width / (b - a)).ln() / lvl.sigma.ln()).ceil().max(0.0) as usize + 1;
+            if scale > MAX_LAYERS {
+                return Err(PlanError::Numeric {
+                    context: "resolving a narrow feature".into(),
+                    source: crate::numeric::NumericError::InvalidMesh(format!(
+                        "the formulas have a feature of width {width:.1e} at {z} (a narrow peak or a pole beside the interval), narrower than the split-domain mesh resolves ({MAX_LAYERS} grading layers of ratio {} toward it)",
+                        lvl.sigma
+                    )),
+                });
+            }
+            gradings.push(Grading {
+                at: z,
+                side: Side::Both,
+                layers: lvl.layers + scale,
+            });
+        }
         pts.sort_by(f64::total_cmp);
         pts.dedup();
         for &z in pts.iter().filter(|&&z| inside(z)) {
