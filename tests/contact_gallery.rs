@@ -10,11 +10,13 @@ mod common;
 use common::cli::json;
 use std::f64::consts::PI;
 
-/// The value and estimate of `name` among the outputs or scalars.
+/// The value and estimate of `name` among the outputs, scalars or
+/// singular coefficients.
 fn get(j: &serde_json::Value, name: &str) -> (f64, f64) {
     let v = j["outputs"][name]
         .as_f64()
         .or_else(|| j["scalars"][name].as_f64())
+        .or_else(|| j["coefficients"][name].as_f64())
         .unwrap_or_else(|| panic!("no {name} in {j}"));
     let e = j["error_estimates"][name]
         .as_f64()
@@ -102,5 +104,29 @@ fn cattaneo_mindlin_at_given_tangential_force() {
     check(
         "examples/contact/cattaneo_mindlin_force.lmx",
         &[("c", c), ("S", mu * (1.0 - c * c)), ("P", p)],
+    );
+}
+
+#[test]
+fn jkr_adhesion_at_given_indentation() {
+    // B = -C/sqrt(a) at the edge: a is the root of
+    // delta = a^2 - (pi/2) C sqrt(a), P = (8/3) a^3 - 2 pi C a^(3/2);
+    // C = 1/4, delta = 1/2. The root by bisection to the last bit.
+    let (c, delta) = (0.25f64, 0.5f64);
+    let f = |a: f64| a * a - PI / 2.0 * c * a.sqrt() - delta;
+    let (mut lo, mut hi) = (0.5f64, 1.5f64);
+    assert!(f(lo) < 0.0 && f(hi) > 0.0);
+    for _ in 0..200 {
+        let m = 0.5 * (lo + hi);
+        if f(m) > 0.0 { hi = m } else { lo = m }
+    }
+    let a = lo;
+    check(
+        "examples/contact/jkr_indentation.lmx",
+        &[
+            ("a", a),
+            ("P", 8.0 / 3.0 * a.powi(3) - 2.0 * PI * c * a.powf(1.5)),
+            ("B", -c / a.sqrt()),
+        ],
     );
 }

@@ -151,3 +151,54 @@ fn a_scalar_in_an_operator_range_or_an_output_is_an_input_error() {
         );
     }
 }
+
+/// JKR with an auxiliary unknown `z = 2p` that carries a singular term of
+/// its own at the contact edge: the identity (or an integral from 0)
+/// keeps the term's singularity there, so no limit fixes its coefficient.
+/// Refused in the user's terms (exit 2), not with an assembly error; with
+/// Abel equations for both unknowns the same file solves.
+#[test]
+fn a_singular_term_whose_equation_keeps_the_singularity_is_refused_in_words() {
+    let jkr = std::fs::read_to_string("examples/contact/jkr_indentation.lmx").expect("source");
+    let base = jkr
+        .replace("unknown p on [0, 2]", "unknown p, z on [0, 2]")
+        .replace(
+            "operator k1 = int(x..2) t/sqrt(t^2 - x^2) dt",
+            "operator k1 = int(x..2) t/sqrt(t^2 - x^2) dt\n\
+             operator k2 = int(0..x) t/sqrt(x^2 - t^2) dt",
+        )
+        .replace(
+            "relation p = 0 on [a, 2]",
+            "relation p = 1*z on [a, 2]\nsingular z at a- ~ D*x/sqrt(a^2 - x^2)",
+        );
+    assert!(base.contains("unknown p, z") && base.contains("singular z at a-"));
+    for eq in ["z - 2*p = 0", "k2 z - 2*k2 p = 0"] {
+        let src = base.replace(
+            "equation k1 p = delta - x^2 on [0, a)",
+            &format!("equation k1 p = delta - x^2 on [0, a)\nequation {eq}"),
+        );
+        let out = run(&src);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{eq}: {err}");
+        assert!(
+            err.contains("is not finite at the point on the singular term of p")
+                && !err.contains("assembly")
+                && !err.contains("Jacobi"),
+            "{eq}: {err}"
+        );
+    }
+    let src = base.replace(
+        "equation k1 p = delta - x^2 on [0, a)",
+        "equation k1 p = delta - x^2 on [0, a)\nequation k1 z - 2*k1 p = 0",
+    );
+    let j = {
+        let f = lmx_file(&src);
+        json(&["solve", f.path().to_str().expect("utf-8")])
+    };
+    assert_eq!(j["converged"], true);
+    let (b, d) = (
+        j["coefficients"]["B"].as_f64().expect("B"),
+        j["coefficients"]["D"].as_f64().expect("D"),
+    );
+    assert!((d - 2.0 * b).abs() < 1e-9, "B = {b}, D = {d}");
+}
