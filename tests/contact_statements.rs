@@ -202,3 +202,73 @@ fn a_singular_term_whose_equation_keeps_the_singularity_is_refused_in_words() {
     );
     assert!((d - 2.0 * b).abs() < 1e-9, "B = {b}, D = {d}");
 }
+
+/// Gauss's airfoil-type log equation on [-1, 1] with the weight at -1
+/// spelled every equivalent way: the same answer bit for bit.
+#[test]
+fn equivalent_weights_at_a_negative_point_give_the_same_answer() {
+    let file = |w: &str| {
+        format!(
+            "operator k = 1/pi*int(-1..1) ln(abs(x - t)) dt\nunknown f on [-1, 1]\n\
+             equation k f = 1\nsingular f at -1 ~ {w}\nsingular f at 1 ~ (1 - x)^(-1/2)\n\
+             output V = int(-1..1) f(x) dx\n"
+        )
+    };
+    let mut values = Vec::new();
+    for w in [
+        "(1 + x)^(-1/2)",
+        "(x + 1)^(-1/2)",
+        "(x - (-1))^(-1/2)",
+        "1/sqrt(x + 1)",
+        "2/sqrt(1 + x)",
+        "(1 + x)^(-1/2)*3",
+        "sqrt(2 + 2*x)^(-1)",
+    ] {
+        let f = lmx_file(&file(w));
+        let j = json(&["solve", f.path().to_str().expect("utf-8")]);
+        assert_eq!(j["converged"], true, "{w}");
+        // ∫ f = -π/ln 2 (the capacity of [-1, 1] is 1/2).
+        let v = j["outputs"]["V"].as_f64().expect("V");
+        let exact = -std::f64::consts::PI / std::f64::consts::LN_2;
+        assert!((v - exact).abs() < 1e-9, "{w}: V = {v}, exact {exact}");
+        values.push(v.to_bits());
+    }
+    assert!(values.windows(2).all(|w| w[0] == w[1]), "{values:?}");
+}
+
+/// What a singular declaration cannot say yet is refused at its line and
+/// column (exit 2): a logarithm, and a second exact term of one unknown
+/// at one point and side.
+#[test]
+fn logarithmic_and_second_singular_terms_are_refused_at_their_place() {
+    let cone = std::fs::read_to_string("examples/contact/cone.lmx").expect("source");
+    let line = cone
+        .lines()
+        .position(|l| l.starts_with("singular p at a-"))
+        .expect("the cone's edge term")
+        + 1;
+    for (extra, want) in [
+        (
+            "singular p at 0 ~ ln(x)",
+            "logarithmic singular behaviour cannot be declared",
+        ),
+        (
+            "singular p at a- ~ D*(a^2 - x^2)^(-1/2)",
+            "already has a singular term `B*g(x)` at this point and side",
+        ),
+    ] {
+        let src = cone.replace("singular p at a-", &format!("{extra}\nsingular p at a-"));
+        let out = run(&src);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{extra}: {err}");
+        assert!(err.contains(want), "{extra}: {err}");
+        // The new declaration sits on the edge term's old line, which
+        // moves down by one.
+        let at_line = if extra.contains("ln(") {
+            line
+        } else {
+            line + 1
+        };
+        assert!(err.contains(&format!(":{at_line}:")), "{extra}: {err}");
+    }
+}
