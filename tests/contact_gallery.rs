@@ -10,11 +10,13 @@ mod common;
 use common::cli::json;
 use std::f64::consts::PI;
 
-/// The value and estimate of `name` among the outputs or scalars.
+/// The value and estimate of `name` among the outputs, scalars or
+/// singular coefficients.
 fn get(j: &serde_json::Value, name: &str) -> (f64, f64) {
     let v = j["outputs"][name]
         .as_f64()
         .or_else(|| j["scalars"][name].as_f64())
+        .or_else(|| j["coefficients"][name].as_f64())
         .unwrap_or_else(|| panic!("no {name} in {j}"));
     let e = j["error_estimates"][name]
         .as_f64()
@@ -24,7 +26,14 @@ fn get(j: &serde_json::Value, name: &str) -> (f64, f64) {
 
 /// Solves `file` at the default tolerance and checks each `(name, exact)`.
 fn check(file: &str, want: &[(&str, f64)]) {
-    let j = json(&["solve", file]);
+    check_with(file, &[], want);
+}
+
+/// As [`check`], with extra arguments (`--set …`).
+fn check_with(file: &str, args: &[&str], want: &[(&str, f64)]) {
+    let mut all = vec!["solve", file];
+    all.extend_from_slice(args);
+    let j = json(&all);
     assert_eq!(j["converged"], true, "{file}");
     for &(name, exact) in want {
         let (v, e) = get(&j, name);
@@ -103,4 +112,34 @@ fn cattaneo_mindlin_at_given_tangential_force() {
         "examples/contact/cattaneo_mindlin_force.lmx",
         &[("c", c), ("S", mu * (1.0 - c * c)), ("P", p)],
     );
+}
+
+/// JKR's closed form at work of adhesion `c` and depth 1/2: the contact
+/// radius (the root of delta = a^2 - (pi/2) c sqrt(a), by bisection to the
+/// last bit), the load and the edge coefficient B = -c/sqrt(a).
+fn jkr_closed_form(c: f64) -> [(&'static str, f64); 3] {
+    let delta = 0.5f64;
+    let f = |a: f64| a * a - PI / 2.0 * c * a.sqrt() - delta;
+    let (mut lo, mut hi) = (0.25f64, 2.0f64);
+    assert!(f(lo) < 0.0 && f(hi) > 0.0);
+    for _ in 0..200 {
+        let m = 0.5 * (lo + hi);
+        if f(m) > 0.0 { hi = m } else { lo = m }
+    }
+    let a = lo;
+    [
+        ("a", a),
+        ("P", 8.0 / 3.0 * a.powi(3) - 2.0 * PI * c * a.powf(1.5)),
+        ("B", -c / a.sqrt()),
+    ]
+}
+
+#[test]
+fn jkr_adhesion_at_given_indentation() {
+    // The file's C = 1/4; then weaker and stronger adhesion.
+    let file = "examples/contact/jkr_indentation.lmx";
+    check(file, &jkr_closed_form(0.25));
+    for (set, c) in [("C=1/8", 0.125), ("C=1", 1.0)] {
+        check_with(file, &["--set", set], &jkr_closed_form(c));
+    }
 }

@@ -313,9 +313,28 @@ pub fn lower_contact(file: &File, scope: &Scope) -> Result<Contact, LangError> {
                         }
                     }
                 };
+                let (u, at) = (unknown(u, scope)?, rexpr(at, scope, &slots)?);
+                // Two exact terms of one unknown at one point and side would
+                // be two columns fixed by the same one-sided limit.
+                let twice = matches!(kind, SingularKind::Term { .. })
+                    && c.singulars.iter().any(|s| {
+                        s.unknown == u
+                            && s.at == at
+                            && s.side == *side
+                            && matches!(s.kind, SingularKind::Term { .. })
+                    });
+                if twice {
+                    return Err(LangError::new(
+                        ErrorKind::Unsupported,
+                        "this unknown already has a singular term `B*g(x)` at this point and side: one term per unknown, point and side is supported (its coefficient is fixed by the one limit of its equation there)",
+                        body.span,
+                        "a second term",
+                    )
+                    .with_help("write the behaviour as one term, e.g. `singular p at a- ~ B*(x + 2*(a - x))/sqrt(a^2 - x^2)`; powers that are weights (`(a - x)^(-1/4)`) may be declared several times and multiply"));
+                }
                 c.singulars.push(Singular {
-                    unknown: unknown(u, scope)?,
-                    at: rexpr(at, scope, &slots)?,
+                    unknown: u,
+                    at,
                     side: *side,
                     kind,
                 });

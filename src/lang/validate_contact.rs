@@ -62,6 +62,16 @@ fn uses_x(e: &Expr) -> bool {
     }
 }
 
+/// Whether `e` calls `ln`.
+fn uses_ln(e: &Expr) -> bool {
+    match &e.kind {
+        ExprKind::Call(f, a) => f.name == "ln" || uses_ln(a),
+        ExprKind::Neg(a) => uses_ln(a),
+        ExprKind::Binary(_, a, b) => uses_ln(a) || uses_ln(b),
+        _ => false,
+    }
+}
+
 fn node(kind: ExprKind, span: super::ast::Span) -> Expr {
     Expr { kind, span }
 }
@@ -549,6 +559,15 @@ impl Validator {
                     ));
                 }
             }
+            None if uses_ln(body) => self.err(
+                LangError::new(
+                    ErrorKind::Unsupported,
+                    "logarithmic singular behaviour cannot be declared: a singular declaration factors out a power `|x - P|^e` or states a term `B*g(x)` with a power singularity",
+                    body.span,
+                    "a logarithm",
+                )
+                .with_help("leave a logarithmic end undeclared: the solver grades the mesh toward the ends of the unknowns' interval and toward every breakpoint (the cone's pressure, logarithmic at 0, converges so: examples/contact/cone.lmx)"),
+            ),
             None => self.err(wrong(
                 body,
                 "singular behaviour must be a weight `|x - P|^e` (a power, square root or reciprocal of an expression linear in x, such as `(1 - x)^(-alpha)` or `1/sqrt(1 + x)`) or a term `B*g(x)` with a new coefficient name `B`",
