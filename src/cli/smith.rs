@@ -23,13 +23,6 @@ pub fn to_matrix(symbols: &[String], m: &MatrixDef) -> Matrix<PolyRing> {
     )
 }
 
-/// Parses a file with the command line's `--set` overrides, mapping
-/// errors to [`CliError::Lang`] (and a `--set` naming no parameter of the
-/// file to [`CliError::Invalid`]).
-pub fn load(path: &std::path::PathBuf) -> Result<Program, CliError> {
-    load_with_source(path).map(|(p, _)| p)
-}
-
 /// A source file's text and the name it is shown under.
 pub struct Source {
     /// The text.

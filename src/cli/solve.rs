@@ -24,10 +24,6 @@ pub fn solve_command(a: &SolveArgs, w: &mut dyn Write) -> Result<(), CliError> {
     print(&r, &a.flags, &[a.file.as_path()], w)
 }
 
-/// The highest refinement level `--max-level` accepts: beyond it the
-/// geometric grading makes panels too small for the quadrature rules.
-pub const MAX_LEVEL: usize = crate::report::MAX_LEVEL;
-
 /// The settings the flags ask for, checked before any work: a finite
 /// positive tolerance, a refinement level the numerics support, a method.
 pub fn settings(flags: &SolveFlags) -> Result<SolveSettings, CliError> {
