@@ -247,9 +247,9 @@ impl Problem {
         })
     }
 
-    /// The lowered program, the text and the name (for the command line).
-    pub(crate) fn into_parts(self) -> (Program, String, String) {
-        (self.program, self.text, self.name)
+    /// The lowered program (for the command line).
+    pub(crate) fn program(&self) -> &Program {
+        &self.program
     }
 
     /// The name the source is shown under.

@@ -31,14 +31,11 @@ pub struct Source {
     pub name: String,
 }
 
-/// [`load`], keeping the text so that later errors can point into it.
-/// The file is read and validated by [`crate::api::Problem`].
-pub fn load_with_source(path: &std::path::PathBuf) -> Result<(Program, Source), CliError> {
+/// Reads the file at `path` and validates it with the command line's
+/// `--set` overrides: a [`crate::api::Problem`].
+pub fn load_problem(path: &std::path::PathBuf) -> Result<Problem, CliError> {
     let (text, name) = read_source(path)?;
-    let problem = Problem::with_sets(text, name, super::overrides().to_vec())
-        .map_err(crate::api::Error::into_cli)?;
-    let (p, text, name) = problem.into_parts();
-    Ok((p, Source { text, name }))
+    Problem::with_sets(text, name, super::overrides().to_vec()).map_err(crate::api::Error::into_cli)
 }
 
 /// Resolves `--principal` against the file's symbols (the flag wins).
