@@ -3,7 +3,7 @@
 //!
 //! Kernels, multipliers, right sides and output weights are the Rust
 //! functions below; `system()` collects them and `main()` solves through
-//! lambdamat's numeric layer (`lambdamat::plan::solve_system`): assembly,
+//! lambdamat's numeric layer (`lambdamat::standalone::solver_main`): assembly,
 //! refinement to the tolerance, and the error estimate.
 //! Unknowns on [0, 1]; eliminations solve for `p`.
 //!
@@ -39,12 +39,10 @@
 
 use std::sync::Arc;
 
-use lambdamat::numeric::Limits::{Fixed, Lower, Upper};
-use lambdamat::numeric::Operator;
-use lambdamat::numeric::Singularity::{AbelSqrt, Smooth};
-use lambdamat::plan::PlanError;
-use lambdamat::plan::compiled::{
-    CompiledEquation, CompiledOutput, CompiledSystem, OutputTerm, words,
+use lambdamat::standalone::Limits::{Fixed, Lower, Upper};
+use lambdamat::standalone::Singularity::{AbelSqrt, Smooth};
+use lambdamat::standalone::{
+    CompiledEquation, CompiledOutput, CompiledSystem, Operator, OutputTerm, PlanError, words,
 };
 
 /// Operator `k1`, kernel `t/sqrt(t^2 - x^2)`: its smooth factor a(x, t) with kernel = a(x, t)/√|t² - x²|.
@@ -93,7 +91,7 @@ fn weight_q(_x: f64) -> f64 {
     1.0
 }
 
-/// The compiled system, ready for `lambdamat::plan::solve_system`.
+/// The compiled system, ready for `lambdamat::standalone::solver_main`.
 pub fn system() -> Result<CompiledSystem, PlanError> {
     let mut op_k1 = Operator::zero();
     op_k1 = op_k1 + Operator::integral(Upper { b: 1.0 }, AbelSqrt, kernel_k1);

@@ -247,9 +247,9 @@ impl Problem {
         })
     }
 
-    /// The lowered program, the text and the name (for the command line).
-    pub(crate) fn into_parts(self) -> (Program, String, String) {
-        (self.program, self.text, self.name)
+    /// The lowered program (for the command line).
+    pub(crate) fn program(&self) -> &Program {
+        &self.program
     }
 
     /// The name the source is shown under.
@@ -584,7 +584,7 @@ pub struct SolveOptions {
     /// most 14).
     pub max_level: Option<usize>,
     /// The memory budget in bytes (default: the rule of
-    /// [`crate::numeric::budget`], half the free memory). A refinement
+    /// `crate::numeric::budget`, half the free memory). A refinement
     /// level that would not fit is not built: the solve stops at the last
     /// level that did (not converged, with a warning) or fails with the
     /// size it would have needed.
@@ -607,13 +607,18 @@ impl Default for SolveOptions {
     }
 }
 
-/// A solved problem: the one report of a solve ([`crate::report::Report`]),
-/// whose [`to_json`](crate::report::Report::to_json) is what `lambdamat
-/// solve --json` prints. `converged`, `scalars`, `outputs`,
-/// `error_estimates` (absolute), `unknowns` (name → [`Field`]) and
-/// `warnings` are its fields.
-pub type Solution = crate::report::Report;
 pub use crate::report::Field;
+/// A solved problem: the one report of a solve, whose
+/// [`to_json`](Solution::to_json) is what `lambdamat solve --json` prints.
+/// `converged`, `scalars`, `outputs`, `error_estimates` (absolute),
+/// `unknowns` (name → [`Field`]) and `warnings` are its fields.
+pub use crate::report::Report as Solution;
+
+// Values the methods of `SmithForm` and `Reduction` return: one check of
+// a Smith form's certificate, a formula in three notations and the ordered
+// elimination's form.
+pub use crate::algebra::smith::certify::Check;
+pub use crate::reduce::{OrderedForm, Printed};
 
 /// Options of [`Problem::smith`].
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -626,7 +631,7 @@ pub struct SmithOptions {
 
 /// A certified Smith decomposition `U·A·V = D`. Entries are exact: each is
 /// the one printer's output in the language's syntax (it parses back with
-/// [`crate::lang::formula`]), with LaTeX beside it.
+/// `crate::lang::formula`), with LaTeX beside it.
 ///
 /// ```
 /// use lambdamat::{Problem, SmithOptions};
@@ -656,12 +661,6 @@ impl SmithForm {
         };
         let report = modes::smith_report(name, a, &opts).map_err(|e| Error(e.into()))?;
         Ok(SmithForm { report })
-    }
-
-    /// The full report (mode, algorithm, certificate, denominator-free
-    /// form), as `lambdamat smith --json` prints it.
-    pub fn report(&self) -> &SmithReport {
-        &self.report
     }
 
     /// The matrix's name (`A` for an operator system's λ-matrix).
@@ -706,7 +705,7 @@ impl SmithForm {
     }
 
     /// The certificate: each property checked, recomputed from A, U, D, V.
-    pub fn certificate(&self) -> &[crate::algebra::smith::certify::Check] {
+    pub fn certificate(&self) -> &[Check] {
         &self.report.certificate
     }
 
@@ -745,16 +744,21 @@ pub struct Reduction {
 
 impl Reduction {
     /// The reduction (of the first subinterval, for a split-domain file).
-    pub fn value(&self) -> &crate::reduce::Reduction {
+    pub(crate) fn value(&self) -> &crate::reduce::Reduction {
         &self.pieces[0].1
     }
 
     /// Each subinterval's label and reduction (one unlabelled piece for a
     /// file on one interval).
-    pub fn pieces(&self) -> Vec<(Option<&str>, &crate::reduce::Reduction)> {
+    pub fn pieces(&self) -> Vec<(Option<&str>, Reduction)> {
         self.pieces
             .iter()
-            .map(|(p, r)| (p.as_ref().map(|p| p.label.as_str()), r))
+            .map(|(p, r)| {
+                let one = Reduction {
+                    pieces: vec![(None, r.clone())],
+                };
+                (p.as_ref().map(|p| p.label.as_str()), one)
+            })
             .collect()
     }
 
@@ -764,12 +768,12 @@ impl Reduction {
     }
 
     /// The commutative eliminant's operator on the unknown, printed.
-    pub fn eliminant(&self) -> crate::reduce::Printed {
+    pub fn eliminant(&self) -> Printed {
         crate::reduce::Printed::of(&self.value().lhs_node)
     }
 
     /// The ordered elimination's form, or why there is none.
-    pub fn ordered(&self) -> Result<&crate::reduce::OrderedForm, &str> {
+    pub fn ordered(&self) -> Result<&OrderedForm, &str> {
         self.value().ordered.as_ref().map_err(String::as_str)
     }
 

@@ -4,24 +4,24 @@
 //! The crate is split along the pipeline; each folder is
 //! one stage and may only depend on the stages before it:
 //!
-//! * [`lang`]: text → spanned AST → validated, lowered objects (the only
+//! * `lang`: text → spanned AST → validated, lowered objects (the only
 //!   place that knows about source positions and names);
-//! * [`algebra`]: exact rationals, polynomials, rational functions, matrices
+//! * `algebra`: exact rationals, polynomials, rational functions, matrices
 //!   over a ring object and the certified Smith normal form (never `f64`);
-//! * [`system`]: the span-free lowered program shared by algebra and numerics;
-//! * [`numeric`]: f64 numerics (nalgebra): quadrature, graded meshes,
+//! * `system`: the span-free lowered program shared by algebra and numerics;
+//! * `numeric`: f64 numerics (nalgebra): quadrature, graded meshes,
 //!   product integration of Abel kernels, operator matrices, solves;
-//! * [`plan`]: a language system → numerical plan (kernels compiled to
+//! * `plan`: a language system → numerical plan (kernels compiled to
 //!   closures, discretisation, coupled/ordered/commutative solves);
-//! * [`hertz`]: the flagship Hertz contact problem with finite friction,
-//!   built on [`numeric`];
-//! * [`reduce`]: one equation for one unknown of an operator system (the
+//! * `hertz`: the flagship Hertz contact problem with finite friction,
+//!   built on `numeric`;
+//! * `reduce`: one equation for one unknown of an operator system (the
 //!   commutative eliminant, its expansion into iterated integrals, the
-//!   ordered elimination), built from [`algebra`] and [`system`];
-//! * [`codegen`]: a language system → a standalone Rust solver module
-//!   (kernels as Rust functions, solved through [`plan`] and [`numeric`]);
-//! * [`report`]: the one report of a numerical solve (every file, one
-//!   entry [`report::solve`]) and its text, JSON, CSV and SVG;
+//!   ordered elimination), built from `algebra` and `system`;
+//! * `codegen`: a language system → a standalone Rust solver module
+//!   (kernels as Rust functions, solved through `plan` and `numeric`);
+//! * `report`: the one report of a numerical solve (every file, one
+//!   entry `report::solve`) and its text, JSON, CSV and SVG;
 //! * [`standalone`]: the `main` of generated solvers (no command-line
 //!   crates: they build with `default-features = false`);
 //! * `api` (feature `cli`, on by default): the small entry point —
@@ -29,21 +29,62 @@
 //!   their values and one `Error` — re-exported here; the CLI and the
 //!   Python package are its clients;
 //! * `cli` (feature `cli`): the `lambdamat` command line (clap, miette's
-//!   fancy output, plotters, indicatif).
-pub mod algebra;
+//!   fancy output, plotters, indicatif), run by [`cli_main`].
+//!
+//! The public surface is `api` (its names re-exported here) and
+//! [`standalone`], which generated solvers build against. The other modules
+//! are public only with the feature `internals`: unstable internals for the
+//! project's own tests, benches and probes; not part of the API.
+
+// Without the command line (`default-features = false`, the build generated
+// solvers depend on) and without `internals`, only `standalone` is public:
+// the rest of the pipeline (parsing, algebra, reduction, codegen) is
+// compiled but unreachable from it, so its dead code (and the imports only
+// that code uses) are expected there. The
+// default build and the `internals` build keep the dead-code lint.
+#![cfg_attr(
+    not(any(feature = "cli", feature = "internals")),
+    allow(dead_code, unused_imports)
+)]
+
+/// Declares internal modules: public with the feature `internals` (the
+/// project's own tests, benches and probes), crate-private otherwise.
+macro_rules! internal {
+    ($($(#[$attr:meta])* $name:ident;)*) => {$(
+        $(#[$attr])*
+        #[cfg(feature = "internals")]
+        pub mod $name;
+        $(#[$attr])*
+        #[cfg(not(feature = "internals"))]
+        pub(crate) mod $name;
+    )*};
+}
+
+internal! {
+    algebra;
+    #[cfg(feature = "cli")]
+    cli;
+    codegen;
+    hertz;
+    lang;
+    numeric;
+    plan;
+    reduce;
+    report;
+    system;
+}
+
 #[cfg(feature = "cli")]
 pub mod api;
-#[cfg(feature = "cli")]
-pub mod cli;
-pub mod codegen;
-pub mod hertz;
-pub mod lang;
-pub mod numeric;
-pub mod plan;
-pub mod reduce;
-pub mod report;
 pub mod standalone;
-pub mod system;
+
+/// Runs the `lambdamat` command line on the process's arguments and
+/// returns its exit code. Public because the binary (`src/main.rs`) is a
+/// crate of its own; it is the binary's whole `main`.
+#[cfg(feature = "cli")]
+pub fn cli_main() -> i32 {
+    cli::main()
+}
 
 #[cfg(feature = "cli")]
 pub use api::{

@@ -1,4 +1,4 @@
-//! The `lambdamat` binary: a thin shell around [`lambdamat::cli::main`].
+//! The `lambdamat` binary: a thin shell around [`lambdamat::cli_main`].
 fn main() {
-    std::process::exit(lambdamat::cli::main());
+    std::process::exit(lambdamat::cli_main());
 }

@@ -172,3 +172,40 @@ fn every_gallery_file_generates_a_solver_identical_to_solve() {
     // is of reports, not of refusals.
     assert_eq!(reports.iter().filter(|&&r| r).count(), 8);
 }
+
+/// Every checked-in generated solver names lambdamat only through
+/// `lambdamat::standalone` (outside comments), the module that re-exports
+/// what generated code needs: the rest of the crate is not public.
+#[test]
+fn generated_solvers_name_only_the_standalone_module() {
+    let mut files = Vec::new();
+    for dir in ["tests/generated", "tests/data", "examples"] {
+        for entry in std::fs::read_dir(dir).expect("dir") {
+            let path = entry.expect("entry").path();
+            let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("");
+            if name.ends_with("_solver.rs") {
+                files.push(path);
+            }
+        }
+    }
+    assert!(files.len() >= 14, "{files:?}");
+    let mut paths = 0;
+    for path in &files {
+        let text = std::fs::read_to_string(path).expect("read");
+        for (i, line) in text.lines().enumerate() {
+            if line.trim_start().starts_with("//") {
+                continue;
+            }
+            for (at, _) in line.match_indices("lambdamat::") {
+                paths += 1;
+                assert!(
+                    line[at..].starts_with("lambdamat::standalone"),
+                    "{}:{}: {line}",
+                    path.display(),
+                    i + 1
+                );
+            }
+        }
+    }
+    assert!(paths >= 3 * files.len(), "{paths} paths");
+}

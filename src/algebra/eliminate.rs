@@ -105,6 +105,7 @@ pub struct Eliminant {
 /// assert_eq!(e.lhs_ordered.to_string_with(&names), "k4 k1 - k2 k3");
 /// assert_eq!((e.commuted_pairs[0].a, e.commuted_pairs[0].b), (1, 3)); // k2, k4
 /// ```
+#[cfg(any(test, feature = "internals"))]
 pub fn eliminate(a: &Matrix<PolyRing>, unknown: usize) -> Result<Eliminant, EliminateError> {
     let words: Vec<Vec<NcPoly>> = (0..a.rows())
         .map(|i| {

@@ -451,6 +451,7 @@ pub fn symmetric(c: &BigInt, m: &BigInt) -> BigInt {
 
 /// Rational reconstruction (Wang): `n/d ≡ c (mod m)` with `|n|, d ≤
 /// √(m/2)`, if it exists.
+#[cfg(any(test, feature = "internals"))]
 pub fn rational_reconstruct(c: &BigInt, m: &BigInt) -> Option<(BigInt, BigInt)> {
     reconstruct_below(c, m, &(m >> 1u32).sqrt())
 }

@@ -5,7 +5,6 @@
 //! degrees, printing); gcd lives in [`super::gcd`], and names are only
 //! borrowed for printing.
 
-pub use super::print::latex_name;
 use super::print::{Node, PrintOptions, print};
 use super::rational::{Q, primitive_scale};
 use num_bigint::BigInt;

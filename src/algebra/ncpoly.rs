@@ -297,14 +297,6 @@ pub fn word_text<S: AsRef<str>>(w: &Word, names: &[S]) -> String {
     print(&word_node(w, names), PrintOptions::TEXT)
 }
 
-/// A word in LaTeX: `k_{4} k_{1}`.
-pub fn word_latex<S: AsRef<str>>(w: &Word, names: &[S]) -> String {
-    if w.is_empty() {
-        return String::new();
-    }
-    print(&word_node(w, names), PrintOptions::LATEX)
-}
-
 /// The lexicographically least word equivalent to `w` when the pairs for
 /// which `commute` holds may be swapped (Anisimov–Knuth normal form): take
 /// repeatedly the least letter that can be moved to the front.

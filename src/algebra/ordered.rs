@@ -426,6 +426,7 @@ fn pivot_class(e: &NcExpr, principal: Option<usize>) -> u8 {
 /// let o = ordered_elimination(&a, 0, Some(3)).unwrap();
 /// assert_eq!(o.to_string_with(&names, "p"), "(k1 - k2 k4^-1 k3) p = g1 - k2 k4^-1 g2");
 /// ```
+#[cfg(any(test, feature = "internals"))]
 pub fn ordered_elimination(
     a: &Matrix<PolyRing>,
     unknown: usize,
@@ -445,6 +446,7 @@ pub fn ordered_elimination(
 /// `words` (row `i`, column `j`, products in the order written) and whose
 /// commutative image is `a`: the Schur form of [`eliminate_in_steps`], or
 /// why it cannot be written out.
+#[cfg(any(test, feature = "internals"))]
 pub fn ordered_elimination_of(
     a: &Matrix<PolyRing>,
     words: &[Vec<NcPoly>],

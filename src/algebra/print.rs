@@ -22,7 +22,7 @@
 //! ```
 
 use super::rational::Q;
-use num_traits::{One, Signed, Zero};
+use num_traits::{One, Signed};
 
 /// The notation a tree is written in.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -451,18 +451,6 @@ pub fn latex_name(name: &str) -> String {
     } else {
         format!("\\mathit{{{name}}}")
     }
-}
-
-/// The signed sum of already-built terms, dropping zero terms: each term
-/// is split into its sign and magnitude ([`Node::split_sign`]).
-pub fn signed_sum(terms: impl IntoIterator<Item = Node>) -> Node {
-    Node::Terms(
-        terms
-            .into_iter()
-            .filter(|t| !matches!(t, Node::Num(q) if q.is_zero()))
-            .map(Node::split_sign)
-            .collect(),
-    )
 }
 
 #[cfg(test)]

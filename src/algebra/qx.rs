@@ -148,14 +148,6 @@ impl QPoly {
         g
     }
 
-    /// Value at the integer point `x` as a rational.
-    pub fn eval(&self, x: &BigInt) -> Q {
-        let mut acc = BigInt::zero();
-        for c in self.num.iter().rev() {
-            acc = acc * x + c;
-        }
-        Q::new(acc, self.den.clone())
-    }
 }
 
 /// Shorter factors use the schoolbook product.

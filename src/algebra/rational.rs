@@ -12,11 +12,13 @@ use num_traits::{One, Signed, Zero};
 pub type Q = BigRational;
 
 /// The rational `n/d` from machine integers (`d` nonzero).
+#[cfg(any(test, feature = "internals"))]
 pub fn q(n: i64, d: i64) -> Q {
     Q::new(BigInt::from(n), BigInt::from(d))
 }
 
 /// The rational `n`.
+#[cfg(any(test, feature = "internals"))]
 pub fn qi(n: i64) -> Q {
     Q::from_integer(BigInt::from(n))
 }

@@ -45,16 +45,6 @@ impl<K: Field> UPolyRing<K> {
         UPoly(c)
     }
 
-    /// The zero polynomial (a convenience for doc examples).
-    pub fn zero_of(&self) -> UPoly<K::Elem> {
-        UPoly(Vec::new())
-    }
-
-    /// The constant `c`.
-    pub fn constant(&self, c: K::Elem) -> UPoly<K::Elem> {
-        self.trim(vec![c])
-    }
-
     /// Multiplies by a scalar.
     pub fn scale(&self, a: &UPoly<K::Elem>, c: &K::Elem) -> UPoly<K::Elem> {
         if self.k.is_zero(c) {

@@ -85,8 +85,6 @@ pub enum CliError {
     },
 }
 
-/// Exit code: success, every result converged.
-pub const EXIT_OK: i32 = 0;
 /// Exit code: the command line cannot be parsed or is contradictory.
 pub const EXIT_USAGE: i32 = 1;
 /// Exit code: invalid input (file, parameter, path); nothing computed.

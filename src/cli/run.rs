@@ -3,19 +3,17 @@
 //! one derivation of that unknown, printed (eliminant, ordered elimination,
 //! or the single equations per subinterval of a split-domain file) and then
 //! executed by the numerical solve for that unknown with the defaults of
-//! `lambdamat solve`, through [`crate::report::solve`]) and prints the
-//! results as
-//! text, LaTeX or one JSON object.
+//! `lambdamat solve`, through [`crate::api::Problem::solve`]) and prints
+//! the results as text, LaTeX or one JSON object.
 
 use super::OutputArgs;
 use super::error::CliError;
 use super::reduce::{print_reduction, to_json};
 use super::render;
-use super::smith::{check, load_with_source, principal, print_report, report};
+use super::smith::{check, load_problem, principal, print_report, report};
 use super::solve;
 use crate::lang::Directive;
 use crate::reduce::{derive, reduce_with};
-use crate::report::SolveSettings;
 use serde_json::json;
 use std::io::Write;
 use std::path::PathBuf;
@@ -27,8 +25,9 @@ pub fn run(
     max_memory: Option<u64>,
     w: &mut dyn Write,
 ) -> Result<(), CliError> {
-    let (p, src) = load_with_source(file)?;
-    let principal = principal(&p, None)?;
+    let problem = load_problem(file)?;
+    let p = problem.program();
+    let principal = principal(p, None)?;
     let mut results = Vec::new();
     let mut not_converged: Option<CliError> = None;
     let mut first = true;
@@ -42,7 +41,7 @@ pub fn run(
         };
         match d {
             Directive::Smith { matrix } => {
-                let r = report(&p, *matrix, principal, out.latex)?;
+                let r = report(p, *matrix, principal, out.latex)?;
                 if out.json {
                     results.push(json!({"kind": "smith", "result": r}));
                 } else {
@@ -51,7 +50,7 @@ pub fn run(
                 }
             }
             Directive::CheckSmith { matrix, u, d, v } => {
-                let c = check(&p, [*matrix, *u, *d, *v], principal);
+                let c = check(p, [*matrix, *u, *d, *v], principal);
                 if out.json {
                     results.push(json!({"kind": "check", "result": c}));
                 } else {
@@ -64,7 +63,7 @@ pub fn run(
                 // solve below.
                 sep(w, &mut first)?;
                 if p.contact.is_split() {
-                    let list = super::reduce::split_reductions(&p, *unknown)?;
+                    let list = super::reduce::split_reductions(p, *unknown)?;
                     if out.json {
                         results.push(
                             json!({"kind": "reduce", "result": super::reduce::split_json(&list)}),
@@ -73,7 +72,7 @@ pub fn run(
                         write!(w, "{}", super::reduce::split_text(&list, out.latex))?;
                     }
                 } else {
-                    let red = reduce_with(&p, &derive(&p, *unknown)?)?;
+                    let red = reduce_with(p, &derive(p, *unknown)?)?;
                     if out.json {
                         results.push(json!({"kind": "reduce", "result": to_json(&red)}));
                     } else {
@@ -102,12 +101,14 @@ pub fn run(
                     }
                     continue;
                 }
-                let settings = SolveSettings {
+                let opts = crate::api::SolveOptions {
                     unknown: Some(p.unknowns[*unknown].clone()),
                     max_memory,
-                    ..SolveSettings::default()
+                    ..crate::api::SolveOptions::default()
                 };
-                let r = crate::report::solve(&p, &settings).map_err(|e| solve::located(e, &src))?;
+                let r = problem
+                    .solve(&opts)
+                    .map_err(crate::api::Error::into_cli)?;
                 if out.json {
                     results.push(json!({"kind": "solve", "result": r.to_json()}));
                 } else {

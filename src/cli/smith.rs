@@ -23,13 +23,6 @@ pub fn to_matrix(symbols: &[String], m: &MatrixDef) -> Matrix<PolyRing> {
     )
 }
 
-/// Parses a file with the command line's `--set` overrides, mapping
-/// errors to [`CliError::Lang`] (and a `--set` naming no parameter of the
-/// file to [`CliError::Invalid`]).
-pub fn load(path: &std::path::PathBuf) -> Result<Program, CliError> {
-    load_with_source(path).map(|(p, _)| p)
-}
-
 /// A source file's text and the name it is shown under.
 pub struct Source {
     /// The text.
@@ -38,14 +31,11 @@ pub struct Source {
     pub name: String,
 }
 
-/// [`load`], keeping the text so that later errors can point into it.
-/// The file is read and validated by [`crate::api::Problem`].
-pub fn load_with_source(path: &std::path::PathBuf) -> Result<(Program, Source), CliError> {
+/// Reads the file at `path` and validates it with the command line's
+/// `--set` overrides: a [`crate::api::Problem`].
+pub fn load_problem(path: &std::path::PathBuf) -> Result<Problem, CliError> {
     let (text, name) = read_source(path)?;
-    let problem = Problem::with_sets(text, name, super::overrides().to_vec())
-        .map_err(crate::api::Error::into_cli)?;
-    let (p, text, name) = problem.into_parts();
-    Ok((p, Source { text, name }))
+    Problem::with_sets(text, name, super::overrides().to_vec()).map_err(crate::api::Error::into_cli)
 }
 
 /// Resolves `--principal` against the file's symbols (the flag wins).

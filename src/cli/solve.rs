@@ -1,6 +1,8 @@
-//! The `solve` command: parses the file, solves it through the one entry
-//! [`crate::report::solve`] and prints its [`Report`] as text or one JSON
-//! object, optionally with a CSV table and an SVG plot of the unknowns.
+//! The `solve` command: reads the file as a [`crate::api::Problem`],
+//! solves it with [`crate::api::Problem::solve`] (the one entry
+//! [`crate::report::solve`]) and prints the returned [`Report`] as text or
+//! one JSON object, optionally with a CSV table and an SVG plot of the
+//! unknowns.
 //! Solvers written by `lambdamat codegen` print the same report through
 //! [`crate::standalone`]. It does no numerics and no formatting of its
 //! own.
@@ -9,24 +11,30 @@ use std::path::Path;
 
 use super::error::CliError;
 use super::output::{check_writable, write_file};
-use super::smith::{Source, load_with_source};
+use super::smith::{Source, load_problem};
 use super::{SolveArgs, SolveFlags};
+use crate::api::SolveOptions;
 use crate::plan::{Method, PlanError};
 use crate::report::{Report, SolveSettings};
 
 /// `lambdamat solve FILE …`.
 pub fn solve_command(a: &SolveArgs, w: &mut dyn Write) -> Result<(), CliError> {
-    let mut s = settings(&a.flags)?;
-    s.unknown = a.unknown.clone();
-    let (prog, src) = load_with_source(&a.file)?;
+    let s = settings(&a.flags)?;
+    let problem = load_problem(&a.file)?;
     check_outputs(&a.flags, &[a.file.as_path()])?;
-    let r = crate::report::solve(&prog, &s).map_err(|e| located(e, &src))?;
+    let opts = SolveOptions {
+        tol: s.tol,
+        max_level: Some(s.max_level),
+        method: s.method,
+        max_memory: s.max_memory,
+        unknown: a.unknown.clone(),
+        ..SolveOptions::default()
+    };
+    let r = problem
+        .solve(&opts)
+        .map_err(crate::api::Error::into_cli)?;
     print(&r, &a.flags, &[a.file.as_path()], w)
 }
-
-/// The highest refinement level `--max-level` accepts: beyond it the
-/// geometric grading makes panels too small for the quadrature rules.
-pub const MAX_LEVEL: usize = crate::report::MAX_LEVEL;
 
 /// The settings the flags ask for, checked before any work: a finite
 /// positive tolerance, a refinement level the numerics support, a method.

@@ -116,7 +116,7 @@ fn system_code(
                         KernelPlan::Abel(_) => "AbelSqrt".to_string(),
                         KernelPlan::Smooth(_) => "Smooth".to_string(),
                         KernelPlan::Diagonal(s, _) | KernelPlan::Peaked(s, _) => {
-                            format!("lambdamat::numeric::Singularity::{s:?}")
+                            format!("lambdamat::standalone::Singularity::{s:?}")
                         }
                     };
                     let lim = match limits {
@@ -138,9 +138,19 @@ fn system_code(
                     if scaled.is_empty() && !lim.contains('\n') && args.len() <= 60 && one.len() <= 100 {
                         format!("Operator::integral({args})")
                     } else {
-                        format!(
-                            "let limits = {lim};\n    let term = Operator::integral(limits, {singularity}, {f});\n    {var} = {var} + term{scaled};"
-                        )
+                        let args = format!("limits, {singularity}, {f}");
+                        let call = format!("Operator::integral({args})");
+                        // rustfmt puts the arguments one per line beyond 60
+                        // columns of arguments or 100 of line.
+                        let long = "    let term = ".len() + call.len() + 1 > 100;
+                        let call = if args.len() > 60 || long {
+                            format!(
+                                "Operator::integral(\n        limits,\n        {singularity},\n        {f},\n    )"
+                            )
+                        } else {
+                            call
+                        };
+                        format!("let limits = {lim};\n    let term = {call};\n    {var} = {var} + term{scaled};")
                     }
                 }
             });
@@ -228,7 +238,7 @@ fn header(out: &mut String, prog: &Program, sys: &CompiledSystem, from: &Provena
         "//!\n\
          //! Kernels, multipliers, right sides and output weights are the Rust\n\
          //! functions below; `system()` collects them and `main()` solves through\n\
-         //! lambdamat's numeric layer (`lambdamat::plan::solve_system`): assembly,\n\
+         //! lambdamat's numeric layer (`lambdamat::standalone::solver_main`): assembly,\n\
          //! refinement to the tolerance, and the error estimate.\n",
     );
     let _ = writeln!(
@@ -355,26 +365,23 @@ fn imports(code: &str) -> String {
             })
         })
     };
-    let groups: [(&str, &[&str]); 7] = [
-        ("lambdamat::numeric::Limits", &["Fixed", "Lower", "Upper"]),
-        ("lambdamat::numeric", &["Operator"]),
-        ("lambdamat::numeric::Singularity", &["AbelSqrt", "Smooth"]),
-        ("lambdamat::plan", &["PlanError"]),
+    // Every name comes from `lambdamat::standalone`, which re-exports them.
+    let groups: [(&str, &[&str]); 3] = [
+        ("lambdamat::standalone::Limits", &["Fixed", "Lower", "Upper"]),
+        ("lambdamat::standalone::Singularity", &["AbelSqrt", "Smooth"]),
         (
-            "lambdamat::plan::compiled",
+            "lambdamat::standalone",
             &[
                 "CompiledCondition",
                 "CompiledEquation",
                 "CompiledOutput",
                 "CompiledSystem",
+                "Operator",
                 "OutputTerm",
-                "words",
-            ],
-        ),
-        (
-            "lambdamat::plan::split_input",
-            &[
+                "PlanError",
+                "RFunc",
                 "RealFn",
+                "Scalar",
                 "SplitCondition",
                 "SplitContact",
                 "SplitInequality",
@@ -384,11 +391,9 @@ fn imports(code: &str) -> String {
                 "SplitLinTerm",
                 "SplitRelation",
                 "SplitSingular",
+                "real_pow",
+                "words",
             ],
-        ),
-        (
-            "lambdamat::system::contact",
-            &["RFunc", "Scalar", "real_pow"],
         ),
     ];
     let mut out = String::from("\nuse std::sync::Arc;\n\n");
@@ -504,7 +509,7 @@ fn system_fn(
     rhs_fns: &[String],
     (output_terms, condition_terms): (&[Vec<String>], &[Vec<String>]),
 ) {
-    out.push_str("\n/// The compiled system, ready for `lambdamat::plan::solve_system`.\n");
+    out.push_str("\n/// The compiled system, ready for `lambdamat::standalone::solver_main`.\n");
     out.push_str("pub fn system() -> Result<CompiledSystem, PlanError> {\n");
     out.push_str(setup);
     let mut eq_vars = Vec::new();

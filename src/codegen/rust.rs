@@ -246,7 +246,7 @@ impl Body {
                 let a = self.node(a);
                 let a = self.fit(vec![a]).pop().expect("one");
                 Code::new(
-                    format!("lambdamat::system::expr::{}({})", f.name(), a.text),
+                    format!("lambdamat::standalone::{}({})", f.name(), a.text),
                     Prec::Atom,
                 )
             }

@@ -31,7 +31,7 @@ pub fn split_solver_source(prog: &Program, from: &Provenance) -> Result<String, 
     let mut code = system;
     code.push_str(&fns.code);
     code.push_str(
-        "\n/// The split-domain problem, ready for `lambdamat::plan::solve_split_input`.\n\
+        "\n/// The split-domain problem, ready for `lambdamat::standalone::split_solver_main`.\n\
          pub fn input() -> Result<SplitInput, PlanError> {\n",
     );
     let _ = writeln!(code, "    let contact = {};", indent(&contact, 4));
@@ -60,7 +60,7 @@ fn header(out: &mut String, prog: &Program, from: &Provenance) {
          //! real parameters are Rust functions of the slot values `v` (the unknown\n\
          //! scalars, then the real parameters) and `x`. `input()` collects them and\n\
          //! `main()` solves through lambdamat's split-domain solver\n\
-         //! (`lambdamat::plan::solve_split_input`): the scalars' root solve,\n\
+         //! (`lambdamat::standalone::split_solver_main`): the scalars' root solve,\n\
          //! refinement to the tolerance, and the error estimates. Parameters are\n\
          //! those of the regenerating command (`--set` there).\n",
     );

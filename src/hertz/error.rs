@@ -16,5 +16,6 @@ pub enum HertzError {
     Numeric(#[from] NumericError),
     /// The free-boundary iteration or the refinement did not converge.
     #[error("no convergence: {0}")]
+    #[cfg(feature = "internals")]
     NoConvergence(String),
 }

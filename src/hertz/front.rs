@@ -1154,17 +1154,20 @@ impl HertzResult {
     }
 
     /// The split solver's report (scalars, outputs, coefficients).
+    #[cfg(feature = "internals")]
     pub fn report(&self) -> &crate::plan::SplitReport {
         &self.solution.report
     }
 
     /// Normal stress `p(x)`, `x ∈ [0, 1)`.
+    #[cfg(feature = "internals")]
     pub fn p(&self, x: f64) -> Result<f64, PlanError> {
         self.fields()?.value(self.pq.0, x, Approach::Above)
     }
 
     /// Shear stress `q(x)` (with its singular part on the stick zone, zero
     /// up to the root tolerance; at `c` itself the slip side, `μp(c)`).
+    #[cfg(feature = "internals")]
     pub fn q(&self, x: f64) -> Result<f64, PlanError> {
         self.fields()?.value(self.pq.1, x, Approach::Above)
     }
@@ -1278,6 +1281,7 @@ impl HertzResult {
 
     /// The largest absolute residuals of E1 on `xs ∩ (0,1)` and of E2 on
     /// `xs ∩ (0,c)`, at points that need not be collocation nodes.
+    #[cfg(feature = "internals")]
     pub fn residuals(&self, xs: &[f64]) -> Result<(f64, f64), PlanError> {
         let f = self.fields()?;
         let worst = |e: usize, pts: Vec<f64>| -> Result<f64, PlanError> {
@@ -1356,6 +1360,7 @@ pub fn profile_points(c: f64, n: usize) -> Vec<f64> {
 }
 
 /// The exact frictionless pressure `(2/π)/√(1-x²)`.
+#[cfg(feature = "internals")]
 pub fn frictionless_pressure(x: f64) -> f64 {
     2.0 / PI / (1.0 - x * x).sqrt()
 }

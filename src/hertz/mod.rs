@@ -26,4 +26,5 @@ pub mod front;
 pub mod seed;
 pub mod tables;
 
+#[cfg(feature = "internals")]
 pub use error::HertzError;

@@ -53,6 +53,7 @@ pub enum BinOp {
 
 impl BinOp {
     /// The operator as written in source.
+    #[cfg(any(test, feature = "internals"))]
     pub fn symbol(self) -> &'static str {
         match self {
             BinOp::Add => "+",

@@ -70,6 +70,7 @@
 pub mod ast;
 pub mod diagnostics;
 pub mod error;
+#[cfg(any(test, feature = "internals"))]
 pub mod formula;
 pub mod keywords;
 pub mod lower;
@@ -108,6 +109,7 @@ pub use error::{ErrorKind, LangError};
 /// whatever thread the caller is on. Small shallow files (every example and
 /// benchmark matrix of degree up to 3) are done on the caller's thread:
 /// starting the helper thread cost more than parsing them.
+#[cfg(any(test, feature = "internals"))]
 pub fn parse_program(src: &str, filename: &str) -> Result<Program, LangErrors> {
     parse_program_with(src, filename, &[])
 }

@@ -24,11 +24,13 @@ pub struct GaussRule {
 
 impl GaussRule {
     /// Number of nodes.
+    #[cfg(feature = "internals")]
     pub fn len(&self) -> usize {
         self.nodes.len()
     }
 
     /// True for the (never constructed) empty rule.
+    #[cfg(feature = "internals")]
     pub fn is_empty(&self) -> bool {
         self.nodes.is_empty()
     }

@@ -53,6 +53,7 @@ impl Mesh {
     }
 
     /// `n` equal panels on `[lo, hi]`.
+    #[cfg(any(test, feature = "internals"))]
     pub fn uniform(lo: f64, hi: f64, n: usize) -> Result<Mesh, NumericError> {
         if n == 0 {
             return Err(NumericError::InvalidMesh("zero panels".into()));

@@ -93,7 +93,7 @@ impl Singularity {
 
     /// `S(x, t)` from the differences `t - x` and `t + x` (for callers that
     /// know them more accurately than `t`: see
-    /// [`super::product::composite_rule_offsets`]).
+    /// `super::product::composite_rule_offsets`).
     pub fn value_from(&self, t_minus_x: f64, t_plus_x: f64) -> f64 {
         match *self {
             Singularity::AbelSqrt => 1.0 / (t_minus_x.abs() * t_plus_x.abs()).sqrt(),

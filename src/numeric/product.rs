@@ -94,6 +94,7 @@ fn same_point(z: f64, e: f64) -> bool {
 /// `Σ w_q g(t_q) ≈ ∫_l^r g(t) Π_k |t - z_k|^{e_k} dt` for smooth `g`,
 /// using `m`-point rules on every piece. Factors with exponent 0 are
 /// ignored. Returns the number of pieces used.
+#[cfg(any(test, feature = "internals"))]
 pub fn composite_rule(
     l: f64,
     r: f64,

@@ -9,6 +9,7 @@ use super::error::NumericError;
 
 /// Finds a sign change of `f` by stepping outward from `[a, b]` inside
 /// `[lo, hi]` and returns the bracket and its values.
+#[cfg(any(test, feature = "internals"))]
 pub fn bracket<E, F>(
     f: &mut F,
     mut a: f64,
@@ -51,6 +52,7 @@ where
 /// decreasing in its argument: from `x0` it steps with `up` or `down`
 /// (chosen by the sign of `f(x0)`) until the sign changes. Returns the
 /// bracket and its values.
+#[cfg(any(test, feature = "internals"))]
 pub fn directed_bracket<E, F>(
     f: &mut F,
     x0: f64,

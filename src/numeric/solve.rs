@@ -177,6 +177,7 @@ impl CheckedLu {
 }
 
 /// Solves `A x = b` with the default conditioning limit.
+#[cfg(feature = "internals")]
 pub fn solve(a: &DMatrix<f64>, b: &DVector<f64>) -> Result<DVector<f64>, NumericError> {
     CheckedLu::new(a, DEFAULT_MAX_COND)?.solve(b)
 }

@@ -102,6 +102,7 @@ pub enum AbelBase {
 }
 
 /// A kernel split as `a(x,t) · |t² - x²|^(-1/2)`.
+#[cfg(any(test, feature = "internals"))]
 pub struct AbelSplit {
     /// The smooth factor `a` (the base's constant is folded in).
     pub smooth: Fn2,
@@ -139,6 +140,7 @@ pub struct AbelParts {
 /// assert_eq!(s.base, AbelBase::TMinusX);
 /// assert!(((s.smooth)(0.3, 0.5) - 1.0).abs() < 1e-15);
 /// ```
+#[cfg(any(test, feature = "internals"))]
 pub fn split_abel(e: &Expr) -> Option<AbelSplit> {
     let parts = abel_parts(e)?;
     Some(AbelSplit {

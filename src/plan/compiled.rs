@@ -99,10 +99,10 @@ pub struct CompiledOutput {
     pub terms: Vec<OutputTerm>,
 }
 
-/// A system ready for [`super::solve_system`].
+/// A system ready for `super::solve_system`.
 #[derive(Clone)]
 pub struct CompiledSystem {
-    /// Operator symbol names (the letters of the [`NcPoly`] words).
+    /// Operator symbol names (the letters of the `NcPoly` words).
     pub symbols: Vec<String>,
     /// The operator of each symbol the equations use (`None` otherwise).
     pub operators: Vec<Option<Operator>>,
@@ -132,7 +132,7 @@ pub struct CompiledSystem {
     /// Constant limits strictly inside the interval (meshes are graded there).
     pub interior: Vec<f64>,
     /// Narrow features of the kernels (in `t`) and right sides (in `x`),
-    /// as `(point, width)` ([`super::features`]): meshes are graded there
+    /// as `(point, width)` (`super::features`): meshes are graded there
     /// down to the width.
     pub features: Vec<(f64, f64)>,
 }
@@ -318,9 +318,9 @@ impl CompiledSystem {
 }
 
 impl CompiledSystem {
-    /// The one [`Derivation`] of this system for its target: the same
+    /// The one `Derivation` of this system for its target: the same
     /// value `lambdamat reduce` prints for the same file, since both come
-    /// from [`Derivation::new`] on the same ordered words, target and
+    /// from `Derivation::new` on the same ordered words, target and
     /// principal symbol. With [`CompiledSystem::derived_pivots`] set (a
     /// generated solver), a derivation whose pivots differ from the
     /// embedded ones is refused ([`PlanError::Invalid`]: the solver was

@@ -50,11 +50,10 @@ pub mod uniqueness;
 pub use compiled::CompiledSystem;
 pub use error::PlanError;
 pub use methods::Method;
-pub use refine::{
-    Defect, SolveOptions, SolveReport, UnknownValues, solve_derived, solve_program, solve_system,
-};
+pub use refine::{SolveOptions, SolveReport, solve_system};
+#[cfg(feature = "internals")]
+pub use refine::solve_program;
 pub use split_input::SplitInput;
-pub use split_solve::{
-    SplitOptions, SplitReport, SplitSolution, solve_split, solve_split_fields, solve_split_input,
-    solve_split_input_fields,
-};
+pub use split_solve::{SplitOptions, SplitReport, SplitSolution};
+#[cfg(feature = "internals")]
+pub use split_solve::{solve_split, solve_split_fields, solve_split_input, solve_split_input_fields};

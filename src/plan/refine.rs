@@ -21,6 +21,7 @@ use serde::Serialize;
 use crate::numeric::budget;
 use crate::numeric::solve::DEFAULT_MAX_COND;
 use crate::numeric::{Factor, Limits, Operator, Singularity};
+#[cfg(feature = "internals")]
 use crate::system::Program;
 
 use super::compiled::CompiledSystem;
@@ -32,7 +33,7 @@ use super::methods::{
 };
 use crate::algebra::derivation::Derivation;
 
-pub use crate::numeric::solve::{ROUNDING_FLOOR, ROUNDING_GROWTH, rounding_floor};
+pub use crate::numeric::solve::rounding_floor;
 
 /// Longest panel, in peak widths, for systems with peaked kernels.
 const PEAK_PANELS: f64 = 1.0;
@@ -656,6 +657,7 @@ fn weights_text(sys: &CompiledSystem, s: &Setup, weights: &[Vec<Factor>]) -> Str
 /// Solves `prog` by `opts.method`, refining until two levels agree: the
 /// program is compiled ([`CompiledSystem::from_program`]) and solved by
 /// [`solve_system`].
+#[cfg(feature = "internals")]
 pub fn solve_program(prog: &Program, opts: &SolveOptions) -> Result<SolveReport, PlanError> {
     solve_system(&CompiledSystem::from_program(prog, None)?, opts)
 }

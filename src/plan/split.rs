@@ -33,6 +33,7 @@ use crate::numeric::solve::{CheckedLu, DEFAULT_MAX_COND, least_squares};
 use crate::numeric::{
     Assembler, Factor, Grading, Limits, Mesh, Operator, PanelBasis, Side, Singularity,
 };
+#[cfg(any(test, feature = "internals"))]
 use crate::system::Program;
 
 /// Mesh and degree parameters of one refinement level.
@@ -368,6 +369,7 @@ fn num(context: &str) -> impl FnOnce(crate::numeric::NumericError) -> PlanError 
 impl SplitProblem {
     /// Compiles `prog` (which must have split-domain declarations):
     /// [`SplitProblem::from_input`] of [`SplitInput::from_program`].
+    #[cfg(any(test, feature = "internals"))]
     pub fn new(prog: &Program) -> Result<SplitProblem, PlanError> {
         SplitProblem::from_input(SplitInput::from_program(prog)?)
     }

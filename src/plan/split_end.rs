@@ -685,7 +685,6 @@ pub fn answer_at_end(
                 problem,
                 discrete: d,
                 previous,
-                level: k,
                 shifted: None,
             });
         }

@@ -34,8 +34,6 @@ pub enum Approach {
 /// tile an interval (an unweighted panel basis, values at its nodes).
 #[derive(Debug, Clone)]
 pub struct ResidualField {
-    /// The equation (index in source order).
-    pub equation: usize,
     /// The unweighted basis on the panels of the interval.
     pub basis: PanelBasis,
     /// The residual at the basis nodes (its coefficients).
@@ -44,6 +42,7 @@ pub struct ResidualField {
 
 impl ResidualField {
     /// The interpolated residual at `x` (zero outside the interval).
+    #[cfg(any(test, feature = "internals"))]
     pub fn eval(&self, x: f64) -> f64 {
         self.basis.eval(&self.values, x)
     }
@@ -114,6 +113,7 @@ impl Valued {
     };
 
     /// `a·self` (the estimate scales with `|a|`).
+    #[cfg(feature = "internals")]
     pub fn scale(self, a: f64) -> Valued {
         Valued {
             value: a * self.value,
@@ -626,6 +626,7 @@ impl<'a> Fields<'a> {
 
     /// Whether equation `e` is imposed at `x` (its declared interval, with
     /// its open and closed ends; everywhere when it has none).
+    #[cfg(any(test, feature = "internals"))]
     pub fn imposed(&self, e: usize, x: f64) -> bool {
         match self
             .problem
@@ -776,7 +777,6 @@ impl<'a> Fields<'a> {
         let basis = PanelBasis::new(&mesh, &counts, vec![]).map_err(ctx())?;
         let values = self.residuals(e, &basis.nodes())?;
         Ok(ResidualField {
-            equation: e,
             basis,
             values,
         })

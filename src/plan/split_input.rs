@@ -152,7 +152,7 @@ pub struct SplitCondition {
 }
 
 /// The split-domain declarations as numbers and functions (the numeric
-/// counterpart of [`Contact`], field for field).
+/// counterpart of `Contact`, field for field).
 #[derive(Clone, Default)]
 pub struct SplitContact {
     /// Unknown scalars (slots `0..scalars.len()`).
@@ -184,7 +184,7 @@ pub struct SplitContact {
 }
 
 impl SplitContact {
-    /// The numeric form of `c` (expressions evaluated by [`RExpr::eval`]).
+    /// The numeric form of `c` (expressions evaluated by `RExpr::eval`).
     pub fn from_contact(c: &Contact) -> SplitContact {
         let interval = |i: &Option<Interval>| i.as_ref().map(SplitInterval::from_interval);
         SplitContact {
@@ -268,7 +268,7 @@ impl SplitContact {
     }
 
     /// The slot values for the scalar values `scalars`: the scalars, then
-    /// every real parameter evaluated in order (as [`Contact::values`]).
+    /// every real parameter evaluated in order (as `Contact::values`).
     pub fn values(&self, scalars: &[f64]) -> Vec<f64> {
         let mut v: Vec<f64> = scalars.to_vec();
         v.resize(self.scalars.len(), f64::NAN);

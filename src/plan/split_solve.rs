@@ -41,6 +41,7 @@ use super::split_input::SplitInput;
 use crate::numeric::NumericError;
 use crate::numeric::roots::{brent, secant};
 use crate::numeric::solve::rounding_floor;
+#[cfg(any(test, feature = "internals"))]
 use crate::system::Program;
 
 /// Accuracy controls.
@@ -200,8 +201,6 @@ pub struct SplitSolution {
     /// (`split_fields::LevelFields`), as the two levels' scalars and
     /// outputs give theirs.
     pub previous: Option<Discrete>,
-    /// The last level's index in the ladder of [`SplitLevel::level`].
-    pub level: usize,
     /// The last level discretised at the unknown scalar moved by its
     /// estimate (toward the inside of its range), when there is a scalar
     /// with a finite estimate: at each point, the change of a field from
@@ -212,12 +211,14 @@ pub struct SplitSolution {
 }
 
 /// Solves `prog` (a file with split-domain declarations).
+#[cfg(feature = "internals")]
 pub fn solve_split(prog: &Program, opts: &SplitOptions) -> Result<SplitReport, PlanError> {
     solve_split_fields(prog, opts).map(|s| s.report)
 }
 
 /// [`solve_split`], keeping the compiled problem and the last
 /// discretisation.
+#[cfg(any(test, feature = "internals"))]
 pub fn solve_split_fields(prog: &Program, opts: &SplitOptions) -> Result<SplitSolution, PlanError> {
     check_tolerance(opts)?;
     solve_split_input_fields(SplitInput::from_program(prog)?, opts)
@@ -235,12 +236,14 @@ pub(super) fn check_tolerance(opts: &SplitOptions) -> Result<(), PlanError> {
 
 /// Solves the problem `input` describes, however it was built (from a
 /// program by [`solve_split`], or by a solver `lambdamat codegen` wrote).
+#[cfg(feature = "internals")]
 pub fn solve_split_input(input: SplitInput, opts: &SplitOptions) -> Result<SplitReport, PlanError> {
     solve_split_input_fields(input, opts).map(|s| s.report)
 }
 
 /// [`solve_split_input`], keeping the compiled problem and the last
 /// discretisation.
+#[cfg(any(test, feature = "internals"))]
 pub fn solve_split_input_fields(
     input: SplitInput,
     opts: &SplitOptions,
@@ -322,7 +325,6 @@ fn solve_split_ladder(
                     problem,
                     discrete: d,
                     previous: None,
-                    level: k - 1,
                     shifted: None,
                 });
             }
@@ -418,7 +420,6 @@ fn solve_split_ladder(
                 problem,
                 discrete: d,
                 previous,
-                level: k,
                 shifted,
             });
         }

@@ -103,7 +103,7 @@ pub struct OrderedForm {
     pub agrees_with_cramer: bool,
 }
 
-/// One formula in the three notations of [`crate::algebra::print`].
+/// One formula in the three notations of `crate::algebra::print`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Printed {
     /// Plain text (`k3 k7^-1 k5`).

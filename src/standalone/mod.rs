@@ -3,16 +3,32 @@
 //! output, plotters or indicatif). It parses the flags of `lambdamat solve`
 //! that need no plotting (`--method`, `--tol`, `--max-level`, `--json`,
 //! `--csv FILE`, `--help`) by hand, solves, prints the report of
-//! `lambdamat solve` ([`crate::report`]) and returns the exit code of the
+//! `lambdamat solve` (`crate::report`) and returns the exit code of the
 //! project's contract: 0 converged, 1 usage, 2 invalid input, 3 failed
 //! computation, 4 printed but not converged. A closed standard output or
 //! standard error does not change the exit code ([`Stdout`], [`note`]).
+//!
+//! It also re-exports every name a generated solver uses, and no other: a
+//! generated file names `lambdamat::standalone` only, so that it builds
+//! against the crate's public surface.
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
-use crate::plan::{CompiledSystem, Method, PlanError, SplitInput};
+use crate::plan::Method;
 use crate::report::{Report, SolveSettings};
+
+pub use crate::numeric::{Limits, Operator, Singularity};
+pub use crate::plan::PlanError;
+pub use crate::plan::compiled::{
+    CompiledCondition, CompiledEquation, CompiledOutput, CompiledSystem, OutputTerm, words,
+};
+pub use crate::plan::split_input::{
+    RealFn, SplitCondition, SplitContact, SplitInequality, SplitInput, SplitInterval, SplitKind,
+    SplitLinTerm, SplitRelation, SplitSingular,
+};
+pub use crate::system::contact::{RFunc, Scalar, real_pow};
+pub use crate::system::expr::{acot, erf, gamma};
 
 /// The highest refinement level `--max-level` accepts (levels are numbered
 /// from 0): beyond it the geometric grading makes panels too small for the

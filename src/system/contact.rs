@@ -42,10 +42,10 @@ pub enum RBin {
     Pow,
 }
 
-/// Elementary functions of [`RExpr`]: the same functions as in kernels.
+/// Elementary functions of `RExpr`: the same functions as in kernels.
 pub use super::expr::Func as RFunc;
 
-/// `a^b` as [`RExpr::eval`] computes it: `powi` for small integer `b`,
+/// `a^b` as `RExpr::eval` computes it: `powi` for small integer `b`,
 /// else `powf` (code that `lambdamat codegen` writes calls it too).
 pub fn real_pow(a: f64, b: f64) -> f64 {
     if b.fract() == 0.0 && b.abs() <= 64.0 {

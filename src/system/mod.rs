@@ -3,7 +3,7 @@
 //! names only as a symbol table (indices everywhere else), exact rationals
 //! and polynomials for the algebra, and plain expression trees for the
 //! numerics. Nothing here knows about source text, spans or parsing, and
-//! nothing here does algebra beyond storing [`MPoly`] and [`NcPoly`] values.
+//! nothing here does algebra beyond storing [`MPoly`](crate::algebra::mpoly::MPoly) and [`NcPoly`] values.
 //!
 //! * [`program`]: [`Program`], [`MatrixDef`], [`Directive`], equations,
 //!   parameters and outputs;
@@ -16,7 +16,6 @@ pub mod expr;
 pub mod operator;
 pub mod program;
 
-pub use crate::algebra::mpoly::MPoly;
 pub use crate::algebra::ncpoly::NcPoly;
 pub use expr::{Expr, Func};
 pub use operator::{Limit, OperatorDef, Term};

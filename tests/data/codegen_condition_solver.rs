@@ -3,7 +3,7 @@
 //!
 //! Kernels, multipliers, right sides and output weights are the Rust
 //! functions below; `system()` collects them and `main()` solves through
-//! lambdamat's numeric layer (`lambdamat::plan::solve_system`): assembly,
+//! lambdamat's numeric layer (`lambdamat::standalone::solver_main`): assembly,
 //! refinement to the tolerance, and the error estimate.
 //! Unknowns on [-1, 1]; eliminations solve for `f`.
 //!
@@ -36,11 +36,10 @@
 
 use std::sync::Arc;
 
-use lambdamat::numeric::Limits::Fixed;
-use lambdamat::numeric::Operator;
-use lambdamat::plan::PlanError;
-use lambdamat::plan::compiled::{
-    CompiledCondition, CompiledEquation, CompiledOutput, CompiledSystem, OutputTerm, words,
+use lambdamat::standalone::Limits::Fixed;
+use lambdamat::standalone::{
+    CompiledCondition, CompiledEquation, CompiledOutput, CompiledSystem, Operator, OutputTerm,
+    PlanError, words,
 };
 
 /// Operator `h`, kernel `1/pi*(1/(t - x))`: its smooth factor a(x, t) with kernel = a(x, t)/(t - x).
@@ -58,11 +57,11 @@ fn condition_weight_1_1(_x: f64) -> f64 {
     1.0
 }
 
-/// The compiled system, ready for `lambdamat::plan::solve_system`.
+/// The compiled system, ready for `lambdamat::standalone::solver_main`.
 pub fn system() -> Result<CompiledSystem, PlanError> {
     let mut op_h = Operator::zero();
     let limits = Fixed { a: -1.0, b: 1.0 };
-    let term = Operator::integral(limits, lambdamat::numeric::Singularity::Cauchy, kernel_h);
+    let term = Operator::integral(limits, lambdamat::standalone::Singularity::Cauchy, kernel_h);
     op_h = op_h + term;
     let lhs_1 = vec![words(&[(&[0], "1")])?];
     let equation_1 = CompiledEquation {

@@ -3,7 +3,7 @@
 //!
 //! Kernels, multipliers, right sides and output weights are the Rust
 //! functions below; `system()` collects them and `main()` solves through
-//! lambdamat's numeric layer (`lambdamat::plan::solve_system`): assembly,
+//! lambdamat's numeric layer (`lambdamat::standalone::solver_main`): assembly,
 //! refinement to the tolerance, and the error estimate.
 //! Unknowns on [0, 1]; eliminations solve for `u`.
 //!
@@ -35,12 +35,10 @@
 
 use std::sync::Arc;
 
-use lambdamat::numeric::Limits::Fixed;
-use lambdamat::numeric::Operator;
-use lambdamat::numeric::Singularity::Smooth;
-use lambdamat::plan::PlanError;
-use lambdamat::plan::compiled::{
-    CompiledEquation, CompiledOutput, CompiledSystem, OutputTerm, words,
+use lambdamat::standalone::Limits::Fixed;
+use lambdamat::standalone::Singularity::Smooth;
+use lambdamat::standalone::{
+    CompiledEquation, CompiledOutput, CompiledSystem, Operator, OutputTerm, PlanError, words,
 };
 
 /// Operator `k`, kernel `-1/10*(sin(x*t) + cos(t) + tan(t/2) + asin(t/2) + acos(t/2))`: a smooth kernel.
@@ -51,7 +49,7 @@ fn kernel_k_2(x: f64, t: f64) -> f64 {
 
 /// Operator `m`, kernel `1/10*(atan(t) + acot(t + 1) + sinh(x*t) + cosh(t) + tanh(t))`: a smooth kernel.
 fn kernel_m(x: f64, t: f64) -> f64 {
-    let v1 = f64::atan(t) + lambdamat::system::expr::acot(t + 1.0) + f64::sinh(x * t);
+    let v1 = f64::atan(t) + lambdamat::standalone::acot(t + 1.0) + f64::sinh(x * t);
     0.1 * (v1 + f64::cosh(t) + f64::tanh(t))
 }
 
@@ -72,7 +70,7 @@ fn rhs_1(x: f64) -> f64 {
 
 /// Right side of equation 2: `cos(x) + tanh(x)*acot(x + 1)`.
 fn rhs_2(x: f64) -> f64 {
-    f64::cos(x) + f64::tanh(x) * lambdamat::system::expr::acot(x + 1.0)
+    f64::cos(x) + f64::tanh(x) * lambdamat::standalone::acot(x + 1.0)
 }
 
 /// Weight of output `P`: `1`.
@@ -80,7 +78,7 @@ fn weight_p_3(_x: f64) -> f64 {
     1.0
 }
 
-/// The compiled system, ready for `lambdamat::plan::solve_system`.
+/// The compiled system, ready for `lambdamat::standalone::solver_main`.
 pub fn system() -> Result<CompiledSystem, PlanError> {
     let mut op_k = Operator::zero();
     op_k = op_k + Operator::identity();
@@ -89,10 +87,14 @@ pub fn system() -> Result<CompiledSystem, PlanError> {
     op_m = op_m + Operator::integral(Fixed { a: 0.0, b: 1.0 }, Smooth, kernel_m);
     let mut op_l = Operator::zero();
     let limits = Fixed { a: 0.0, b: 1.0 };
-    let term = Operator::integral(limits, lambdamat::numeric::Singularity::Log, kernel_l_1);
+    let term = Operator::integral(limits, lambdamat::standalone::Singularity::Log, kernel_l_1);
     op_l = op_l + term;
     let limits = Fixed { a: 0.0, b: 1.0 };
-    let term = Operator::integral(limits, lambdamat::numeric::Singularity::Smooth, kernel_l_2);
+    let term = Operator::integral(
+        limits,
+        lambdamat::standalone::Singularity::Smooth,
+        kernel_l_2,
+    );
     op_l = op_l + term;
     let lhs_1 = vec![words(&[(&[0], "1")])?, words(&[(&[1], "1")])?];
     let equation_1 = CompiledEquation {

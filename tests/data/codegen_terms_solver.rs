@@ -3,7 +3,7 @@
 //!
 //! Kernels, multipliers, right sides and output weights are the Rust
 //! functions below; `system()` collects them and `main()` solves through
-//! lambdamat's numeric layer (`lambdamat::plan::solve_system`): assembly,
+//! lambdamat's numeric layer (`lambdamat::standalone::solver_main`): assembly,
 //! refinement to the tolerance, and the error estimate.
 //! Unknowns on [0, 1]; eliminations solve for `v`.
 //!
@@ -39,12 +39,10 @@
 
 use std::sync::Arc;
 
-use lambdamat::numeric::Limits::{Fixed, Lower};
-use lambdamat::numeric::Operator;
-use lambdamat::numeric::Singularity::{AbelSqrt, Smooth};
-use lambdamat::plan::PlanError;
-use lambdamat::plan::compiled::{
-    CompiledEquation, CompiledOutput, CompiledSystem, OutputTerm, words,
+use lambdamat::standalone::Limits::{Fixed, Lower};
+use lambdamat::standalone::Singularity::{AbelSqrt, Smooth};
+use lambdamat::standalone::{
+    CompiledEquation, CompiledOutput, CompiledSystem, Operator, OutputTerm, PlanError, words,
 };
 
 /// Multiplier of operator `m`: `x`.
@@ -87,7 +85,7 @@ fn weight_v(x: f64) -> f64 {
     f64::powi(x, 2)
 }
 
-/// The compiled system, ready for `lambdamat::plan::solve_system`.
+/// The compiled system, ready for `lambdamat::standalone::solver_main`.
 pub fn system() -> Result<CompiledSystem, PlanError> {
     let mut op_m = Operator::zero();
     op_m = op_m + Operator::identity().scaled(3.0);

@@ -7,7 +7,7 @@
 //! real parameters are Rust functions of the slot values `v` (the unknown
 //! scalars, then the real parameters) and `x`. `input()` collects them and
 //! `main()` solves through lambdamat's split-domain solver
-//! (`lambdamat::plan::solve_split_input`): the scalars' root solve,
+//! (`lambdamat::standalone::split_solver_main`): the scalars' root solve,
 //! refinement to the tolerance, and the error estimates. Parameters are
 //! those of the regenerating command (`--set` there).
 //! Slots: a.
@@ -41,18 +41,13 @@
 
 use std::sync::Arc;
 
-use lambdamat::numeric::Limits::Upper;
-use lambdamat::numeric::Operator;
-use lambdamat::numeric::Singularity::AbelSqrt;
-use lambdamat::plan::PlanError;
-use lambdamat::plan::compiled::{
-    CompiledEquation, CompiledOutput, CompiledSystem, OutputTerm, words,
+use lambdamat::standalone::Limits::Upper;
+use lambdamat::standalone::Singularity::AbelSqrt;
+use lambdamat::standalone::{
+    CompiledEquation, CompiledOutput, CompiledSystem, Operator, OutputTerm, PlanError, RFunc,
+    RealFn, Scalar, SplitCondition, SplitContact, SplitInput, SplitInterval, SplitKind,
+    SplitRelation, SplitSingular, real_pow, words,
 };
-use lambdamat::plan::split_input::{
-    RealFn, SplitCondition, SplitContact, SplitInput, SplitInterval, SplitKind, SplitRelation,
-    SplitSingular,
-};
-use lambdamat::system::contact::{RFunc, Scalar, real_pow};
 
 /// Operator `k1`, kernel `t/sqrt(t^2 - x^2)`: its smooth factor a(x, t) with kernel = a(x, t)/√|t² - x²|.
 fn kernel_k1(_x: f64, t: f64) -> f64 {
@@ -69,7 +64,7 @@ fn weight_p(x: f64) -> f64 {
     x
 }
 
-/// The compiled system, ready for `lambdamat::plan::solve_system`.
+/// The compiled system, ready for `lambdamat::standalone::solver_main`.
 pub fn system() -> Result<CompiledSystem, PlanError> {
     let mut op_k1 = Operator::zero();
     op_k1 = op_k1 + Operator::integral(Upper { b: 2.0 }, AbelSqrt, kernel_k1);
@@ -133,7 +128,7 @@ fn condition_1_value(v: &[f64], _x: f64) -> f64 {
     (-0.25) / RFunc::Sqrt.apply(v[0])
 }
 
-/// The split-domain problem, ready for `lambdamat::plan::solve_split_input`.
+/// The split-domain problem, ready for `lambdamat::standalone::split_solver_main`.
 pub fn input() -> Result<SplitInput, PlanError> {
     let contact = SplitContact {
         scalars: vec![Scalar {

@@ -7,7 +7,9 @@
 use crate::algebra::matrix::Matrix;
 use crate::algebra::modular::{self, Fp};
 use crate::algebra::qx::{QPoly, QxRing};
-use crate::algebra::ring::{GcdDomain, Ring};
+use crate::algebra::ring::GcdDomain;
+#[cfg(any(test, feature = "internals"))]
+use crate::algebra::ring::Ring;
 use num_bigint::BigInt;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 use serde::Serialize;
@@ -757,6 +759,7 @@ pub fn certify_last_factor(
 /// polynomials, for `Ã = Δ·A` (Δ the rows' denominator lcms): both sides
 /// have degree ≤ N (the least of the sums of row and of column degrees),
 /// so agreement at the N+1 points 0, …, N of Z_p decides it. Returns p.
+#[cfg(any(test, feature = "internals"))]
 fn det_agrees_mod_p(a: &Matrix<QxRing>, c: &QPoly) -> Option<u64> {
     let n = a.rows();
     let p = modular::primes().last()?;
@@ -831,6 +834,7 @@ fn det_agrees_mod_p(a: &Matrix<QxRing>, c: &QPoly) -> Option<u64> {
 /// Then `f_(n−1) = d_(n−1)/d_(n−2) ~ g` and `f_n = det A/d_(n−1) ~ c/g`
 /// (checked to be divisible by f_(n−1)). An empty vector means "not
 /// established"; the certificate says which check failed.
+#[cfg(any(test, feature = "internals"))]
 pub fn certify_two_factors(
     a: &Matrix<QxRing>,
     c: &QPoly,

@@ -33,8 +33,10 @@ pub trait Sink<R: EuclideanDomain> {
 }
 
 /// Discards the operations: only D is computed.
+#[cfg(feature = "internals")]
 pub struct NoTransforms;
 
+#[cfg(feature = "internals")]
 impl<R: EuclideanDomain> Sink<R> for NoTransforms {
     fn row(&mut self, _: &R, _: &Op<R::Elem>) {}
     fn col(&mut self, _: &R, _: &Op<R::Elem>) {}

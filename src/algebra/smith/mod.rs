@@ -35,7 +35,9 @@ pub mod two_by_two;
 use crate::algebra::matrix::Matrix;
 use crate::algebra::ring::EuclideanDomain;
 use certify::{Certificate, ProductCheck, Unimodular, certify, certify_with};
-use elimination::{NoTransforms, Recorder, eliminate};
+#[cfg(feature = "internals")]
+use elimination::NoTransforms;
+use elimination::{Recorder, eliminate};
 
 /// A Smith decomposition `U·A·V = D` with the inverses of U and V.
 #[derive(Clone, Debug)]
@@ -113,6 +115,7 @@ impl<R: EuclideanDomain> SmithDecomposition<R> {
 }
 
 /// The Smith form D alone (no transforms are built).
+#[cfg(feature = "internals")]
 pub fn smith_form<R: EuclideanDomain>(a: &Matrix<R>) -> Matrix<R> {
     eliminate(a, &mut NoTransforms)
 }

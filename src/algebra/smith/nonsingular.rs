@@ -19,7 +19,9 @@ use crate::algebra::qx::{QPoly, QxRing};
 use crate::algebra::rational::Q;
 use crate::algebra::ring::{GcdDomain, Ring};
 use num_bigint::BigInt;
-use num_traits::{One, Zero};
+use num_traits::One;
+#[cfg(any(test, feature = "internals"))]
+use num_traits::Zero;
 
 #[cfg(test)]
 fn eval_int(p: &[BigInt], x: &BigInt) -> BigInt {
@@ -32,6 +34,7 @@ fn eval_int(p: &[BigInt], x: &BigInt) -> BigInt {
 
 /// Fraction-free Gauss–Jordan on `[M | I]`: returns `(det M, adj M)`, or
 /// `None` when M is singular.
+#[cfg(any(test, feature = "internals"))]
 pub fn det_adj_int(m: &[Vec<BigInt>]) -> Option<(BigInt, Vec<Vec<BigInt>>)> {
     let n = m.len();
     let mut w: Vec<Vec<BigInt>> = m
@@ -92,6 +95,7 @@ pub fn det_adj_int(m: &[Vec<BigInt>]) -> Option<(BigInt, Vec<Vec<BigInt>>)> {
 
 /// The integer polynomial of degree ≤ `values.len()-1` taking `values[k]` at
 /// `s + k`, by forward differences (exact: Δ^k f(s) is divisible by k!).
+#[cfg(any(test, feature = "internals"))]
 pub fn interpolate_int(values: &[BigInt], s: i64) -> Vec<BigInt> {
     let n = values.len();
     let mut diff = values.to_vec();

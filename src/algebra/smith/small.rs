@@ -572,6 +572,7 @@ fn lift_rows(
 /// computed without Q\[x\] arithmetic. Both stages end early (a further
 /// prime agreeing), so the result is a candidate: the caller certifies it.
 /// `None` when some step declines (the caller takes the exact route).
+#[cfg(any(test, feature = "internals"))]
 pub fn hermite_from_adjugate(
     a: &Matrix<QxRing>,
     at: &[Vec<IntPoly>],
