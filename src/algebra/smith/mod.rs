@@ -62,7 +62,7 @@ impl<R: EuclideanDomain> SmithDecomposition<R> {
     /// use lambdamat::algebra::smith::SmithDecomposition;
     /// let r = UPolyRing::new(Rationals, "x");
     /// let x = UPoly(vec![qi(0), qi(1)]);
-    /// let a = Matrix::new(r.clone(), 2, 2, vec![x.clone(), r.zero_of(), r.zero_of(), x]);
+    /// let a = Matrix::new(r.clone(), 2, 2, vec![x.clone(), UPoly(vec![]), UPoly(vec![]), x]);
     /// let s = SmithDecomposition::new(&a);
     /// assert!(s.certify(&a).verified());
     /// ```
