@@ -45,6 +45,12 @@ impl<K: Field> UPolyRing<K> {
         UPoly(c)
     }
 
+    /// The zero polynomial (a convenience for doc examples).
+    #[cfg(any(test, feature = "internals"))]
+    pub fn zero_of(&self) -> UPoly<K::Elem> {
+        UPoly(Vec::new())
+    }
+
     /// Multiplies by a scalar.
     pub fn scale(&self, a: &UPoly<K::Elem>, c: &K::Elem) -> UPoly<K::Elem> {
         if self.k.is_zero(c) {
