@@ -33,7 +33,8 @@
 //! `split_weights.rs`) never depends on the outputs requested (issue 27:
 //! a point value requested beside an end moved when that end was graded,
 //! which graded it, while the solution was right without grading). If no
-//! change exceeds its estimate (and 64 ulps), the answer
+//! change exceeds its estimate (and 64 ulps; of the largest integral for
+//! an integral, as the unknowns are solved together), the answer
 //! stands and the cost was one or two solves on level `k`. If one does,
 //! the end behaviour was not resolved: the mesh is graded toward those
 //! ends from then on, the graded level `k` becomes the first level of a
@@ -206,13 +207,14 @@ pub(super) fn check(
             _ => format!("int({a}..{b}) t^{k}*{u}(x) dx (t = (x - {a})/({b} - {a}))"),
         })
     }));
-    let mut compare = |name: &str, a: f64, b: f64, estimate: f64| {
+    // `scale`: the size the quantity's rounding is relative to.
+    let mut compare = |name: &str, a: f64, b: f64, estimate: f64, scale: f64| {
         let change = (b - a).abs();
-        let slack = 64.0 * f64::EPSILON * a.abs().max(b.abs());
+        let slack = 64.0 * f64::EPSILON * a.abs().max(b.abs()).max(scale);
         // A change that is not a number (the probe's Newton step had no
         // finite slope or residual: seen at 1 − c ≈ 2e-12 on the Hertz
-        // problem) is no evidence either way; the outputs, compared at the
-        // same scalar, still are.
+        // problem) is no evidence either way; the integrals, compared at
+        // the same scalar, still are.
         let over = change > share * estimate + slack;
         if over {
             exceeded = true;
@@ -226,11 +228,34 @@ pub(super) fn check(
     // Held fixed, the scalars have nothing to compare.
     for (i, name) in scalar_names.iter().enumerate().filter(|_| !fixed) {
         let h = history(climbed, this, &|l| &l.scalars, i);
-        compare(name, this.scalars[i], scalars[i], level_estimate(&h) + rt);
+        compare(
+            name,
+            this.scalars[i],
+            scalars[i],
+            level_estimate(&h) + rt,
+            0.0,
+        );
     }
+    // The unknowns are solved together, so each one's values carry the
+    // rounding of the whole solution: an integral's slack is relative to
+    // the largest one, not to its own size. The Hertz problem at μ = 1e-9
+    // and c = 1e-10: `∫q ≈ 1e-9` moved by 1.9e-16 (rounding, ε·|∫p|)
+    // against its level estimate 1.2e-16 and 64 ulps of itself (1e-23),
+    // which graded the end 0 for nothing.
+    let solution_scale = this
+        .integrals
+        .iter()
+        .chain(&integrals)
+        .fold(0.0f64, |m, v| m.max(v.abs()));
     for (i, name) in integral_names.iter().enumerate() {
         let h = history(climbed, this, &|l| &l.integrals, i);
-        compare(name, this.integrals[i], integrals[i], level_estimate(&h));
+        compare(
+            name,
+            this.integrals[i],
+            integrals[i],
+            level_estimate(&h),
+            solution_scale,
+        );
     }
     let output_changes: Vec<EndChange> = problem
         .sys
