@@ -102,6 +102,24 @@ const SYMBOL_KEY: usize = 1 << 32;
 /// stays above `0.25^20 ≈ 1e-12` of its neighbourhood.
 pub const MAX_LAYERS: usize = 20;
 
+/// Most grading layers toward an end where the automatic end weights
+/// chose the plain weight (`split_weights.rs`: the unknown behaves like a
+/// polynomial there), the layers of level 0. There grading only refines,
+/// and panels far below the unknown's scale can make the solution
+/// undetermined: an operator that weighs the unknown near the end by a
+/// vanishing factor (the Abel operator `∫_x^1 t p(t)/√(t² − x²) dt` of
+/// the flat punch weighs `p` near 0 by `t`) sees a panel `[0, h]` only
+/// through `O(h)`, so rounding is amplified like `1/h` there. Measured on
+/// `examples/contact/flat_punch.lmx` graded like a singular point (up to
+/// 20 layers, innermost panel `5e-13`): `p(0)` off by 2.1e-5, 4.2e-4 and
+/// 1.7e-3 on levels 5, 7 and 9, getting worse as levels are added. Six
+/// layers keep the innermost panel near `1e-4` of the half interval
+/// (amplification about `1e4`) while its few nodes still interpolate a
+/// polynomial-like unknown to about `h³`. Such an end is also one of the
+/// end check's (`split_ends.rs`): if grading it further moves an answer,
+/// it is graded like any undeclared end.
+pub const PLAIN_END_LAYERS: usize = 6;
+
 /// The problem, compiled once: operators per equation and unknown.
 pub struct SplitProblem {
     /// The compiled operator system (operators, right sides, outputs).
@@ -121,6 +139,11 @@ pub struct SplitProblem {
     /// check of the ladder (`split_ends.rs`) when grading them moved an
     /// answer beyond its estimate (an undeclared weak end singularity).
     graded_ends: Vec<f64>,
+    /// Indices in `contact.singulars` of the plain weights (`~ |x − end|^0`)
+    /// the automatic end weights installed (`split_weights.rs`): graded
+    /// toward with at most [`PLAIN_END_LAYERS`] layers, and left to the end
+    /// check like an undeclared end.
+    plain_ends: Vec<usize>,
     /// The end check's record, once it was made.
     end_check: Option<super::split_ends::EndCheck>,
     /// While the end check probes: the ends it grades and the most layers
@@ -244,12 +267,21 @@ impl SplitProblem {
             .contact
             .singulars
             .iter()
-            .map(|s| s.at.eval(&vars, 0.0))
+            .enumerate()
+            .filter(|(i, _)| !self.plain_ends.contains(i))
+            .map(|(_, s)| s.at.eval(&vars, 0.0))
             .collect();
         [a, b]
             .into_iter()
             .filter(|&z| z.is_finite() && !declared.contains(&z) && !self.graded_ends.contains(&z))
             .collect()
+    }
+
+    /// Marks the singular declarations `plain` (indices in
+    /// `contact.singulars`) as the plain end weights the automatic choice
+    /// installed ([`PLAIN_END_LAYERS`]).
+    pub(super) fn set_plain_ends(&mut self, plain: Vec<usize>) {
+        self.plain_ends = plain;
     }
 
     /// The ends graded although not declared singular (by the end check).
@@ -460,6 +492,7 @@ impl SplitProblem {
             ops,
             words,
             graded_ends: Vec::new(),
+            plain_ends: Vec::new(),
             end_check: None,
             probe: None,
             cache: Default::default(),
@@ -497,9 +530,14 @@ impl SplitProblem {
             add_break(lo, "a relation's interval end", &mut pts)?;
             add_break(hi, "a relation's interval end", &mut pts)?;
         }
-        for s in &c.singulars {
+        for (i, s) in c.singulars.iter().enumerate() {
             let z = s.at.eval(&vars, 0.0);
             add_break(z, "a singular point", &mut pts)?;
+            let layers = if self.plain_ends.contains(&i) {
+                lvl.layers.min(PLAIN_END_LAYERS)
+            } else {
+                lvl.layers
+            };
             let side = match s.side {
                 -1 => Side::Left,
                 1 => Side::Right,
@@ -510,7 +548,7 @@ impl SplitProblem {
             gradings.push(Grading {
                 at: z,
                 side,
-                layers: lvl.layers,
+                layers,
             });
         }
         let probed = self
@@ -595,13 +633,34 @@ impl SplitProblem {
         }
         // The mesh.
         let mesh = Mesh::graded_to_scale(a, b, &gradings, lvl.sigma).map_err(num("mesh"))?;
-        let counts: Vec<usize> = mesh
+        let mut counts: Vec<usize> = mesh
             .levels
             .iter()
             .map(|&l| {
                 ((lvl.n_min as f64 + lvl.slope * l as f64).round() as usize).clamp(1, lvl.n_max)
             })
             .collect();
+        // The panels of a plain end's few layers get the level's most
+        // nodes, so that every level refines them ([`PLAIN_END_LAYERS`]).
+        let full: Vec<f64> = gradings
+            .iter()
+            .filter(|g| g.layers > PLAIN_END_LAYERS)
+            .map(|g| g.at)
+            .collect();
+        let np = counts.len();
+        for (i, s) in c.singulars.iter().enumerate() {
+            let z = s.at.eval(&vars, 0.0);
+            if !self.plain_ends.contains(&i) || full.contains(&z) || !(z == a || z == b) {
+                continue;
+            }
+            for j in 0..PLAIN_END_LAYERS.min(np) {
+                let p = if z == a { j } else { np - 1 - j };
+                if mesh.levels[p] != j {
+                    break;
+                }
+                counts[p] = counts[p].max(lvl.n_max);
+            }
+        }
         // The coupled matrix of every unknown on the whole mesh, four
         // times (assembled blocks, the system, its factors, a temporary).
         let coefficients = nu as f64 * counts.iter().sum::<usize>() as f64;

@@ -81,7 +81,7 @@ use serde::Serialize;
 use super::error::{EndReason, PlanError, RangeEnd, RootAtEnd};
 use super::split::{SplitLevel, SplitProblem};
 use super::split_solve::{
-    Estimate, Level, S_LIMIT, S_LIMIT_LO, SplitOptions, SplitSolution, estimate_of, report,
+    Estimate, Level, S_LIMIT, S_LIMIT_LO, SplitOptions, SplitSolution, output_estimate, report,
 };
 
 /// An answer at an end of a scalar's range: the scalar is bounded, not
@@ -533,13 +533,14 @@ pub fn answer_at_end(
             slope: 0.0,
             outputs,
             coefficients,
+            integrals: super::split_ends::integrals_of(&problem, &d)?,
             cond: d.cond,
             unknowns: Vec::new(),
             sizes: Vec::new(),
         };
         // Each output's own level estimate.
         let noise: Vec<f64> = (0..n_out)
-            .map(|i| estimate_of(&levels, &this, &|l| &l.outputs, i))
+            .map(|i| output_estimate(&problem, &levels, &this, i))
             .collect();
         let est = noise.iter().fold(0.0f64, |m, &e| m.max(e));
         // The variations from the second level on (the first has nothing

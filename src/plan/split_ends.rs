@@ -27,18 +27,26 @@
 //! evaluated at the accepted root, and the root's move is the Newton step
 //! on the level's slope (a second evaluation and a secant step when that
 //! move exceeds the root tolerance; the outputs are then interpolated to
-//! the moved root). Every scalar and output is compared with its own
-//! estimate. If no change exceeds its estimate (and 64 ulps), the answer
+//! the moved root). Every scalar and every unknown's integral over the
+//! unknowns' interval is compared with its own estimate: quantities the
+//! equations define, so that the mesh (like the end weights,
+//! `split_weights.rs`) never depends on the outputs requested (issue 27:
+//! a point value requested beside an end moved when that end was graded,
+//! which graded it, while the solution was right without grading). If no
+//! change exceeds its estimate (and 64 ulps; of the largest integral for
+//! an integral, as the unknowns are solved together), the answer
 //! stands and the cost was one or two solves on level `k`. If one does,
 //! the end behaviour was not resolved: the mesh is graded toward those
 //! ends from then on, the graded level `k` becomes the first level of a
 //! new history and the ladder climbs on; on the last level allowed the
 //! answer is instead marked not converged, each estimate at least its
-//! change. The report says which ends were graded and by how much the
-//! answers moved. A graded end costs panels on every level, so ends are
+//! change (the outputs' changes are recorded for that, not compared).
+//! The report says which ends were graded and by how much the answers
+//! moved. A graded end costs panels on every level, so ends are
 //! graded only when the check shows they matter.
 use serde::Serialize;
 
+use super::compiled::OutputTerm;
 use super::error::PlanError;
 use super::split::{Discrete, SplitLevel, SplitProblem};
 use super::split_scalars::find_scalars;
@@ -47,7 +55,8 @@ use super::split_solve::{Level, ScalarMap, SplitOptions, find_scalar, history, l
 /// One quantity's change under the end check.
 #[derive(Debug, Clone, Serialize)]
 pub struct EndChange {
-    /// The scalar's or output's name.
+    /// The scalar's name, or the unknown's integral (`int(0..1) p(x) dx`),
+    /// or the output's name.
     pub name: String,
     /// How far it moved when the ends were graded (same level).
     pub change: f64,
@@ -69,8 +78,13 @@ pub struct EndCheck {
     /// The share of its estimate a change could reach without grading:
     /// 1 before accepting a level, less ahead of it.
     pub share: f64,
-    /// Every scalar's and output's change, and its estimate then.
+    /// Every scalar's and unknown integral's change, and its estimate
+    /// then: what decided `graded`.
     pub changes: Vec<EndChange>,
+    /// Every output's change and estimate: not part of the decision, but
+    /// the least estimate of an answer refused on the last level.
+    #[serde(skip)]
+    pub outputs: Vec<EndChange>,
 }
 
 impl EndCheck {
@@ -138,7 +152,8 @@ const APPROACH_SHARE: f64 = 0.5;
 /// levels `climbed` (oldest first). `fixed`: the scalars are held fixed
 /// (an answer at an end of the scalar's range, `split_end.rs`) rather than
 /// found as a root. It accepts at once when every end is graded, when
-/// every scalar and output converges cleanly (`converges_cleanly`), and
+/// every scalar and unknown's integral converges cleanly
+/// (`converges_cleanly`), and
 /// in [`Mode::Approach`] when a check was made before.
 #[allow(clippy::too_many_arguments)]
 pub(super) fn check(
@@ -164,7 +179,7 @@ pub(super) fn check(
     };
     let histories = (0..this.scalars.len())
         .map(|i| history(climbed, this, &|l| &l.scalars, i))
-        .chain((0..this.outputs.len()).map(|i| history(climbed, this, &|l| &l.outputs, i)));
+        .chain((0..this.integrals.len()).map(|i| history(climbed, this, &|l| &l.integrals, i)));
     if histories
         .into_iter()
         .all(|h| converges_cleanly(&h, opts.tol))
@@ -179,20 +194,27 @@ pub(super) fn check(
     problem.set_probe(Some((ends.clone(), PROBE_LAYERS)));
     let probed = probe(problem, lvl, this, opts.tol);
     problem.set_probe(None);
-    let (scalars, outputs) = probed?;
-    // Every scalar's and output's change against its own estimate.
+    let (scalars, outputs, integrals) = probed?;
+    // Every scalar's and integral's change against its own estimate.
     let mut changes = Vec::new();
     let mut exceeded = false;
     let names = |list: &mut dyn Iterator<Item = String>| list.collect::<Vec<_>>();
     let scalar_names = names(&mut problem.contact.scalars.iter().map(|s| s.name.clone()));
-    let output_names = names(&mut problem.sys.outputs.iter().map(|o| o.name.clone()));
-    let mut compare = |name: &str, a: f64, b: f64, estimate: f64| {
+    let integral_names = names(&mut problem.sys.unknowns.iter().flat_map(|u| {
+        let (a, b) = problem.domain;
+        (0..MOMENTS).map(move |k| match k {
+            0 => format!("int({a}..{b}) {u}(x) dx"),
+            _ => format!("int({a}..{b}) t^{k}*{u}(x) dx (t = (x - {a})/({b} - {a}))"),
+        })
+    }));
+    // `scale`: the size the quantity's rounding is relative to.
+    let mut compare = |name: &str, a: f64, b: f64, estimate: f64, scale: f64| {
         let change = (b - a).abs();
-        let slack = 64.0 * f64::EPSILON * a.abs().max(b.abs());
+        let slack = 64.0 * f64::EPSILON * a.abs().max(b.abs()).max(scale);
         // A change that is not a number (the probe's Newton step had no
         // finite slope or residual: seen at 1 − c ≈ 2e-12 on the Hertz
-        // problem) is no evidence either way; the outputs, compared at the
-        // same scalar, still are.
+        // problem) is no evidence either way; the integrals, compared at
+        // the same scalar, still are.
         let over = change > share * estimate + slack;
         if over {
             exceeded = true;
@@ -206,19 +228,57 @@ pub(super) fn check(
     // Held fixed, the scalars have nothing to compare.
     for (i, name) in scalar_names.iter().enumerate().filter(|_| !fixed) {
         let h = history(climbed, this, &|l| &l.scalars, i);
-        compare(name, this.scalars[i], scalars[i], level_estimate(&h) + rt);
+        compare(
+            name,
+            this.scalars[i],
+            scalars[i],
+            level_estimate(&h) + rt,
+            0.0,
+        );
     }
-    for (i, name) in output_names.iter().enumerate() {
-        let h = history(climbed, this, &|l| &l.outputs, i);
-        compare(name, this.outputs[i], outputs[i], level_estimate(&h));
+    // The unknowns are solved together, so each one's values carry the
+    // rounding of the whole solution: an integral's slack is relative to
+    // the largest one, not to its own size. The Hertz problem at μ = 1e-9
+    // and c = 1e-10: `∫q ≈ 1e-9` moved by 1.9e-16 (rounding, ε·|∫p|)
+    // against its level estimate 1.2e-16 and 64 ulps of itself (1e-23),
+    // which graded the end 0 for nothing.
+    let solution_scale = this
+        .integrals
+        .iter()
+        .chain(&integrals)
+        .fold(0.0f64, |m, v| m.max(v.abs()));
+    for (i, name) in integral_names.iter().enumerate() {
+        let h = history(climbed, this, &|l| &l.integrals, i);
+        compare(
+            name,
+            this.integrals[i],
+            integrals[i],
+            level_estimate(&h),
+            solution_scale,
+        );
     }
-    let worst = changes.iter().fold(0.0f64, |m, c| m.max(c.change));
+    let output_changes: Vec<EndChange> = problem
+        .sys
+        .outputs
+        .iter()
+        .enumerate()
+        .map(|(i, o)| EndChange {
+            name: o.name.clone(),
+            change: (outputs[i] - this.outputs[i]).abs(),
+            estimate: level_estimate(&history(climbed, this, &|l| &l.outputs, i)),
+        })
+        .collect();
+    let worst = changes
+        .iter()
+        .chain(&output_changes)
+        .fold(0.0f64, |m, c| m.max(c.change));
     problem.set_end_check(EndCheck {
         ends: ends.clone(),
         level: k,
         graded: exceeded,
         share,
         changes,
+        outputs: output_changes,
     });
     if !exceeded {
         return Ok(Verdict::Accept);
@@ -249,6 +309,7 @@ pub(super) fn check(
             slope: this.slope,
             outputs: this.outputs.clone(),
             coefficients: this.coefficients.clone(),
+            integrals: this.integrals.clone(),
             cond: this.cond,
             unknowns: Vec::new(),
             sizes: Vec::new(),
@@ -262,6 +323,7 @@ pub(super) fn check(
         slope,
         outputs: outputs_of(problem, &d)?,
         coefficients: coefficients_of(problem, &d),
+        integrals: integrals_of(problem, &d)?,
         cond: d.cond,
         unknowns: Vec::new(),
         sizes: Vec::new(),
@@ -283,26 +345,31 @@ pub(super) fn check(
 /// keep the probe cheap on the highest levels.
 const PROBE_LAYERS: usize = 10;
 
-/// The probed problem's scalars and outputs on level `lvl`: the outputs
-/// at the scalars of `this`, and the scalar moved by a Newton step on the
-/// level's slope of the condition (the root of the probed condition,
-/// to first order). Outputs are compared at the same scalar, so that
-/// only the discretisations differ.
+/// What [`probe`] measures: scalars, outputs, unknowns' moments.
+type Probed = (Vec<f64>, Vec<f64>, Vec<f64>);
+
+/// The probed problem's scalars, outputs and unknowns' integrals on
+/// level `lvl`: the outputs and integrals at the scalars of `this`, and
+/// the scalar moved by a Newton step on the level's slope of the
+/// condition (the root of the probed condition, to first order). Outputs
+/// and integrals are compared at the same scalar, so that only the
+/// discretisations differ.
 fn probe(
     problem: &SplitProblem,
     lvl: &SplitLevel,
     this: &Level,
     tol: f64,
-) -> Result<(Vec<f64>, Vec<f64>), PlanError> {
+) -> Result<Probed, PlanError> {
     let d = problem.discretise(&this.scalars, lvl)?;
     let outputs = outputs_of(problem, &d)?;
+    let integrals = integrals_of(problem, &d)?;
     // Several scalars: their joint root on the probed level.
     if this.scalars.len() > 1 {
         let (x, _) = find_scalars(problem, lvl, Some(&this.scalars), tol)?;
-        return Ok((x, outputs));
+        return Ok((x, outputs, integrals));
     }
     let Some(&x0) = this.scalars.first() else {
-        return Ok((Vec::new(), outputs));
+        return Ok((Vec::new(), outputs, integrals));
     };
     let (lo, hi) = problem.contact.scalars[0].range;
     let map = ScalarMap { lo, hi };
@@ -312,7 +379,7 @@ fn probe(
     } else {
         f64::NAN
     };
-    Ok((vec![x1], outputs))
+    Ok((vec![x1], outputs, integrals))
 }
 
 /// Whether the values of one quantity over the levels (`h`, oldest
@@ -362,6 +429,39 @@ fn outputs_of(problem: &SplitProblem, d: &Discrete) -> Result<Vec<f64>, PlanErro
     (0..problem.sys.outputs.len())
         .map(|o| problem.output(d, o))
         .collect()
+}
+
+/// Moments per unknown the end check compares ([`integrals_of`]).
+const MOMENTS: usize = 3;
+
+/// Per unknown of `problem`, its moments `∫ tᵏ u(x) dx` over the unknowns'
+/// interval `[a, b]`, `t = (x − a)/(b − a)`, `k < MOMENTS`, in the
+/// discrete solution `d` (every part of `u`: free basis, related pieces,
+/// exact singular terms): the quantities the end check compares. An
+/// undeclared end behaviour left on an ungraded panel moves them as it
+/// moves any integral output (the full-slip Hertz problem's `P` is
+/// `π/2·∫x p`). One moment is not enough: an Abel operator
+/// `∫_x^1 t p(t)/√(t² − x²) dt = f` pins `∫p = f(0)` whatever the
+/// discretisation does at 1 (`examples/contact/cattaneo_mindlin_shift.lmx`:
+/// `∫p` converged cleanly while `P = 2π∫x p`, whose end at 1 is `√(1 − x)`,
+/// moved by 6e-8 on level 9 and never reached 1e-10 ungraded).
+pub(super) fn integrals_of(problem: &SplitProblem, d: &Discrete) -> Result<Vec<f64>, PlanError> {
+    let (a, b) = problem.domain;
+    let mut out = Vec::new();
+    for u in 0..problem.sys.unknowns.len() {
+        for k in 0..MOMENTS {
+            let term = OutputTerm::Integral {
+                coeff: 1.0,
+                lower: a,
+                upper: b,
+                weight: std::sync::Arc::new(move |x| ((x - a) / (b - a)).powi(k as i32)),
+                unknown: u,
+            };
+            let (row, constant) = d.layout().functional(std::slice::from_ref(&term))?;
+            out.push(constant + row.dot(&d.solution));
+        }
+    }
+    Ok(out)
 }
 
 fn coefficients_of(problem: &SplitProblem, d: &Discrete) -> Vec<f64> {

@@ -54,10 +54,13 @@ pub struct SplitOptions {
     /// output grid).
     pub tol: f64,
     /// Whether the unknowns' pointwise estimates enter convergence
-    /// (`estimate`). Off by default: on, the flat punch's and the sphere
-    /// indentation's pressure at the ungraded end `x = 0` keep them from
-    /// `1e-10` within the level cap, and `32·ε·κ` every field of the
-    /// contact gallery once `κ > 1.4e4` (issue 25's notes).
+    /// (`estimate`). Off by default: on, the sphere indentation's pressure
+    /// at `x = 0` keeps it from `1e-10` within the level cap (estimate
+    /// 1.2e-10 on level 8, true error 3e-11), and `32·ε·κ` every field of
+    /// the contact gallery once `κ > 1.4e4` (issue 25's notes). The flat
+    /// punch converges with it after six levels (`p` within 3.3e-11,
+    /// estimate 6.8e-11) since its plain end is graded with few layers
+    /// ([`super::split::PLAIN_END_LAYERS`]).
     pub fields_converge: bool,
     /// Highest level tried.
     pub max_level: usize,
@@ -170,6 +173,10 @@ pub(super) struct Level {
     pub(super) slope: f64,
     pub(super) outputs: Vec<f64>,
     pub(super) coefficients: Vec<f64>,
+    /// Per unknown, its moments over the unknowns' interval: what the end
+    /// check compares (`split_ends::integrals_of`), functionals of the
+    /// solution the equations define whatever outputs are requested.
+    pub(super) integrals: Vec<f64>,
     /// The condition estimate of the level's system.
     pub(super) cond: f64,
     /// Per unknown, the largest level difference to the level before on
@@ -342,6 +349,7 @@ fn solve_split_ladder(
             slope,
             outputs,
             coefficients,
+            integrals: super::split_ends::integrals_of(&problem, &d)?,
             cond: d.cond,
             unknowns: Vec::new(),
             sizes: Vec::new(),
@@ -519,7 +527,8 @@ pub(super) fn estimate_of(
     i: usize,
 ) -> f64 {
     if refines(levels, this) {
-        // Not floored at `32·ε·κ` ([`rounding_floor`](crate::numeric::solve::rounding_floor)): κ reaches 1.4e4
+        // Not floored at `32·ε·κ` ([`rounding_floor`](crate::numeric::solve::rounding_floor);
+        // point outputs are, [`point_rounding`]): κ reaches 1.4e4
         // by level 7 on the contact gallery (floor 1.0e-10), where the
         // radii are right to 1e-13 (the cone's `a`), so no example would
         // reach the default tolerance.
@@ -527,6 +536,56 @@ pub(super) fn estimate_of(
     } else {
         f64::INFINITY
     }
+}
+
+/// The rounding term of output `o` on `this` level: for an output that
+/// reads point values `Σ cᵢ·u(xᵢ)`, [`rounding_floor`]`(κ)` (`32·ε·κ`)
+/// times `max(Σ|cᵢ|, |value|)`; 0 for an output of integrals and
+/// constants only. Its estimate is at least this.
+///
+/// **Why point values.** The coefficients of a solve with condition `κ`
+/// carry relative errors up to about `ε·κ` (the rounding of the
+/// right-hand side and of the factorisation, amplified), the same bound
+/// the fields' estimates are floored at ([`UnknownEstimate::floor`]). A
+/// point value reads the few coefficients of one panel, so it carries that
+/// error in full, and the level differences need not show it: the noise
+/// of successive levels is not a geometric sequence. Measured on
+/// `examples/hertz_split_mms.lmx` with point outputs appended
+/// (`tests/off_grid_points.rs`): `p(0.2503…)` off by 8.3e-14 against a
+/// level estimate of 1.1e-14 at `κ = 3.7e3` (`ε·κ = 8.2e-13`), and
+/// `p(c − 1e-9)`, on the innermost panel graded toward the free boundary
+/// `c = 1/2`, off by 4.2e-11 against a level estimate of 2.3e-11 at
+/// `κ = 1.4e4` (`ε·κ = 3.1e-12`; its error grew from 7.5e-12 to 4.2e-11
+/// over levels 2 to 5, the noise of panels of `1e-12` beside `c`): 13.5
+/// times `ε·κ`, within the factor 32. An integral sums the coefficients of
+/// hundreds of panels, whose rounding errors largely cancel: the contact
+/// gallery's loads are right to 1e-13 at `κ = 1.4e4` (`32·ε·κ = 1e-10`,
+/// see [`estimate_of`]), so integral outputs, scalars and coefficients get
+/// no such term (only the 32 ulps of [`level_estimate`]), and the
+/// gallery's estimates (all integrals) are unchanged.
+pub(super) fn point_rounding(problem: &SplitProblem, this: &Level, o: usize) -> f64 {
+    let weight: f64 = problem.sys.outputs[o]
+        .terms
+        .iter()
+        .map(|t| match t {
+            super::compiled::OutputTerm::Point { coeff, .. } => coeff.abs(),
+            _ => 0.0,
+        })
+        .sum();
+    if weight == 0.0 {
+        return 0.0;
+    }
+    rounding_floor(this.cond) * weight.max(this.outputs[o].abs())
+}
+
+/// [`estimate_of`] of output `o`, at least its [`point_rounding`].
+pub(super) fn output_estimate(
+    problem: &SplitProblem,
+    levels: &[Level],
+    this: &Level,
+    o: usize,
+) -> f64 {
+    estimate_of(levels, this, &|l| &l.outputs, o).max(point_rounding(problem, this, o))
 }
 
 /// One quantity's values on every level climbed, then on `this`.
@@ -602,6 +661,14 @@ fn shifted_level(
 /// contracts faster than the slowest point (measured: the flat punch's
 /// and `examples/mms.lmx`'s `p(0)` were off by 1.007 and 1.012 times
 /// their level difference on the third level, their grids' ratios small).
+/// When the differences do not shrink (`ρ ≥ 1`) there is no geometric
+/// tail; the factor is then `1 + dₙ₋₁/dₙ`, at least
+/// [`UNCONFIRMED_FACTOR`]: this level's error is at most its difference
+/// plus the last level's error, and that is taken as the last level's own
+/// difference. (It was 1, the bare last difference: measured on the flat
+/// punch at level cap 4 with [`SplitOptions::fields_converge`], when its
+/// plain end was graded like a singular point, `p(0)` was off by 2.08e-5
+/// against the estimate 2.05e-5 while the differences grew.)
 /// Infinite without two finite differences (one difference cannot tell a
 /// converged field from a stalled one).
 fn safety_factor(h: &[f64]) -> f64 {
@@ -625,8 +692,10 @@ fn safety_factor(h: &[f64]) -> f64 {
     let tail = if r < 1.0 {
         (r / (1.0 - r)).max(1.0)
     } else {
-        // Not shrinking: the last difference is all there is.
-        1.0
+        // Not shrinking: no tail to sum, so the error of this level is
+        // bounded by its difference plus the last level's error, taken as
+        // that level's own difference.
+        (1.0 + h[n - 2] / h[n - 1]).max(UNCONFIRMED_FACTOR)
     };
     if n <= UNCONFIRMED_DIFFERENCES {
         tail.max(UNCONFIRMED_FACTOR)
@@ -684,10 +753,12 @@ fn unknown_estimates(levels: &[Level], this: &Level) -> Vec<(f64, f64, f64)> {
 /// singular term's own point and points within the scalars' estimate of
 /// an end that moves with them). Measured with the unknowns in
 /// (`probes/unknowns_ladder.rs`): the flat punch's `p(0)`
-/// (`examples/contact/flat_punch.lmx`, the ungraded end) is off by
-/// 2.1e-5, 4.2e-4 and 1.7e-3 on levels 5, 7 and 9 while every other grid
-/// point is within 1e-12, so that file cannot converge; nor can a field
-/// at `κ > 1.4e4`, where `32·ε·κ` exceeds `1e-10`.
+/// (`examples/contact/flat_punch.lmx`, an end where the operator weighs
+/// `p` by `t`) was off by 2.1e-5, 4.2e-4 and 1.7e-3 on levels 5, 7 and 9
+/// while that end was graded like a singular point; graded with few
+/// layers ([`super::split::PLAIN_END_LAYERS`]) it converges after six
+/// levels.
+/// No field converges at `κ > 1.4e4`, where `32·ε·κ` exceeds `1e-10`.
 fn estimate(problem: &SplitProblem, levels: &[Level], this: &Level, fields: bool) -> f64 {
     let rel = |e: f64, v: f64| e / v.abs().max(1.0);
     let scalars = (0..this.scalars.len()).map(|i| {
@@ -696,12 +767,8 @@ fn estimate(problem: &SplitProblem, levels: &[Level], this: &Level, fields: bool
             this.scalars[i],
         )
     });
-    let outputs = (0..this.outputs.len()).map(|i| {
-        rel(
-            estimate_of(levels, this, &|l| &l.outputs, i),
-            this.outputs[i],
-        )
-    });
+    let outputs = (0..this.outputs.len())
+        .map(|i| rel(output_estimate(problem, levels, this, i), this.outputs[i]));
     // A coefficient a condition fixes (`condition B = 0`) is that value at
     // the root by definition; its computed value differs from it by the
     // root solve's residual, which the scalars' estimates already carry.
@@ -772,7 +839,7 @@ pub(super) fn report(
             .map(|(i, o)| Estimate {
                 name: o.name.clone(),
                 value: this.outputs[i],
-                error: err(&|l| &l.outputs, i, 0.0),
+                error: output_estimate(problem, climbed, this, i),
             })
             .collect(),
         coefficients: c
@@ -838,7 +905,12 @@ pub(super) fn report(
         .filter(|c| c.graded && c.level + 1 == levels)
     {
         for e in rep.scalars.iter_mut().chain(rep.outputs.iter_mut()) {
-            if let Some(ch) = c.changes.iter().find(|ch| ch.name == e.name) {
+            if let Some(ch) = c
+                .changes
+                .iter()
+                .chain(&c.outputs)
+                .find(|ch| ch.name == e.name)
+            {
                 e.error = e.error.max(ch.change);
             }
         }

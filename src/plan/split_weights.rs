@@ -15,7 +15,9 @@
 //! is installed as the declaration `singular u at end ~ |x - end|^e`
 //! would be, the plain one (`e = 0`) included: the mesh is graded toward
 //! every end so chosen, as the one-interval ladder grades toward both
-//! ends, and the report names the weight. Problems with unknown scalars or relations are left as
+//! ends (toward a plain one with few layers, which the end check may
+//! deepen: `split.rs`'s `PLAIN_END_LAYERS`), and the report names the
+//! weight. Problems with unknown scalars or relations are left as
 //! declared (their ends are the end check's, `split_ends.rs`). Owns this
 //! choice; the discretisation is `split.rs`'s, the ladder
 //! `split_solve.rs`'s.
@@ -128,7 +130,23 @@ pub(super) fn choose(problem: &mut SplitProblem) -> Result<(), PlanError> {
     {
         best = (score, combo);
     }
+    let base = problem.contact.singulars.len();
     install(problem, &best.1, &open);
+    // The plain weights installed (in `install`'s order) are graded only
+    // a little (`PLAIN_END_LAYERS`) and left to the end check.
+    let mut plain = Vec::new();
+    let mut i = base;
+    for (&(l, h), &(ol, oh)) in best.1.iter().zip(&open) {
+        for (e, o) in [(l, ol), (h, oh)] {
+            if o {
+                if e == 0.0 {
+                    plain.push(i);
+                }
+                i += 1;
+            }
+        }
+    }
+    problem.set_plain_ends(plain);
     Ok(())
 }
 
@@ -137,7 +155,9 @@ pub(super) fn choose(problem: &mut SplitProblem) -> Result<(), PlanError> {
 /// graded toward, so that each level refines the one before there
 /// whatever the weight (an ungraded end keeps one panel of a few nodes on
 /// the first levels of [`SplitLevel::level`], which would agree however
-/// wrong they are).
+/// wrong they are); a plain weight then with at most
+/// [`PLAIN_END_LAYERS`](super::split::PLAIN_END_LAYERS) layers (`choose`
+/// marks it).
 fn install(problem: &mut SplitProblem, w: &[Ends], open: &[(bool, bool)]) {
     let (a, b) = problem.domain;
     for (u, (&(l, h), &(ol, oh))) in w.iter().zip(open).enumerate() {
