@@ -227,21 +227,16 @@ pub fn local_hermite(a: &Matrix<QxRing>, c_loc: &QPoly) -> Option<(Vec<Vec<QPoly
 
 /// The decomposition described in the module documentation, or `None`.
 /// `c = det Ã` and `B = adj(Ã)·Δ` with `A·B = c·I`.
+///
+/// When the local basis has a non-unit pivot before unit ones (sparse
+/// inputs, whose column order puts a repeated root early), the route
+/// works on `A·P` with the unit-pivot columns first (`P` a permutation;
+/// `A·P·P⁻¹·B = c·I`), so the trailing block holds only the non-unit
+/// pivots, and returns `V = P·V′` for A itself.
 pub fn trailing_hermite(
     a: &Matrix<QxRing>,
     c: &QPoly,
     b: &Matrix<QxRing>,
-) -> Option<SmallDecomposition> {
-    trailing_with(a, c, b, true).or_else(|| trailing_with(a, c, b, false))
-}
-
-/// [`trailing_hermite`] with the local Hermite basis from modular images
-/// ([`super::trailing_mod`]) or by elimination over Q.
-fn trailing_with(
-    a: &Matrix<QxRing>,
-    c: &QPoly,
-    b: &Matrix<QxRing>,
-    modular: bool,
 ) -> Option<SmallDecomposition> {
     let r = a.ring.clone();
     let n = a.rows();
@@ -249,7 +244,11 @@ fn trailing_with(
         return None;
     }
     let f = r.normalize(c);
-    // A multiple of gcd(B's entries): the last row and the first column.
+    // gcd(B's entries), the last row and the first column first (they
+    // usually settle it); its roots are those of f_1 ⋯ f_(n−1), so c_loc
+    // carries no root of f_n alone (for a sparse A the gcd of one row and
+    // column of B has many more roots, each a non-unit pivot of the local
+    // basis in a column of its own).
     let mut g = r.zero();
     for e in b.row(n - 1).iter().chain((0..n).map(|i| b.get(i, 0))) {
         g = gcd_q(&r, &g, e);
@@ -257,15 +256,96 @@ fn trailing_with(
             return None;
         }
     }
+    let mut g_int = crate::algebra::modgcd::qx_gcd(g.num(), g.num())?;
+    for e in b.entries().iter().filter(|e| !e.is_zero()) {
+        if crate::algebra::modgcd::int_div_exact(e.num(), &g_int).is_none() {
+            g_int = crate::algebra::modgcd::qx_gcd(&g_int, e.num())?;
+            if g_int.len() <= 1 {
+                return None;
+            }
+        }
+    }
+    let g = QPoly::from_ints(g_int);
     let (c_loc, c_gen) = repeated_part(&r, &f, &g)?;
     if c_loc.degree()? > MAX_LOCAL_DEGREE {
         return None;
     }
-    let (h_loc, first) = if modular {
-        let rows: Vec<Vec<QPoly>> = (0..n).map(|i| a.row(i).to_vec()).collect();
-        super::trailing_mod::local_hermite_modular(&rows, &c_loc)?
-    } else {
-        local_hermite(a, &c_loc)?
+    let rows: Vec<Vec<QPoly>> = (0..n).map(|i| a.row(i).to_vec()).collect();
+    let modular = super::trailing_mod::local_hermite_modular(&rows, &c_loc);
+    // The pivot pattern (unique: the diagonal of a Hermite basis) decides
+    // the column order; without a modular basis, the elimination over Q.
+    let (h0, first0) = match modular {
+        Some(x) => x,
+        None => local_hermite(a, &c_loc)?,
+    };
+    let unit = |i: usize| h0[i][i].degree() == Some(0);
+    if !(first0..n).any(unit) {
+        let k = n - first0;
+        if !(2..=MAX_TRAILING).contains(&k) {
+            return None;
+        }
+        return trailing_with(a, c, (&c_loc, &c_gen), b, Some((h0, first0)));
+    }
+    let perm: Vec<usize> = (0..n)
+        .filter(|&i| unit(i))
+        .chain((0..n).filter(|&i| !unit(i)))
+        .collect();
+    if n - perm.iter().filter(|&&i| unit(i)).count() > MAX_TRAILING {
+        return None;
+    }
+    let ap = Matrix::new(
+        r.clone(),
+        n,
+        n,
+        (0..n)
+            .flat_map(|i| perm.iter().map(move |&j| a.get(i, j).clone()))
+            .collect(),
+    );
+    let bp = Matrix::new(
+        r.clone(),
+        n,
+        n,
+        perm.iter()
+            .flat_map(|&s| b.row(s).iter().cloned())
+            .collect(),
+    );
+    let prows: Vec<Vec<QPoly>> = (0..n).map(|i| ap.row(i).to_vec()).collect();
+    let pm = super::trailing_mod::local_hermite_modular(&prows, &c_loc);
+    let dec = trailing_with(&ap, c, (&c_loc, &c_gen), &bp, pm)?;
+    // U·(A·P)·V′ = D, so U·A·(P·V′) = D and (P·V′)⁻¹ = V′⁻¹·P⁻¹.
+    let mut v = Matrix::zeros(r.clone(), n, n);
+    let mut v_inv = Matrix::zeros(r.clone(), n, n);
+    for (s, &j) in perm.iter().enumerate() {
+        for t in 0..n {
+            v.set(j, t, dec.v.get(s, t).clone());
+            v_inv.set(t, j, dec.v_inv.get(t, s).clone());
+        }
+    }
+    Some(SmallDecomposition {
+        d: dec.d,
+        u: dec.u,
+        v,
+        v_inv,
+    })
+}
+
+/// [`trailing_hermite`] for a given column order, with the local Hermite
+/// basis from modular images ([`super::trailing_mod`]) when given, or by
+/// elimination over Q.
+fn trailing_with(
+    a: &Matrix<QxRing>,
+    c: &QPoly,
+    (c_loc, c_gen): (&QPoly, &QPoly),
+    b: &Matrix<QxRing>,
+    modular: Option<(Vec<Vec<QPoly>>, usize)>,
+) -> Option<SmallDecomposition> {
+    let r = a.ring.clone();
+    let n = a.rows();
+    let c_loc = c_loc.clone();
+    let c_gen = c_gen.clone();
+    let (h_loc, first) = match modular {
+        Some(x) => x,
+        None => local_hermite(a, &c_loc)?,
     };
     let k = n - first;
     if !(2..=MAX_TRAILING).contains(&k) {
