@@ -86,6 +86,19 @@ pub struct Hertz {
     given: Given,
 }
 
+impl std::fmt::Debug for Hertz {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Hertz")
+            .field("given", &self.given)
+            .field("nu", &self.nu())
+            .field("c", &self.c())
+            .field("mu", &self.mu())
+            .field("error_estimate", &self.error_estimate())
+            .field("converged", &self.converged())
+            .finish_non_exhaustive()
+    }
+}
+
 /// Why [`hertz_report`] gave no result: its [`Error`] and, for a refusal at
 /// one of the physical limits the solver does not resolve, the JSON
 /// `lambdamat hertz --json` prints for it (the error and the limit's
@@ -502,6 +515,7 @@ fn seed_cell(nu: f64, mu: f64, c: f64, tol: f64) -> String {
 /// The seed paper's Tables 1 and 2 beside lambdamat's values: what
 /// `lambdamat hertz table` prints ([`HertzTable::markdown`],
 /// [`HertzTable::csv`]). A failed solve is a cell with its error.
+#[derive(Debug)]
 pub struct HertzTable {
     which: Option<u8>,
     rows1: Vec<Vec<String>>,
@@ -707,7 +721,7 @@ fn csv_rows(head: &[&str], rows: &[Vec<String>]) -> String {
 /// The most points a sweep solves (ν count × μ count).
 pub const MAX_SWEEP_POINTS: usize = 100_000;
 
-#[derive(serde::Serialize)]
+#[derive(Debug, serde::Serialize)]
 struct SweepRow {
     nu: f64,
     mu: f64,
@@ -754,6 +768,7 @@ fn bounded(s: &HertzResult) -> Option<String> {
 /// a failed point being a row with its error; what `lambdamat hertz
 /// sweep` prints ([`HertzSweep::csv`], [`HertzSweep::jsonl`],
 /// [`HertzSweep::summary`]).
+#[derive(Debug)]
 pub struct HertzSweep {
     rows: Vec<SweepRow>,
     tally: Tally,
