@@ -36,6 +36,13 @@ pub use crate::plan::Method;
 use crate::plan::{CompiledSystem, PlanError, SplitInput};
 use crate::system::Program;
 
+mod hertz;
+pub(crate) use self::hertz::check_tol;
+pub use self::hertz::{
+    Hertz, HertzOptions, HertzRefusal, HertzSweep, HertzTable, MAX_SWEEP_POINTS, Tally, hertz,
+    hertz_report, hertz_sweep, hertz_table,
+};
+
 /// What kind of failure an [`Error`] is; each kind is one of the command
 /// line's exit codes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -496,34 +503,6 @@ impl Problem {
         };
         Error(crate::cli::solve::located(e, &src))
     }
-}
-
-/// The Hertz contact problem for Poisson's ratio `nu` and the given
-/// friction coefficient μ or stick radius c: the file `lambdamat hertz`
-/// runs (`examples/hertz.lmx`, `hertz_given_c.lmx`, or
-/// `hertz_frictionless.lmx` without shear), solved with the parameters set
-/// as `--set` sets them. A parameter outside its physical range is invalid
-/// input. Unlike `lambdamat hertz`, a refusal at a physical limit is the
-/// solver's error, without the limit's asymptotic values.
-///
-/// ```
-/// use lambdamat::api::{hertz, Given};
-/// let s = hertz(0.25, Given::Mu(0.1801), 1e-8)?;
-/// assert!(s.converged);
-/// assert!((s.scalars["c"] - 0.4956467).abs() < 1e-6);
-/// # Ok::<(), lambdamat::Error>(())
-/// ```
-pub fn hertz(nu: f64, given: Given, tol: f64) -> Result<Solution, Error> {
-    let ((file, text), sets) = crate::hertz::front::plan(nu, given)?;
-    let problem = Problem::from_source(text, file)?;
-    problem.solve(&SolveOptions {
-        set: sets
-            .iter()
-            .map(|(n, v)| (n.to_string(), float_text(*v)))
-            .collect(),
-        tol,
-        ..SolveOptions::default()
-    })
 }
 
 /// A float as `--set` reads it: its shortest decimal (`0.1801`, not the

@@ -268,3 +268,40 @@ fn reduce_and_codegen_print_what_the_cli_prints() {
     assert_eq!(code, 0);
     assert_eq!(out, m.codegen(None).expect("code"));
 }
+
+#[test]
+fn the_hertz_entry_prints_what_lambdamat_hertz_prints_and_its_solution_is_the_files() {
+    use lambdamat::api::{Given, HertzOptions, hertz, hertz_report};
+    let opts = HertzOptions {
+        tol: 1e-8,
+        grid: 2,
+        ..HertzOptions::default()
+    };
+    let h = hertz_report(0.25, Given::Mu(0.1801), &opts).expect("solves");
+    let args = ["hertz", "--nu", "0.25", "--mu", "0.1801", "--tol", "1e-8"];
+    let (code, out, _) = lambdamat(&args);
+    assert_eq!((code, out), (0, h.text()));
+    let (code, out, _) = lambdamat(&[&args[..], &["--json"]].concat());
+    assert_eq!((code, json(&out)), (0, json(&h.to_json())));
+    // `api::hertz` (Python's `lambdamat.hertz`) is the same solve, and its
+    // solution is the file's as `lambdamat solve` gives it.
+    let s = hertz(0.25, Given::Mu(0.1801), 1e-8).expect("solves");
+    assert_eq!(s.scalars["c"], h.c());
+    let f = Problem::from_file("examples/hertz.lmx")
+        .expect("valid")
+        .solve(&SolveOptions {
+            set: vec![("nu".into(), "0.25".into()), ("mu".into(), "0.1801".into())],
+            tol: 1e-8,
+            ..SolveOptions::default()
+        })
+        .expect("solves");
+    assert_eq!(s.to_json(), f.to_json());
+    // A given c below the smallest the front resolves is its refusal, with the CLI's
+    // message and exit code, through both entries.
+    let (code, _, err) = lambdamat(&["hertz", "--nu", "0.25", "--c", "1e-7"]);
+    let refused = hertz_report(0.25, Given::C(1e-7), &HertzOptions::default()).unwrap_err();
+    assert_eq!(code, refused.error().exit_code());
+    assert_eq!(err.trim_end(), refused.error().to_string());
+    let e = hertz(0.25, Given::C(1e-7), 1e-10).unwrap_err();
+    assert_eq!(e.kind(), ErrorKind::ComputationFailed);
+}

@@ -170,3 +170,9 @@ fn summary(n: usize) -> String {
         format!("{n} errors: nothing was computed")
     }
 }
+
+impl From<crate::api::Error> for CliError {
+    fn from(e: crate::api::Error) -> CliError {
+        e.into_cli()
+    }
+}

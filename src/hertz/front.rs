@@ -157,6 +157,10 @@ pub struct HertzResult {
     /// estimates are infinite and the shear-jump check is not made
     /// ([`UnrefinedAtC`]).
     pub unrefined_at_c: Option<UnrefinedAtC>,
+    /// The report of the language file's solve: what `lambdamat solve`
+    /// prints for the file and the parameters of [`HertzResult::command`].
+    #[serde(skip)]
+    file_report: crate::report::Report,
     #[serde(skip)]
     solution: SplitSolution,
     /// The stick radius of the discretisation the fields are read from
@@ -833,10 +837,26 @@ pub fn solve_within(
     opts: &SplitOptions,
     max_memory: Option<u64>,
 ) -> Result<HertzResult, Refusal> {
+    solve_sampled(nu, given, opts, max_memory, 2)
+}
+
+/// [`solve_within`] with the report's unknowns sampled on `grid` points
+/// (see [`HertzResult::solution`]). The front samples the fields at its
+/// own points, so the command line asks for 2 (the ends only: sampling
+/// 101 points per unknown made `lambdamat hertz` about 1.4 times
+/// slower); the library's `api::hertz` asks for the grid of
+/// `lambdamat solve`, whose report it returns.
+pub(crate) fn solve_sampled(
+    nu: f64,
+    given: Given,
+    opts: &SplitOptions,
+    max_memory: Option<u64>,
+    grid: usize,
+) -> Result<HertzResult, Refusal> {
     if let Some(refusal) = extreme_given_c(nu, given) {
         return Err(refusal);
     }
-    solve_inner(nu, given, opts, max_memory).map_err(|failure| {
+    solve_inner(nu, given, opts, max_memory, grid).map_err(|failure| {
         let limit = Limit::classify(nu, given, &failure);
         let error = match failure {
             Failure::Plan(e) | Failure::Spurious(e) | Failure::ThinSlip(e) => e,
@@ -923,6 +943,7 @@ fn solve_inner(
     given: Given,
     opts: &SplitOptions,
     budget: Option<u64>,
+    grid: usize,
 ) -> Result<HertzResult, Failure> {
     if !(opts.tol > 0.0 && opts.tol.is_finite()) {
         return Err(invalid(format!(
@@ -940,14 +961,12 @@ fn solve_inner(
     if opts.tol != 1e-10 {
         command.push_str(&format!(" --tol {:e}", opts.tol));
     }
-    // The one solve entry and its report (as `lambdamat solve` runs it).
-    // The front samples the fields at its own points (below), so the
-    // report's grid is its two ends only (sampling 101 points per unknown
-    // made `lambdamat hertz` about 1.4 times slower).
+    // The one solve entry and its report (as `lambdamat solve` runs it),
+    // its unknowns on `grid` points (see `solve_sampled`).
     let settings = SolveSettings {
         tol: opts.tol,
         max_level: opts.max_level,
-        grid: 2,
+        grid,
         max_memory: budget,
         ..SolveSettings::default()
     };
@@ -1113,6 +1132,7 @@ fn solve_inner(
         end_answer,
         limit,
         unrefined_at_c,
+        file_report: report,
         solution,
         c_fields: c,
         slip,
@@ -1148,6 +1168,13 @@ fn solve_inner(
 }
 
 impl HertzResult {
+    /// The report of the language file's solve (`lambdamat solve` on
+    /// [`HertzResult::command`]'s file and parameters), its unknowns on
+    /// the grid the solve was asked for.
+    pub(crate) fn into_file_report(self) -> crate::report::Report {
+        self.file_report
+    }
+
     /// The evaluator of the solution's fields.
     pub fn fields(&self) -> Result<Fields<'_>, PlanError> {
         Fields::new(&self.solution.problem, &self.solution.discrete)
