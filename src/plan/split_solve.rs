@@ -36,7 +36,7 @@ use serde::Serialize;
 use super::error::{EndReason, PlanError, RangeEnd, RootAtEnd};
 use super::methods::Method;
 use super::split::{Discrete, SplitLevel, SplitProblem};
-use super::split_fields::LevelFields;
+use super::split_fields::{LeftOut, LevelFields};
 use super::split_input::SplitInput;
 use crate::numeric::NumericError;
 use crate::numeric::roots::{brent, secant};
@@ -50,8 +50,8 @@ pub struct SplitOptions {
     /// Stop when every scalar's, output's and coefficient's estimate is
     /// within `tol·max(1, |value|)` (and, with
     /// [`SplitOptions::fields_converge`], every unknown's largest pointwise
-    /// estimate within `tol·max(1, size)`, its largest `|u/weight|` on the
-    /// output grid).
+    /// estimate within [`SplitOptions::field_tol`]`·max(1, size)`, its
+    /// size being its largest `|u/weight|` on the output grid).
     pub tol: f64,
     /// Whether the unknowns' pointwise estimates enter convergence
     /// (`estimate`). Off by default: on, the sphere indentation's pressure
@@ -62,6 +62,14 @@ pub struct SplitOptions {
     /// estimate 6.8e-11) since its plain end is graded with few layers
     /// ([`super::split::PLAIN_END_LAYERS`]).
     pub fields_converge: bool,
+    /// The unknowns' tolerance: with [`SplitOptions::fields_converge`],
+    /// every unknown's largest pointwise estimate on the output grid must
+    /// be within `field_tol·max(1, size)` (its size being its largest
+    /// `|u/weight|` there), while the scalars, outputs and coefficients
+    /// meet [`SplitOptions::tol`]. Apart from `tol` because a field
+    /// converges pointwise more slowly than the integrals that make the
+    /// outputs (see [`DEFAULT_FIELD_TOL`]).
+    pub field_tol: f64,
     /// Highest level tried.
     pub max_level: usize,
     /// Points of the output grid the unknowns are estimated on.
@@ -80,8 +88,20 @@ impl Default for SplitOptions {
             grid: 101,
             method: Method::Coupled,
             fields_converge: false,
+            field_tol: DEFAULT_FIELD_TOL,
         }
     }
+}
+
+/// The default of [`SplitOptions::field_tol`] (and of `--field-tol`).
+pub const DEFAULT_FIELD_TOL: f64 = 1e-6;
+
+/// What [`estimate`] multiplies each unknown's relative estimate by, so
+/// that the one estimate compared with `tol` compares every field's with
+/// `field_tol`: `tol/field_tol`; `None` when the fields do not enter
+/// convergence.
+fn field_scale(opts: &SplitOptions) -> Option<f64> {
+    opts.fields_converge.then(|| opts.tol / opts.field_tol)
 }
 
 /// A number with its error estimate.
@@ -115,6 +135,12 @@ pub struct UnknownEstimate {
     pub factor: f64,
     /// The rounding floor `32·ε·κ·max(1, size)` ([`rounding_floor`]).
     pub floor: f64,
+    /// The grid points left out of its values and estimates, each with
+    /// why ([`LevelFields::on_grid`]): a singular term's own point, an end
+    /// the end check graded (e.g. the cone's centre, where the pressure is
+    /// infinite), a point within the scalars' estimate of an end that
+    /// moves with them. The estimate holds on the points kept.
+    pub left_out: Vec<LeftOut>,
 }
 
 /// A solved split-domain problem.
@@ -137,6 +163,10 @@ pub struct SplitReport {
     pub error_estimate: f64,
     /// Whether it is within the tolerance.
     pub converged: bool,
+    /// The unknowns' tolerance ([`SplitOptions::field_tol`]) when their
+    /// pointwise estimates entered convergence
+    /// ([`SplitOptions::fields_converge`]); `None` when they did not.
+    pub field_tol: Option<f64>,
     /// The tolerance.
     pub tol: f64,
     /// Levels climbed.
@@ -185,6 +215,9 @@ pub(super) struct Level {
     /// Per unknown, its size ([`UnknownEstimate::size`]; empty when not
     /// measured).
     pub(super) sizes: Vec<f64>,
+    /// Per unknown, the grid points left out ([`UnknownEstimate::left_out`];
+    /// empty when not measured).
+    pub(super) left_out: Vec<Vec<LeftOut>>,
 }
 
 /// Tolerance of the root iterations: a twentieth of the requested
@@ -236,6 +269,12 @@ pub(super) fn check_tolerance(opts: &SplitOptions) -> Result<(), PlanError> {
         return Err(PlanError::Invalid(format!(
             "tolerance {} must be positive",
             opts.tol
+        )));
+    }
+    if !(opts.field_tol > 0.0 && opts.field_tol.is_finite()) {
+        return Err(PlanError::Invalid(format!(
+            "field tolerance {} must be positive",
+            opts.field_tol
         )));
     }
     Ok(())
@@ -320,10 +359,11 @@ fn solve_split_ladder(
                 let est = if levels.is_empty() {
                     f64::INFINITY
                 } else {
-                    (estimate(&problem, &levels, &this, opts.fields_converge) + rt)
+                    (estimate(&problem, &levels, &this, field_scale(opts)) + rt)
                         .max(d.consistency)
                 };
                 let mut report = report(&problem, &d, &levels, &this, est, false, opts.tol, k, rt);
+                report.field_tol = opts.fields_converge.then_some(opts.field_tol);
                 report.stopped = Some(format!(
                     "stopped after {k} levels, the last within the memory budget: {e}"
                 ));
@@ -353,6 +393,7 @@ fn solve_split_ladder(
             cond: d.cond,
             unknowns: Vec::new(),
             sizes: Vec::new(),
+            left_out: Vec::new(),
         };
         let rt = if ns > 0 {
             2.0 * root_tolerance(opts.tol)
@@ -365,11 +406,11 @@ fn solve_split_ladder(
                 .map(|i| estimate_of(&levels, &this, &|l| &l.scalars, i) + rt)
                 .fold(0.0, f64::max);
             shifted = shifted_level(&problem, &this.scalars, scalar_error, &lvl);
-            (this.unknowns, this.sizes) =
+            (this.unknowns, this.sizes, this.left_out) =
                 unknown_distances(&problem, &d, p, shifted.as_ref(), scalar_error, opts.grid)?;
         }
         let mut est = (!levels.is_empty()).then(|| {
-            (estimate(&problem, &levels, &this, opts.fields_converge) + rt).max(d.consistency)
+            (estimate(&problem, &levels, &this, field_scale(opts)) + rt).max(d.consistency)
         });
         let mut converged = est.is_some_and(|e| e <= opts.tol);
         // Would grading the undeclared ends move the answer?
@@ -412,7 +453,7 @@ fn solve_split_ladder(
                 )));
             }
             let est = est.unwrap_or(f64::INFINITY);
-            let report = report(
+            let mut report = report(
                 &problem,
                 &d,
                 &levels,
@@ -423,6 +464,7 @@ fn solve_split_ladder(
                 k + 1,
                 rt,
             );
+            report.field_tol = opts.fields_converge.then_some(opts.field_tol);
             return Ok(SplitSolution {
                 report,
                 problem,
@@ -613,17 +655,22 @@ fn unknown_distances(
     shifted: Option<&Discrete>,
     scalar_error: f64,
     grid: usize,
-) -> Result<(Vec<f64>, Vec<f64>), PlanError> {
+) -> Result<UnknownDistances, PlanError> {
     let lf = LevelFields::pair(problem, d, Some(previous), scalar_error)?
         .with_shifted(problem, shifted)?;
-    let (mut dist, mut sizes) = (Vec::new(), Vec::new());
+    let (mut dist, mut sizes, mut left_out) = (Vec::new(), Vec::new(), Vec::new());
     for u in 0..problem.sys.unknowns.len() {
         let g = lf.on_grid(u, grid, true)?;
         dist.push(g.errors.iter().fold(0.0, |m: f64, &e| m.max(e)));
         sizes.push(g.size);
+        left_out.push(g.left_out);
     }
-    Ok((dist, sizes))
+    Ok((dist, sizes, left_out))
 }
+
+/// Per unknown: its largest level difference on the grid, its size and
+/// the grid points left out ([`unknown_distances`]).
+type UnknownDistances = (Vec<f64>, Vec<f64>, Vec<Vec<LeftOut>>);
 
 /// Level `lvl` discretised at the one unknown scalar of `scalars` moved by
 /// its estimate `delta` toward the inside of its declared range (by
@@ -743,23 +790,31 @@ fn unknown_estimates(levels: &[Level], this: &Level) -> Vec<(f64, f64, f64)> {
 /// The estimate that decides convergence: the largest of every scalar's,
 /// output's and free coefficient's [`level_estimate`] (a coefficient a
 /// condition fixes is excluded), each divided by `max(1, |value|)`, and
-/// when `fields` ([`SplitOptions::fields_converge`]) of every unknown's
-/// largest pointwise estimate on the output grid ([`unknown_estimates`])
-/// divided by `max(1, size)`, its size being its largest `|u/weight|`
-/// there: converged means every scalar's, output's and coefficient's
-/// absolute estimate is within `tol·max(1, |value|)` (the rule of
-/// [`crate::report`]) and every unknown's within `tol·max(1, size)` at
-/// every point of the grid ([`LevelFields::on_grid`] leaves out a
-/// singular term's own point and points within the scalars' estimate of
+/// with `fields` (`Some(tol/field_tol)`, [`field_scale`]) of every
+/// unknown's largest pointwise estimate on the output grid
+/// ([`unknown_estimates`]) divided by `max(1, size)` (its size being its
+/// largest `|u/weight|` there) and multiplied by `tol/field_tol`:
+/// converged (this at most `tol`) means every scalar's, output's and
+/// coefficient's absolute estimate is within `tol·max(1, |value|)` (the
+/// rule of [`crate::report`]) and every unknown's within
+/// `field_tol·max(1, size)` at every point of the grid kept
+/// ([`LevelFields::on_grid`] leaves out a singular term's own point, the
+/// ends the end check graded and points within the scalars' estimate of
 /// an end that moves with them). Measured with the unknowns in
 /// (`probes/unknowns_ladder.rs`): the flat punch's `p(0)`
 /// (`examples/contact/flat_punch.lmx`, an end where the operator weighs
 /// `p` by `t`) was off by 2.1e-5, 4.2e-4 and 1.7e-3 on levels 5, 7 and 9
 /// while that end was graded like a singular point; graded with few
 /// layers ([`super::split::PLAIN_END_LAYERS`]) it converges after six
-/// levels.
-/// No field converges at `κ > 1.4e4`, where `32·ε·κ` exceeds `1e-10`.
-fn estimate(problem: &SplitProblem, levels: &[Level], this: &Level, fields: bool) -> f64 {
+/// levels. A field tolerance below `32·ε·κ` (1e-10 at `κ = 1.4e4`, the
+/// contact gallery's last levels) is not reached: the fields' estimates
+/// are floored there ([`unknown_estimates`]).
+fn estimate(
+    problem: &SplitProblem,
+    levels: &[Level],
+    this: &Level,
+    fields: Option<f64>,
+) -> f64 {
     let rel = |e: f64, v: f64| e / v.abs().max(1.0);
     let scalars = (0..this.scalars.len()).map(|i| {
         rel(
@@ -795,8 +850,7 @@ fn estimate(problem: &SplitProblem, levels: &[Level], this: &Level, fields: bool
     let unknowns = unknown_estimates(levels, this)
         .into_iter()
         .zip(&this.sizes)
-        .filter(|_| fields)
-        .map(|((e, _, _), &size)| rel(e, size));
+        .filter_map(|((e, _, _), &size)| fields.map(|scale| scale * rel(e, size)));
     scalars
         .chain(outputs)
         .chain(coefficients)
@@ -864,6 +918,7 @@ pub(super) fn report(
                     error,
                     factor,
                     floor,
+                    left_out: this.left_out.get(u).cloned().unwrap_or_default(),
                 })
                 .collect()
         },
@@ -871,6 +926,7 @@ pub(super) fn report(
         error_estimate: est,
         converged,
         tol,
+        field_tol: None,
         levels,
         dim: SplitProblem::size(d),
         cond: d.cond,
