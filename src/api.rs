@@ -475,6 +475,7 @@ impl Problem {
             max_level: opts.max_level.unwrap_or(DEFAULT_MAX_LEVEL),
             method: opts.method,
             max_memory: opts.max_memory,
+            field_tol: opts.field_tol,
             ..crate::report::SolveSettings::default()
         };
         settings.check()?;
@@ -592,6 +593,10 @@ pub struct SolveOptions {
     /// The unknown the eliminations solve for (default: the file's `solve
     /// for`, else the first unknown).
     pub unknown: Option<String>,
+    /// On a split domain, the unknowns' tolerance: each unknown's largest
+    /// pointwise estimate on the output grid within
+    /// `field_tol·max(1, size)` (default 1e-6; `--field-tol`).
+    pub field_tol: f64,
 }
 
 impl Default for SolveOptions {
@@ -603,6 +608,7 @@ impl Default for SolveOptions {
             max_level: None,
             max_memory: None,
             unknown: None,
+            field_tol: crate::plan::split_solve::DEFAULT_FIELD_TOL,
         }
     }
 }

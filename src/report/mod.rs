@@ -112,6 +112,9 @@ pub struct SolveSettings {
     /// Memory budget in bytes (`--max-memory`; `None`: the default of
     /// [`crate::numeric::budget`]).
     pub max_memory: Option<u64>,
+    /// The unknowns' tolerance on a split domain (`--field-tol`,
+    /// [`crate::plan::SplitOptions::field_tol`]).
+    pub field_tol: f64,
 }
 
 impl Default for SolveSettings {
@@ -123,6 +126,7 @@ impl Default for SolveSettings {
             method: None,
             grid: GRID_POINTS,
             max_memory: None,
+            field_tol: crate::plan::split_solve::DEFAULT_FIELD_TOL,
         }
     }
 }
@@ -137,6 +141,12 @@ impl SolveSettings {
             return Err(PlanError::Invalid(format!(
                 "--tol {}: the tolerance must be a finite number > 0, e.g. 1e-10",
                 self.tol
+            )));
+        }
+        if !(self.field_tol > 0.0 && self.field_tol.is_finite()) {
+            return Err(PlanError::Invalid(format!(
+                "--field-tol {}: the tolerance must be a finite number > 0, e.g. 1e-6",
+                self.field_tol
             )));
         }
         if self.max_level == 0 || self.max_level > MAX_LEVEL {
@@ -195,6 +205,7 @@ pub fn solve_split_solution(
         max_level: s.max_level,
         grid: s.grid,
         method: s.method.unwrap_or(Method::Coupled),
+        field_tol: s.field_tol,
         ..SplitOptions::default()
     };
     let sol = crate::plan::split_solve::solve_split_within(input, &opts, s.max_memory)?;
