@@ -595,8 +595,10 @@ pub struct SolveOptions {
     pub unknown: Option<String>,
     /// On a split domain, the unknowns' tolerance: each unknown's largest
     /// pointwise estimate on the output grid within
-    /// `field_tol·max(1, size)` (default 1e-6; `--field-tol`).
-    pub field_tol: f64,
+    /// `field_tol·max(1, size)` (`--field-tol`); `None` (the default):
+    /// the unknowns are reported with their estimates but do not enter
+    /// convergence.
+    pub field_tol: Option<f64>,
 }
 
 impl Default for SolveOptions {
@@ -608,7 +610,7 @@ impl Default for SolveOptions {
             max_level: None,
             max_memory: None,
             unknown: None,
-            field_tol: crate::plan::split_solve::DEFAULT_FIELD_TOL,
+            field_tol: None,
         }
     }
 }

@@ -124,13 +124,8 @@ fn solve(w: (i64, i64), mu: (i64, i64), tol: f64) -> SplitReport {
         ("mu".to_string(), rational(mu)),
     ];
     let prog = parse_program_with(&text, FILE, &sets).expect("parses");
-    // The scalars and outputs are compared with the closed forms: the
-    // fields are kept out of convergence (at some (w, μ) the shear's
-    // pointwise estimate stays above the default field tolerance within
-    // the level cap, an exit 4 of its own).
     let opts = SplitOptions {
         tol,
-        fields_converge: false,
         ..SplitOptions::default()
     };
     solve_split(&prog, &opts).expect("solves")

@@ -54,8 +54,12 @@ pub struct SplitOptions {
     /// size being its largest `|u/weight|` on the output grid).
     pub tol: f64,
     /// Whether the unknowns' pointwise estimates enter convergence
-    /// (`estimate`), each within [`SplitOptions::field_tol`]. On by
-    /// default. (At a field tolerance of `1e-10` the sphere indentation's
+    /// (`estimate`), each within [`SplitOptions::field_tol`]. Off by
+    /// default: on, the full-slip Hertz problem of `tests/end_answers.rs`,
+    /// a torsion punch case of `tests/contact_torsion.rs` and the stick
+    /// zone past the kink of `tests/split_mms.rs` no longer converge within
+    /// the level cap at `1e-6` (their fields at a graded or declared end).
+    /// (At a field tolerance of `1e-10` the sphere indentation's
     /// pressure at `x = 0` does not converge within the level cap,
     /// estimate 1.2e-10 on level 8 against a true error of 3e-11, and
     /// `32·ε·κ` floors every field of the contact gallery at about `1e-10`
@@ -86,7 +90,7 @@ impl Default for SplitOptions {
             max_level: 8,
             grid: 101,
             method: Method::Coupled,
-            fields_converge: true,
+            fields_converge: false,
             field_tol: DEFAULT_FIELD_TOL,
         }
     }

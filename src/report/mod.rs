@@ -113,8 +113,9 @@ pub struct SolveSettings {
     /// [`crate::numeric::budget`]).
     pub max_memory: Option<u64>,
     /// The unknowns' tolerance on a split domain (`--field-tol`,
-    /// [`crate::plan::SplitOptions::field_tol`]).
-    pub field_tol: f64,
+    /// [`crate::plan::SplitOptions::field_tol`]); `None`: the unknowns do
+    /// not enter convergence.
+    pub field_tol: Option<f64>,
 }
 
 impl Default for SolveSettings {
@@ -126,7 +127,7 @@ impl Default for SolveSettings {
             method: None,
             grid: GRID_POINTS,
             max_memory: None,
-            field_tol: crate::plan::split_solve::DEFAULT_FIELD_TOL,
+            field_tol: None,
         }
     }
 }
@@ -143,10 +144,11 @@ impl SolveSettings {
                 self.tol
             )));
         }
-        if !(self.field_tol > 0.0 && self.field_tol.is_finite()) {
+        if let Some(ft) = self.field_tol
+            && !(ft > 0.0 && ft.is_finite())
+        {
             return Err(PlanError::Invalid(format!(
-                "--field-tol {}: the tolerance must be a finite number > 0, e.g. 1e-6",
-                self.field_tol
+                "--field-tol {ft}: the tolerance must be a finite number > 0, e.g. 1e-6"
             )));
         }
         if self.max_level == 0 || self.max_level > MAX_LEVEL {
@@ -205,8 +207,10 @@ pub fn solve_split_solution(
         max_level: s.max_level,
         grid: s.grid,
         method: s.method.unwrap_or(Method::Coupled),
-        field_tol: s.field_tol,
-        ..SplitOptions::default()
+        fields_converge: s.field_tol.is_some(),
+        field_tol: s
+            .field_tol
+            .unwrap_or(crate::plan::split_solve::DEFAULT_FIELD_TOL),
     };
     let sol = crate::plan::split_solve::solve_split_within(input, &opts, s.max_memory)?;
     let r = from_split(&sol, s.grid)?;
