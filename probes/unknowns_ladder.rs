@@ -2,7 +2,7 @@
 //! fed to the split solver as `tests/split_field_bounds.rs` does): levels,
 //! whether it converged, and every scalar's, output's, coefficient's and
 //! unknown's estimate; with `LM_FIELDS` set the unknowns drive the ladder
-//! (`SplitOptions::fields_converge`); with `LM_WHERE` set, the grid points
+//! (`SplitOptions::fields_converge`; `LM_FIELD_TOL` sets `field_tol`); with `LM_WHERE` set, the grid points
 //! of the largest estimates; for a file with a closed form, the true
 //! errors on the grid.
 //!
@@ -27,6 +27,12 @@ fn main() {
     }
     if let Some(m) = args.get(2).and_then(|s| s.parse().ok()) {
         opts.max_level = m;
+    }
+    if let Some(t) = std::env::var("LM_FIELD_TOL")
+        .ok()
+        .and_then(|s| s.parse().ok())
+    {
+        opts.field_tol = t;
     }
     let text = std::fs::read_to_string(path).expect("file");
     let prog = parse_program(&text, path).expect("parses");
@@ -53,8 +59,13 @@ fn main() {
     }
     for u in &r.unknowns {
         println!(
-            "  field {}: size {:.3e} est {:.2e} factor {:.2} floor {:.2e}",
-            u.name, u.size, u.error, u.factor, u.floor
+            "  field {}: size {:.3e} est {:.2e} factor {:.2} floor {:.2e} left out {:?}",
+            u.name,
+            u.size,
+            u.error,
+            u.factor,
+            u.floor,
+            u.left_out.iter().map(|l| l.x).collect::<Vec<_>>()
         );
     }
     if std::env::var_os("LM_WHERE").is_some() {
@@ -134,7 +145,7 @@ fn closed_form(path: &str) -> Option<Exact> {
         })
     } else if path.ends_with("cone.lmx") {
         let a = 2.0 / PI;
-        Box::new(move |_, x| if x < a { 0.5 * (a / x).acosh() } else { 0.0 })
+        Box::new(move |_, x| if x < a { (a / x).acosh() } else { 0.0 })
     } else {
         return None;
     };

@@ -482,6 +482,7 @@ impl Problem {
             max_level: opts.max_level.unwrap_or(DEFAULT_MAX_LEVEL),
             method: opts.method,
             max_memory: opts.max_memory,
+            field_tol: opts.field_tol,
             ..crate::report::SolveSettings::default()
         };
         settings.check()?;
@@ -571,6 +572,12 @@ pub struct SolveOptions {
     /// The unknown the eliminations solve for (default: the file's `solve
     /// for`, else the first unknown).
     pub unknown: Option<String>,
+    /// On a split domain, the unknowns' tolerance: each unknown's largest
+    /// pointwise estimate on the output grid within
+    /// `field_tol·max(1, size)` (`--field-tol`); `None` (the default):
+    /// the unknowns are reported with their estimates but do not enter
+    /// convergence.
+    pub field_tol: Option<f64>,
 }
 
 impl Default for SolveOptions {
@@ -582,6 +589,7 @@ impl Default for SolveOptions {
             max_level: None,
             max_memory: None,
             unknown: None,
+            field_tol: None,
         }
     }
 }

@@ -28,6 +28,7 @@ pub fn solve_command(a: &SolveArgs, w: &mut dyn Write) -> Result<(), CliError> {
         method: s.method,
         max_memory: s.max_memory,
         unknown: a.unknown.clone(),
+        field_tol: s.field_tol,
         ..SolveOptions::default()
     };
     let r = problem
@@ -50,6 +51,7 @@ pub fn settings(flags: &SolveFlags) -> Result<SolveSettings, CliError> {
         max_level: flags.max_level,
         method,
         max_memory: flags.max_memory,
+        field_tol: flags.field_tol,
         ..SolveSettings::default()
     };
     s.check()?;

@@ -537,6 +537,7 @@ pub fn answer_at_end(
             cond: d.cond,
             unknowns: Vec::new(),
             sizes: Vec::new(),
+            left_out: Vec::new(),
         };
         // Each output's own level estimate.
         let noise: Vec<f64> = (0..n_out)

@@ -313,6 +313,7 @@ pub(super) fn check(
             cond: this.cond,
             unknowns: Vec::new(),
             sizes: Vec::new(),
+            left_out: Vec::new(),
         }];
         let (x, slope, d) = find_scalar(problem, lvl, &warm, opts.tol)?;
         (vec![x], slope, d)
@@ -327,6 +328,7 @@ pub(super) fn check(
         cond: d.cond,
         unknowns: Vec::new(),
         sizes: Vec::new(),
+        left_out: Vec::new(),
     };
     Ok(Verdict::Climb {
         level: Box::new(level),

@@ -181,6 +181,38 @@ pub struct GridField {
     /// The unknown's size: its largest `|u/weight|` on the points kept
     /// (the weight of its basis; 1 where it has none).
     pub size: f64,
+    /// The grid points left out, each with why ([`LevelFields::on_grid`]).
+    pub left_out: Vec<LeftOut>,
+}
+
+/// A point of the output grid left out of an unknown's values and
+/// estimates ([`LevelFields::on_grid`]).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct LeftOut {
+    /// The point.
+    pub x: f64,
+    /// Why.
+    pub reason: LeftOutReason,
+}
+
+/// Why a grid point is left out ([`LevelFields::on_grid`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum LeftOutReason {
+    /// A singular term's own point: the fields there are one-sided limits
+    /// of singular behaviours.
+    SingularPoint,
+    /// An end of the unknowns' interval the end check graded: the
+    /// behaviour there is not resolved pointwise (it may be infinite, as
+    /// the cone's pressure at its centre).
+    GradedEnd,
+    /// Within the scalars' estimate of an end that moves with them: the
+    /// point's side is not known.
+    MovingEnd,
+    /// The value is not finite.
+    NotFinite,
+    /// The estimate is not finite (a level that has none).
+    NoEstimate,
 }
 
 impl<'a> LevelFields<'a> {
@@ -248,6 +280,23 @@ impl<'a> LevelFields<'a> {
     /// within the scalars' estimate of an end that moves with them (their
     /// side is not known); and, when `skip_unestimated`, points whose
     /// estimate is not finite.
+    ///
+    /// **Graded ends.** Also left out are the ends of the unknowns'
+    /// interval that the end check graded (`split_ends.rs`,
+    /// [`SplitProblem::graded_ends`]): grading them moved an answer, so the
+    /// unknowns' behaviour there is not a polynomial's, and the value at
+    /// the end is a limit the collocation does not resolve. The cone's
+    /// pressure is logarithmically infinite at its centre
+    /// (`examples/contact/cone.lmx`), and under an Abel operator
+    /// `∫_x t u(t)/√(t² − x²) dt` the innermost panel `[0, h]` is seen only
+    /// through `O(h)`, so even a finite end value (the Cattaneo–Mindlin
+    /// pressure at `x = 0`) is off by `O(1)` there while the points of the
+    /// open interval converge. The estimates then hold on the half-open or
+    /// open interval, and [`GridField::left_out`] (the report's
+    /// `left_out` of each unknown) names every point left out and why.
+    /// A plain end the automatic weights chose (few layers,
+    /// [`super::split::PLAIN_END_LAYERS`]) stays on the grid: the flat
+    /// punch's `p(0)` converges.
     pub fn on_grid(
         &self,
         u: usize,
@@ -265,18 +314,29 @@ impl<'a> LevelFields<'a> {
             None => (lo, hi),
         };
         let n = n.max(2);
-        let mut avoid: Vec<(f64, f64)> = d
+        let ulps = |z: f64| 4.0 * f64::EPSILON * z.abs().max(1.0);
+        let mut avoid: Vec<(f64, f64, LeftOutReason)> = d
             .terms
             .iter()
-            .map(|t| (t.at, 4.0 * f64::EPSILON * t.at.abs().max(1.0)))
+            .map(|t| (t.at, ulps(t.at), LeftOutReason::SingularPoint))
             .collect();
+        avoid.extend(
+            p.graded_ends()
+                .iter()
+                .map(|&e| (e, ulps(e), LeftOutReason::GradedEnd)),
+        );
         if self.scalar_error.is_finite() {
-            avoid.extend(self.moving.iter().map(|&e| (e, self.scalar_error)));
+            avoid.extend(
+                self.moving
+                    .iter()
+                    .map(|&e| (e, self.scalar_error, LeftOutReason::MovingEnd)),
+            );
         }
         let mut g = GridField::default();
         for k in 0..n {
             let t = a + (b - a) * k as f64 / (n - 1) as f64;
-            if avoid.iter().any(|&(e, r)| (t - e).abs() <= r) {
+            if let Some(&(_, _, reason)) = avoid.iter().find(|&&(e, r, _)| (t - e).abs() <= r) {
+                g.left_out.push(LeftOut { x: t, reason });
                 continue;
             }
             let side = if k + 1 == n {
@@ -286,6 +346,12 @@ impl<'a> LevelFields<'a> {
             };
             let v = self.value(u, t, side)?;
             if !v.value.is_finite() || (skip_unestimated && !v.error.is_finite()) {
+                let reason = if v.value.is_finite() {
+                    LeftOutReason::NoEstimate
+                } else {
+                    LeftOutReason::NotFinite
+                };
+                g.left_out.push(LeftOut { x: t, reason });
                 continue;
             }
             let w = self.last.weight_at(u, t);

@@ -112,6 +112,10 @@ pub struct SolveSettings {
     /// Memory budget in bytes (`--max-memory`; `None`: the default of
     /// [`crate::numeric::budget`]).
     pub max_memory: Option<u64>,
+    /// The unknowns' tolerance on a split domain (`--field-tol`,
+    /// [`crate::plan::SplitOptions::field_tol`]); `None`: the unknowns do
+    /// not enter convergence.
+    pub field_tol: Option<f64>,
 }
 
 impl Default for SolveSettings {
@@ -123,6 +127,7 @@ impl Default for SolveSettings {
             method: None,
             grid: GRID_POINTS,
             max_memory: None,
+            field_tol: None,
         }
     }
 }
@@ -137,6 +142,13 @@ impl SolveSettings {
             return Err(PlanError::Invalid(format!(
                 "--tol {}: the tolerance must be a finite number > 0, e.g. 1e-10",
                 self.tol
+            )));
+        }
+        if let Some(ft) = self.field_tol
+            && !(ft > 0.0 && ft.is_finite())
+        {
+            return Err(PlanError::Invalid(format!(
+                "--field-tol {ft}: the tolerance must be a finite number > 0, e.g. 1e-6"
             )));
         }
         if self.max_level == 0 || self.max_level > MAX_LEVEL {
@@ -195,7 +207,10 @@ pub fn solve_split_solution(
         max_level: s.max_level,
         grid: s.grid,
         method: s.method.unwrap_or(Method::Coupled),
-        ..SplitOptions::default()
+        fields_converge: s.field_tol.is_some(),
+        field_tol: s
+            .field_tol
+            .unwrap_or(crate::plan::split_solve::DEFAULT_FIELD_TOL),
     };
     let sol = crate::plan::split_solve::solve_split_within(input, &opts, s.max_memory)?;
     let r = from_split(&sol, s.grid)?;
