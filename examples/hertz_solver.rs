@@ -303,6 +303,7 @@ pub fn input() -> Result<SplitInput, PlanError> {
             value: RealFn::new(const_0),
         }],
         estimates: vec![Some(RealFn::new(estimate_c))],
+        ends: Vec::new(),
     };
     let sys = system()?;
     Ok(SplitInput { sys, contact })

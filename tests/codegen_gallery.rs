@@ -1,7 +1,7 @@
 //! `lambdamat codegen` for every contact gallery file (examples/contact/):
 //! the generated solvers are checked in under tests/generated/ (this test
 //! demands they match a fresh `codegen` exactly), compiled as modules of
-//! this test (one build for all eight), and each one's solve is compared
+//! this test (one build for all nine), and each one's solve is compared
 //! with the in-process `solve` of its file at the default tolerance bit for
 //! bit: every scalar, output, coefficient, estimate and diagnostic, or the
 //! same refusal.
@@ -52,6 +52,10 @@ mod sphere_indentation_solver;
 #[rustfmt::skip]
 #[path = "generated/sphere_load_solver.rs"]
 mod sphere_load_solver;
+#[allow(dead_code)]
+#[rustfmt::skip]
+#[path = "generated/sphere_load_range_solver.rs"]
+mod sphere_load_range_solver;
 
 fn same_bits(what: &str, a: &[Estimate], b: &[Estimate]) {
     assert_eq!(a.len(), b.len(), "{what}");
@@ -167,10 +171,14 @@ fn every_gallery_file_generates_a_solver_identical_to_solve() {
             "sphere_load",
             sphere_load_solver::input().expect("generated input is consistent"),
         ),
+        check(
+            "sphere_load_range",
+            sphere_load_range_solver::input().expect("generated input is consistent"),
+        ),
     ];
     // Every file gives a report (converged or not), so every comparison
     // is of reports, not of refusals.
-    assert_eq!(reports.iter().filter(|&&r| r).count(), 8);
+    assert_eq!(reports.iter().filter(|&&r| r).count(), 9);
 }
 
 /// Every checked-in generated solver names lambdamat only through

@@ -103,6 +103,23 @@ fn sphere_at_given_load_is_hertz() {
 }
 
 #[test]
+fn sphere_at_given_load_over_the_contact_itself_is_hertz() {
+    // The same problem with the Abel operator and the load integrated to
+    // the unknown radius (`int(x..a)`, `int(0..a)`): a^3 = 3/8, delta =
+    // a^2, and the load inside a/2 is 1 - (3/4)^(3/2).
+    let a = (3.0f64 / 8.0).cbrt();
+    check(
+        "examples/contact/sphere_load_range.lmx",
+        &[
+            ("a", a),
+            ("delta", a * a),
+            ("P", 1.0),
+            ("P_half", 1.0 - 0.75f64.powf(1.5)),
+        ],
+    );
+}
+
+#[test]
 fn cattaneo_mindlin_at_given_tangential_force() {
     // Scalars c and S, fixed by B = 0 and the force Q0 = 7/6:
     // c = (1 - Q0/(mu P))^(1/3) = 1/2, S = mu (1 - c^2) = 3/8; mu = 1/2.

@@ -124,31 +124,75 @@ fn a_load_without_an_admissible_root_is_refused() {
 }
 
 /// A scalar as the end of an operator's range or of an output's integral
-/// is not supported yet: refused with exit 2 at its line and column.
+/// moves with the scalar: with `int(x..a)` the unknown beyond `a` enters
+/// no equation, so setting it to 3 there (through a second unknown `q = 1`)
+/// leaves the contact radius, the depth and the loads at their closed
+/// forms (were the range not moved, the pressure beyond `a` would push
+/// and `a` would be off by far more than 1e-9); an output's integral
+/// `int(0..a/2)` ends at half the solved radius.
 #[test]
-fn a_scalar_in_an_operator_range_or_an_output_is_an_input_error() {
-    let sphere = std::fs::read_to_string("examples/contact/sphere_load.lmx").expect("source");
-    for (from, to, at) in [
+fn a_scalar_ends_an_operator_range_and_an_output() {
+    let src = "param P0 = 1\n\
+     unknown p, q on [0, 2]\n\
+     scalar a in (0, 2)\n\
+     scalar delta in (0, 4)\n\
+     operator k1 = int(x..a) t/sqrt(t^2 - x^2) dt\n\
+     equation k1 p = delta - x^2 on [0, a)\n\
+     equation q = 1 on [0, 2]\n\
+     relation p = 3*q on [a, 2]\n\
+     singular p at a- ~ B*x/sqrt(a^2 - x^2)\n\
+     condition B = 0\n\
+     condition int(0..a) 2*pi*x*p(x) dx = P0\n\
+     output P_half = int(0..a/2) 2*pi*x*p(x) dx\n";
+    let f = lmx_file(src);
+    let j = json(&["solve", f.path().to_str().expect("utf-8")]);
+    assert_eq!(j["converged"], true, "{j}");
+    let a = (3.0f64 / 8.0).cbrt();
+    for (name, exact) in [
+        ("a", a),
+        ("delta", a * a),
+        ("P_half", 1.0 - 0.75f64.powf(1.5)),
+    ] {
+        let v = j["scalars"][name]
+            .as_f64()
+            .or_else(|| j["outputs"][name].as_f64())
+            .expect("value");
+        let e = j["error_estimates"][name].as_f64().expect("estimate");
+        assert!(
+            (v - exact).abs() <= 1e-9,
+            "{name} = {v}, closed form {exact}"
+        );
+        assert!(
+            (v - exact).abs() <= e,
+            "{name} = {v} ± {e}, closed form {exact}"
+        );
+    }
+}
+
+/// A limit with a scalar needs the unknowns' interval declared; a scalar
+/// is still refused where a constant is needed (a point value's point).
+#[test]
+fn a_scalar_limit_without_a_declared_interval_is_an_input_error() {
+    let sphere = std::fs::read_to_string("examples/contact/sphere_load_range.lmx").expect("source");
+    for (from, to, msg, at) in [
         (
-            "output P = 2*pi*int(0..2) x*p(x) dx",
-            "output P = 2*pi*int(0..a) x*p(x) dx",
-            ":31:24",
+            "unknown p on [0, 2]",
+            "unknown p",
+            "an integration limit that uses an unknown scalar needs the unknowns' interval declared",
+            ":24:22",
         ),
         (
-            "operator k1 = int(x..2) t/sqrt",
-            "operator k1 = int(x..a) t/sqrt",
-            ":21:22",
+            "output P = int(0..a) 2*pi*x*p(x) dx",
+            "output P = p(a)",
+            "`a` is an unknown scalar, but a constant is needed here",
+            ":34:14",
         ),
     ] {
-        assert!(sphere.contains(from));
+        assert!(sphere.contains(from), "{from}");
         let out = run(&sphere.replace(from, to));
         let err = String::from_utf8_lossy(&out.stderr);
         assert_eq!(out.status.code(), Some(2), "{err}");
-        assert!(
-            err.contains("`a` is an unknown scalar, but a constant is needed here")
-                && err.contains(at),
-            "{err}"
-        );
+        assert!(err.contains(msg) && err.contains(at), "{err}");
     }
 }
 
@@ -270,5 +314,78 @@ fn logarithmic_and_second_singular_terms_are_refused_at_their_place() {
             line + 1
         };
         assert!(err.contains(&format!(":{at_line}:")), "{extra}: {err}");
+    }
+}
+
+/// `reduce` shows a side condition in the unknowns of each subinterval's
+/// model: on the stick zone of the Cattaneo–Mindlin force file the shear
+/// `q` itself, on the slip zone `q = mu*p` substituted (never `?(x)`).
+#[test]
+fn reduce_prints_side_conditions_in_each_pieces_unknowns() {
+    let out = lambdamat()
+        .args(["reduce", "examples/contact/cattaneo_mindlin_force.lmx"])
+        .output()
+        .expect("runs");
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(0), "{text}");
+    assert!(
+        text.contains("(condition 2*pi*int(0..1) x*q(x) dx = 7/6)")
+            && text.contains("(condition 1/2*(2*pi)*int(0..1) x*p(x) dx = 7/6)")
+            && !text.contains("?(x)"),
+        "{text}"
+    );
+}
+
+/// JKR adhesion at a given tensile load between the pull-off load and 0
+/// has two equilibria (P = (8/3)a³ − 2πC a^(3/2) falls, then rises): the
+/// joint solve of `a` and `delta` finds both, admissible alike (no
+/// inequality tells them apart), and refuses with exit 3 naming both.
+#[test]
+fn two_admissible_roots_of_the_conditions_are_refused_naming_both() {
+    let src = "param C = 1/4\n\
+               param P0 = -1/10\n\
+               unknown p on [0, 2]\n\
+               scalar a in (0, 2)\n\
+               scalar delta in (-2, 4)\n\
+               operator k1 = int(x..2) t/sqrt(t^2 - x^2) dt\n\
+               equation k1 p = delta - x^2 on [0, a)\n\
+               relation p = 0 on [a, 2]\n\
+               singular p at a- ~ B*x/sqrt(a^2 - x^2)\n\
+               condition B = -C/sqrt(a)\n\
+               condition 2*pi*int(0..2) x*p(x) dx = P0\n\
+               output P = 2*pi*int(0..2) x*p(x) dx\n";
+    let out = run(src);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(3), "{err}");
+    assert!(
+        out.stdout.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&out.stdout)
+    );
+    assert!(
+        err.contains("the 2 conditions for a, delta have 2 admissible roots"),
+        "{err}"
+    );
+    // The closed-form roots: (8/3)a^3 - 2 pi C a^(3/2) = P0 on each side
+    // of the minimum at a^(3/2) = 3 pi C/8, by bisection.
+    let (c, p0) = (0.25f64, -0.1f64);
+    let load = |a: f64| 8.0 / 3.0 * a.powi(3) - 2.0 * std::f64::consts::PI * c * a.powf(1.5) - p0;
+    let root = |mut lo: f64, mut hi: f64| {
+        for _ in 0..200 {
+            let m = 0.5 * (lo + hi);
+            if (load(m) > 0.0) == (load(lo) > 0.0) {
+                lo = m;
+            } else {
+                hi = m;
+            }
+        }
+        lo
+    };
+    let turn = (3.0 * std::f64::consts::PI * c / 8.0).powf(2.0 / 3.0);
+    for a in [root(1e-9, turn), root(turn, 2.0)] {
+        assert!(
+            err.contains(&format!("a = {:.6e}", a)[..12]),
+            "root a = {a} not named: {err}"
+        );
     }
 }

@@ -19,15 +19,21 @@ use num_traits::ToPrimitive;
 use super::rust::literal;
 use super::{Names, Provenance, imports, struct_lit, vec_expr};
 use crate::plan::PlanError;
-use crate::plan::split_input::plain;
+use crate::plan::split_input::{numeric_site, plain};
 use crate::system::Program;
-use crate::system::contact::{Contact, Interval, RBin, RExpr, RFunc, SingularKind};
+use crate::system::contact::{Contact, EndSite, Interval, RBin, RExpr, RFunc, SingularKind};
 
 /// Rust source of a solver for the split-domain file `prog`.
 pub fn split_solver_source(prog: &Program, from: &Provenance) -> Result<String, PlanError> {
     let (_, system) = super::system_code(&plain(prog), None)?;
     let mut fns = Fns::new(&prog.contact);
-    let contact = contact_lit(&prog.contact, &mut fns);
+    let sites = prog
+        .contact
+        .ends
+        .iter()
+        .map(|e| numeric_site(prog, e.site))
+        .collect::<Result<Vec<_>, _>>()?;
+    let contact = contact_lit(&prog.contact, &sites, &mut fns);
     let mut code = system;
     code.push_str(&fns.code);
     code.push_str(
@@ -202,8 +208,9 @@ impl Fns {
     }
 }
 
-/// The `SplitContact { … }` literal for `c` (functions written to `fns`).
-fn contact_lit(c: &Contact, fns: &mut Fns) -> String {
+/// The `SplitContact { … }` literal for `c` (functions written to `fns`;
+/// `sites`: the sites of `c.ends` as the solver counts them).
+fn contact_lit(c: &Contact, sites: &[EndSite], fns: &mut Fns) -> String {
     let scalars: Vec<String> = c
         .scalars
         .iter()
@@ -410,6 +417,34 @@ fn contact_lit(c: &Contact, fns: &mut Fns) -> String {
             None => "None".into(),
         })
         .collect();
+    let ends: Vec<String> = c
+        .ends
+        .iter()
+        .zip(sites)
+        .enumerate()
+        .map(|(i, (e, site))| {
+            let f = fns.real(
+                &format!("end_{}", i + 1),
+                &format!("Integration limit {} (it uses a scalar)", i + 1),
+                &e.value,
+            );
+            let site = match *site {
+                EndSite::Operator { symbol, term } => {
+                    format!("EndSite::Operator {{ symbol: {symbol}, term: {term} }}")
+                }
+                EndSite::Output { output, term } => {
+                    format!("EndSite::Output {{ output: {output}, term: {term} }}")
+                }
+                EndSite::Condition { condition, term } => {
+                    format!("EndSite::Condition {{ condition: {condition}, term: {term} }}")
+                }
+            };
+            lit(
+                "SplitEnd",
+                &[("site", site), ("upper", e.upper.to_string()), ("value", f)],
+            )
+        })
+        .collect();
     let fields = [
         ("scalars", list(&scalars)),
         ("reals", list(&reals)),
@@ -422,6 +457,7 @@ fn contact_lit(c: &Contact, fns: &mut Fns) -> String {
         ("coefficients", list(&coefficients)),
         ("conditions", list(&conditions)),
         ("estimates", list(&estimates)),
+        ("ends", list(&ends)),
     ];
     lit("SplitContact", &fields)
 }

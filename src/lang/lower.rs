@@ -13,11 +13,13 @@ use super::ast::{BinOp, Expr, ExprKind, File, Ident, IntVar, Sign, Stmt};
 use super::error::{ErrorKind, LangError};
 use super::scope::{Entry, Scope, Sort};
 use super::validate::Validated;
+use super::lower_contact::{moving_ends, moving_marker, uses_scalar};
 use super::validate_system::{
     contains_functional, contains_operator, is_side_condition, split_term,
 };
 use crate::algebra::mpoly::MPoly;
 use crate::algebra::ncpoly::NcPoly;
+use crate::system::contact::EndSite;
 use crate::system::expr::{Expr as SExpr, Func};
 use crate::system::{
     Directive, Equation, FunctionalTerm, Limit, MatrixDef, OperatorDef, Output, Param, Program,
@@ -129,10 +131,16 @@ pub fn lower(file: &File, v: &Validated) -> Result<Program, LangError> {
                     }) => i,
                     _ => return Err(internal_name(name)),
                 };
-                let terms = operator_terms(body, scope)?
+                let mut terms: Vec<Term> = operator_terms(body, scope)?
                     .into_iter()
                     .map(|(factor, atom)| atom.into_term(factor))
                     .collect();
+                moving_ends(
+                    body,
+                    scope,
+                    &mut program.contact,
+                    operator_limits(symbol, &mut terms),
+                )?;
                 program.operators.push(OperatorDef { symbol, terms });
             }
             Stmt::Equation { lhs, rhs, .. } => {
@@ -169,7 +177,14 @@ pub fn lower(file: &File, v: &Validated) -> Result<Program, LangError> {
                 });
             }
             Stmt::Output { name, body } => {
-                let terms = output_terms(body, scope)?;
+                let mut terms = output_terms(body, scope)?;
+                let output = program.outputs.len();
+                moving_ends(
+                    body,
+                    scope,
+                    &mut program.contact,
+                    functional_limits(|term| EndSite::Output { output, term }, &mut terms),
+                )?;
                 finite_functional(&terms, &format!("output {}", name.name), body)?;
                 program.outputs.push(Output {
                     name: name.name.clone(),
@@ -177,7 +192,14 @@ pub fn lower(file: &File, v: &Validated) -> Result<Program, LangError> {
                 })
             }
             Stmt::Condition { lhs, rhs } if is_side_condition(lhs, scope) => {
-                let terms = output_terms(lhs, scope)?;
+                let mut terms = output_terms(lhs, scope)?;
+                let condition = program.side_conditions.len();
+                moving_ends(
+                    lhs,
+                    scope,
+                    &mut program.contact,
+                    functional_limits(|term| EndSite::Condition { condition, term }, &mut terms),
+                )?;
                 finite_functional(&terms, "this condition", lhs)?;
                 let value = fexpr(rhs, scope)?;
                 finite_constant(&value, "the condition's value", rhs)?;
@@ -302,10 +324,53 @@ impl Atom {
 fn limit(e: &Expr, scope: &Scope) -> Result<Limit, LangError> {
     match &e.kind {
         ExprKind::Name(id) if id.name == "x" => Ok(Limit::X),
-        _ => constant(e, scope)
+        _ => output_limit(e, scope)
             .map(Limit::Const)
             .ok_or_else(|| internal(e)),
     }
+}
+
+/// A constant integration limit, or the marker of one that uses a scalar
+/// (`lower_contact::moving_ends` replaces it).
+fn output_limit(e: &Expr, scope: &Scope) -> Option<BigRational> {
+    if uses_scalar(e, scope) {
+        Some(moving_marker(e))
+    } else {
+        constant(e, scope)
+    }
+}
+
+/// The constant limits of `terms` (operator terms), with their sites.
+fn operator_limits(
+    symbol: usize,
+    terms: &mut [Term],
+) -> impl Iterator<Item = (EndSite, &mut BigRational, bool)> {
+    terms.iter_mut().enumerate().flat_map(move |(term, t)| {
+        let mut v = Vec::new();
+        if let Term::Integral { lower, upper, .. } = t {
+            for (l, up) in [(lower, false), (upper, true)] {
+                if let Limit::Const(q) = l {
+                    v.push((EndSite::Operator { symbol, term }, q, up));
+                }
+            }
+        }
+        v
+    })
+}
+
+/// The limits of `terms` (a functional's), with their sites.
+fn functional_limits(
+    site: impl Fn(usize) -> EndSite,
+    terms: &mut [FunctionalTerm],
+) -> impl Iterator<Item = (EndSite, &mut BigRational, bool)> {
+    terms.iter_mut().enumerate().flat_map(move |(i, t)| {
+        let mut v = Vec::new();
+        if let FunctionalTerm::Integral { lower, upper, .. } = t {
+            v.push((site(i), lower, false));
+            v.push((site(i), upper, true));
+        }
+        v
+    })
 }
 
 /// An operator body as a list of (factor, piece).
@@ -501,8 +566,8 @@ fn output_terms(e: &Expr, scope: &Scope) -> Result<Vec<FunctionalTerm>, LangErro
             var,
             ..
         } => {
-            let lo = constant(lower, scope).ok_or_else(|| internal(lower))?;
-            let hi = constant(upper, scope).ok_or_else(|| internal(upper))?;
+            let lo = output_limit(lower, scope).ok_or_else(|| internal(lower))?;
+            let hi = output_limit(upper, scope).ok_or_else(|| internal(upper))?;
             let integrand = integrand.as_ref().ok_or_else(|| internal(e))?;
             weighted(integrand, scope)?
                 .into_iter()

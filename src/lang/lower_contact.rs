@@ -13,8 +13,8 @@ use super::validate_contact::{
     coefficient_term, inequality_sides, is_inf, linear_side, relation_form, weight_form,
 };
 use crate::system::contact::{
-    Condition, Contact, Inequality, Interval as CInterval, LinTerm, RBin, RExpr, RFunc, RealParam,
-    Relation, Scalar, Singular, SingularKind,
+    Condition, Contact, EndSite, Inequality, Interval as CInterval, LinTerm, MovingEnd, RBin,
+    RExpr, RFunc, RealParam, Relation, Scalar, Singular, SingularKind,
 };
 
 fn internal(span: super::ast::Span, what: &str) -> LangError {
@@ -367,4 +367,90 @@ pub fn lower_contact(file: &File, scope: &Scope) -> Result<Contact, LangError> {
         c.equation_domains.clear();
     }
     Ok(c)
+}
+
+/// Where the lowering of an integral puts a limit that uses a scalar
+/// until [`moving_ends`] replaces it: a rational far beyond any interval,
+/// offset by the limit's position in the source, so that the limit is
+/// found again whatever the lowering did to the terms around it
+/// (distributed factors, signs, several unknowns in one integrand).
+pub(crate) fn moving_marker(e: &Expr) -> num_rational::BigRational {
+    let base = num_bigint::BigInt::from(10).pow(60);
+    num_rational::BigRational::from_integer(base + num_bigint::BigInt::from(e.span.start))
+}
+
+/// The source position a [`moving_marker`] stands for, if `q` is one.
+fn marker_position(q: &num_rational::BigRational) -> Option<usize> {
+    let base = num_bigint::BigInt::from(10).pow(60);
+    if !q.is_integer() || q.numer() < &base {
+        return None;
+    }
+    (q.numer() - base).to_usize()
+}
+
+/// Every integration limit in `e` that uses a scalar.
+fn scalar_limits<'e>(e: &'e Expr, scope: &Scope, out: &mut Vec<&'e Expr>) {
+    match &e.kind {
+        ExprKind::Integral { lower, upper, .. } => {
+            for l in [lower, upper] {
+                if uses_scalar(l, scope) {
+                    out.push(l);
+                }
+            }
+        }
+        ExprKind::Neg(a) | ExprKind::Call(_, a) => scalar_limits(a, scope, out),
+        ExprKind::Binary(_, a, b) => {
+            scalar_limits(a, scope, out);
+            scalar_limits(b, scope, out);
+        }
+        _ => {}
+    }
+}
+
+/// Replaces the [`moving_marker`]s among `limits` (one per integral term
+/// of a definition, output or condition `body`, with its site) by the
+/// end of the unknowns' interval on their side and records each as a
+/// [`MovingEnd`] of `contact`.
+pub(crate) fn moving_ends<'l>(
+    body: &Expr,
+    scope: &Scope,
+    contact: &mut Contact,
+    limits: impl Iterator<Item = (EndSite, &'l mut num_rational::BigRational, bool)>,
+) -> Result<(), LangError> {
+    let mut found = Vec::new();
+    scalar_limits(body, scope, &mut found);
+    if found.is_empty() {
+        return Ok(());
+    }
+    let slots = real_slots(scope);
+    let domain = contact
+        .unknown_domains
+        .iter()
+        .flatten()
+        .next()
+        .and_then(|d| match (&d.lo, &d.hi) {
+            (RExpr::Const(lo), RExpr::Const(hi)) => Some((lo.clone(), hi.clone())),
+            _ => None,
+        })
+        .ok_or_else(|| internal(body.span, "an integration limit with a scalar"))?;
+    for (site, q, upper) in limits {
+        let Some(at) = marker_position(q) else {
+            continue;
+        };
+        let e = found
+            .iter()
+            .find(|e| e.span.start == at)
+            .ok_or_else(|| internal(body.span, "an integration limit with a scalar"))?;
+        contact.ends.push(MovingEnd {
+            site,
+            upper,
+            value: rexpr(e, scope, &slots)?,
+        });
+        *q = if upper {
+            domain.1.clone()
+        } else {
+            domain.0.clone()
+        };
+    }
+    Ok(())
 }

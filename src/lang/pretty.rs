@@ -9,6 +9,7 @@ use std::fmt::Write;
 use num_traits::One;
 
 use crate::algebra::print::{Node, PrintOptions, print};
+use crate::system::contact::{Contact, EndSite};
 
 use crate::system::{
     Directive, Expr, FunctionalTerm, Limit, MatrixDef, OperatorDef, Program, SideCondition, Term,
@@ -147,7 +148,7 @@ pub fn pretty(program: &Program) -> String {
     for (i, name) in names.iter().enumerate() {
         match program.operator(i) {
             Some(def) => {
-                let _ = writeln!(out, "operator {name} = {}", operator_body(def));
+                let _ = writeln!(out, "operator {name} = {}", operator_body(def, c, &slots));
             }
             None => {
                 let _ = writeln!(out, "var {name}");
@@ -197,11 +198,16 @@ pub fn pretty(program: &Program) -> String {
         let _ = writeln!(out, "equation {lhs} = {}{domain}", eq.rhs);
     }
     contact(program, &slots, &mut out);
-    for o in &program.outputs {
+    for (output, o) in program.outputs.iter().enumerate() {
         let terms: Vec<String> = o
             .terms
             .iter()
-            .map(|t| functional_term(t, &program.unknowns))
+            .enumerate()
+            .map(|(term, t)| {
+                let site = EndSite::Output { output, term };
+                let ends = [false, true].map(|up| moving(c, &slots, site, up));
+                functional_term(t, &program.unknowns, &ends)
+            })
             .collect();
         let body = if terms.is_empty() {
             "0".to_string()
@@ -210,8 +216,18 @@ pub fn pretty(program: &Program) -> String {
         };
         let _ = writeln!(out, "output {} = {body}", o.name);
     }
-    for sc in &program.side_conditions {
-        let _ = writeln!(out, "{}", side_condition(sc, &program.unknowns));
+    for (condition, sc) in program.side_conditions.iter().enumerate() {
+        let terms: Vec<String> = sc
+            .terms
+            .iter()
+            .enumerate()
+            .map(|(term, t)| {
+                let site = EndSite::Condition { condition, term };
+                let ends = [false, true].map(|up| moving(c, &slots, site, up));
+                functional_term(t, &program.unknowns, &ends)
+            })
+            .collect();
+        let _ = writeln!(out, "condition {} = {}", terms.join(" + "), sc.value);
     }
     let matrix_name = |i: usize| program.matrices.get(i).map_or("?", |m| m.name.as_str());
     for d in &program.directives {
@@ -259,13 +275,29 @@ fn limit(l: &Limit) -> String {
     }
 }
 
-fn operator_body(def: &OperatorDef) -> String {
+/// The source of a limit that uses a scalar (`Contact::ends`) at `site`.
+fn moving(c: &Contact, slots: &[String], site: EndSite, upper: bool) -> Option<String> {
+    c.ends
+        .iter()
+        .find(|e| e.site == site && e.upper == upper)
+        .map(|e| e.value.to_text(slots))
+}
+
+fn operator_body(def: &OperatorDef, c: &Contact, slots: &[String]) -> String {
     if def.terms.is_empty() {
         return "0*id".to_string();
     }
+    let at = |term: usize, l: &Limit, upper: bool| {
+        let site = EndSite::Operator {
+            symbol: def.symbol,
+            term,
+        };
+        moving(c, slots, site, upper).unwrap_or_else(|| limit(l))
+    };
     def.terms
         .iter()
-        .map(|t| match t {
+        .enumerate()
+        .map(|(i, t)| match t {
             Term::Integral {
                 lower,
                 upper,
@@ -274,8 +306,8 @@ fn operator_body(def: &OperatorDef) -> String {
             } => format!(
                 "{}int({}..{}) {kernel} dt",
                 if *pv { "pv " } else { "" },
-                limit(lower),
-                limit(upper)
+                at(i, lower, false),
+                at(i, upper, true)
             ),
             Term::Multiply(f) => format!("{}*id", factor(f)),
             Term::Identity => "id".to_string(),
@@ -290,12 +322,19 @@ pub fn side_condition(c: &SideCondition, unknowns: &[String]) -> String {
     let terms: Vec<String> = c
         .terms
         .iter()
-        .map(|t| functional_term(t, unknowns))
+        .map(|t| functional_term(t, unknowns, &[None, None]))
         .collect();
     format!("condition {} = {}", terms.join(" + "), c.value)
 }
 
-fn functional_term(t: &FunctionalTerm, unknowns: &[String]) -> String {
+/// A functional's term as source; `ends`: the lower and upper limit's
+/// source when it uses a scalar.
+fn functional_term(t: &FunctionalTerm, unknowns: &[String], ends: &[Option<String>; 2]) -> String {
+    let end = |i: usize, q: &num_rational::BigRational| {
+        ends[i]
+            .clone()
+            .unwrap_or_else(|| Expr::Const(q.clone()).to_string())
+    };
     match t {
         FunctionalTerm::Point { coeff, at, unknown } => {
             let name = unknowns.get(*unknown).map_or("?", String::as_str);
@@ -315,8 +354,8 @@ fn functional_term(t: &FunctionalTerm, unknowns: &[String]) -> String {
             unknown,
         } if coeff.as_const().is_some_and(|c| c.is_one()) => format!(
             "int({}..{}) {}{}(x) dx",
-            Expr::Const(lower.clone()),
-            Expr::Const(upper.clone()),
+            end(0, lower),
+            end(1, upper),
             weight_prefix(weight),
             unknowns.get(*unknown).map_or("?", String::as_str)
         ),
@@ -329,8 +368,8 @@ fn functional_term(t: &FunctionalTerm, unknowns: &[String]) -> String {
         } => format!(
             "{}*int({}..{}) {}{}(x) dx",
             factor(coeff),
-            Expr::Const(lower.clone()),
-            Expr::Const(upper.clone()),
+            end(0, lower),
+            end(1, upper),
             weight_prefix(weight),
             unknowns.get(*unknown).map_or("?", String::as_str)
         ),

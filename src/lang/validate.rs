@@ -34,6 +34,7 @@ pub fn validate(file: &File) -> Result<Validated, Vec<LangError>> {
         errors: Vec::new(),
         processed_params: Vec::new(),
         matrix_shapes: Vec::new(),
+        moving_limits: Vec::new(),
     };
     v.declarations(file);
     v.parameters(file);
@@ -69,6 +70,9 @@ pub(super) struct Validator {
     processed_params: Vec<bool>,
     /// `matrix_shapes[i]`: rows and columns (of the first row) of matrix `i`.
     matrix_shapes: Vec<(usize, usize)>,
+    /// Integration limits that use an unknown scalar (they need the
+    /// unknowns' interval declared).
+    pub(super) moving_limits: Vec<Span>,
 }
 
 fn duplicate(what: &str, id: &Ident, first: Entry) -> LangError {
@@ -355,7 +359,32 @@ impl Validator {
                 Stmt::Var(_) | Stmt::Param { .. } | Stmt::Unknown(_, None) => {}
             }
         }
+        self.moving_limits_need_an_interval(file);
         self.square(file);
+    }
+
+    /// An integration limit that uses a scalar ends an integral inside the
+    /// unknowns' interval, which must then be declared with constant ends
+    /// (`unknown p on [0, 2]`).
+    fn moving_limits_need_an_interval(&mut self, file: &File) {
+        let declared = file.statements.iter().any(|st| {
+            matches!(&st.kind, Stmt::Unknown(_, Some(d))
+                if !self.uses_scalar(&d.lo) && !self.uses_scalar(&d.hi))
+        });
+        if declared {
+            return;
+        }
+        for span in std::mem::take(&mut self.moving_limits) {
+            self.err(
+                LangError::new(
+                    ErrorKind::WrongSort,
+                    "an integration limit that uses an unknown scalar needs the unknowns' interval declared with constant ends",
+                    span,
+                    "uses a scalar",
+                )
+                .with_help("declare e.g. `unknown p on [0, 2]`, an interval that holds every value of the limit"),
+            );
+        }
     }
 
     pub(super) fn symbol_list(&self) -> String {

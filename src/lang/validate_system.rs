@@ -352,7 +352,8 @@ impl Validator {
         );
     }
 
-    /// An operator's integration limit: `x` or an exact constant.
+    /// An operator's integration limit: `x`, an exact constant or a real
+    /// expression of the scalars.
     fn op_limit(&mut self, e: &Expr) {
         if let ExprKind::Name(id) = &e.kind
             && id.name == "x"
@@ -371,10 +372,27 @@ impl Validator {
             );
             return;
         }
-        self.constant(e);
+        if !self.moving_limit(e) {
+            self.constant(e);
+        }
     }
 
-    /// An output's integration limit: an exact constant.
+    /// An integration limit that uses an unknown scalar (`int(x..a)`,
+    /// `int(0..a) … dx`): a real expression, remembered so that the file
+    /// is checked to declare the unknowns' interval. `false` when `e`
+    /// uses no scalar (then it must be an exact constant).
+    fn moving_limit(&mut self, e: &Expr) -> bool {
+        if !self.uses_scalar(e) {
+            return false;
+        }
+        if self.real_expr(e, false) {
+            self.moving_limits.push(e.span);
+        }
+        true
+    }
+
+    /// An output's integration limit: an exact constant or a real
+    /// expression of the scalars.
     fn output_limit(&mut self, e: &Expr) {
         if self.mentions_variable(e) {
             self.err(LangError::new(
@@ -385,7 +403,9 @@ impl Validator {
             ));
             return;
         }
-        self.constant(e);
+        if !self.moving_limit(e) {
+            self.constant(e);
+        }
     }
 
     fn mentions_variable(&self, e: &Expr) -> bool {

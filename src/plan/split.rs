@@ -28,6 +28,7 @@ use nalgebra::{DMatrix, DVector};
 use super::compiled::{CompiledSystem, Fn1, OutputTerm};
 use super::error::PlanError;
 use super::split_input::{SplitContact, SplitInput, SplitInterval, SplitKind};
+use crate::system::contact::EndSite;
 use crate::numeric::operator::Term as NTerm;
 use crate::numeric::solve::{CheckedLu, DEFAULT_MAX_COND, least_squares};
 use crate::numeric::{
@@ -157,6 +158,9 @@ pub struct SplitProblem {
     /// The method other than `coupled` every discretisation runs
     /// (`split_methods.rs`); `None`: `coupled`.
     pub(super) method: Option<super::split_methods::MethodPlan>,
+    /// The joint root solve's last Jacobian (`split_scalars.rs`), for the
+    /// next level's warm start.
+    pub(super) scalar_jacobian: std::sync::Mutex<Option<DMatrix<f64>>>,
 }
 
 /// A product of two or more operator symbols with its coefficient,
@@ -219,6 +223,9 @@ pub struct Discrete {
     /// are consistent; 0 without side conditions): the answer is no more
     /// accurate than it.
     pub consistency: f64,
+    /// The linear parts of the equations' operators as assembled, when an
+    /// operator range ends at a scalar ([`SplitProblem::operator_in`]).
+    ops: Option<Arc<Vec<Vec<Option<Operator>>>>>,
 }
 
 /// Read-only access for `split_fields.rs` (field sampling), kept apart
@@ -390,6 +397,57 @@ impl SplitProblem {
     }
 }
 
+/// Per equation and unknown, the linear part (identity and single symbols)
+/// of its operator from the symbols' `operators`, and its products of two
+/// or more symbols.
+#[allow(clippy::type_complexity)]
+fn linear_parts(
+    sys: &CompiledSystem,
+    operators: &[Option<Operator>],
+) -> Result<(Vec<Vec<Option<Operator>>>, Vec<Vec<Vec<Product>>>), PlanError> {
+    let n = sys.unknowns.len();
+    let mut ops = Vec::new();
+    let mut words = Vec::new();
+    let defined = |s: usize| {
+        operators
+            .get(s)
+            .cloned()
+            .flatten()
+            .ok_or_else(|| invalid(format!("operator #{s} has no definition")))
+    };
+    for eq in &sys.equations {
+        let mut row = Vec::with_capacity(n);
+        let mut row_words = Vec::with_capacity(n);
+        for p in &eq.lhs {
+            let mut op: Option<Operator> = None;
+            let mut products = Vec::new();
+            for (word, c) in p.terms() {
+                let c = super::compile::rational(c);
+                let piece = match word.as_slice() {
+                    [] => Operator::identity().scaled(c),
+                    [s] => defined(*s)?.scaled(c),
+                    _ => {
+                        for &s in word {
+                            defined(s)?;
+                        }
+                        products.push((c, word.clone()));
+                        continue;
+                    }
+                };
+                op = Some(match op {
+                    Some(o) => o + piece,
+                    None => piece,
+                });
+            }
+            row.push(op);
+            row_words.push(products);
+        }
+        ops.push(row);
+        words.push(row_words);
+    }
+    Ok((ops, words))
+}
+
 fn invalid(s: String) -> PlanError {
     PlanError::Invalid(s)
 }
@@ -432,45 +490,16 @@ impl SplitProblem {
             }
             None => sys.domain,
         };
-        let n = sys.unknowns.len();
-        let mut ops = Vec::new();
-        let mut words = Vec::new();
-        let defined = |s: usize| {
-            sys.operators
-                .get(s)
-                .cloned()
-                .flatten()
-                .ok_or_else(|| invalid(format!("operator #{s} has no definition")))
-        };
-        for eq in &sys.equations {
-            let mut row = Vec::with_capacity(n);
-            let mut row_words = Vec::with_capacity(n);
-            for p in &eq.lhs {
-                let mut op: Option<Operator> = None;
-                let mut products = Vec::new();
-                for (word, c) in p.terms() {
-                    let c = super::compile::rational(c);
-                    let piece = match word.as_slice() {
-                        [] => Operator::identity().scaled(c),
-                        [s] => defined(*s)?.scaled(c),
-                        _ => {
-                            for &s in word {
-                                defined(s)?;
-                            }
-                            products.push((c, word.clone()));
-                            continue;
-                        }
-                    };
-                    op = Some(match op {
-                        Some(o) => o + piece,
-                        None => piece,
-                    });
-                }
-                row.push(op);
-                row_words.push(products);
+        let (ops, words) = linear_parts(&sys, &sys.operators)?;
+        for e in &contact.ends {
+            if let EndSite::Operator { symbol, .. } = e.site
+                && words.iter().flatten().flatten().any(|(_, w)| w.contains(&symbol))
+            {
+                return Err(invalid(format!(
+                    "operator {} has an integration limit with a scalar: it cannot be used in a product of operators",
+                    sys.symbols.get(symbol).map_or("?", String::as_str)
+                )));
             }
-            ops.push(row);
-            words.push(row_words);
         }
         // With unknown scalars, side conditions fix scalars too.
         let fixing = contact.conditions.len()
@@ -498,6 +527,7 @@ impl SplitProblem {
             cache: Default::default(),
             budget: crate::numeric::budget::default_budget(),
             method: None,
+            scalar_jacobian: Default::default(),
         })
     }
 
@@ -529,6 +559,9 @@ impl SplitProblem {
             let (lo, hi) = r.domain.eval(&vars);
             add_break(lo, "a relation's interval end", &mut pts)?;
             add_break(hi, "a relation's interval end", &mut pts)?;
+        }
+        for e in &c.ends {
+            add_break(e.value.eval(&vars, 0.0), "an integration limit", &mut pts)?;
         }
         for (i, s) in c.singulars.iter().enumerate() {
             let z = s.at.eval(&vars, 0.0);
@@ -859,6 +892,8 @@ impl SplitProblem {
             .map(Assembler::new)
             .transpose()
             .map_err(num("assembly"))?;
+        let moved = self.moved_ops(&vars)?;
+        let ops = moved.as_deref().unwrap_or(&self.ops);
         let mut mat = DMatrix::zeros(nrows, ncols);
         let mut rhs = DVector::zeros(nrows);
         let mut r0 = 0;
@@ -870,7 +905,7 @@ impl SplitProblem {
                 rhs[r0 + i] = self.rhs_at(e, &vars, x);
             }
             for j in 0..nu {
-                let op = self.ops[e][j].as_ref();
+                let op = ops[e][j].as_ref();
                 if op.is_none() && self.words[e][j].is_empty() {
                     continue;
                 }
@@ -937,7 +972,7 @@ impl SplitProblem {
             term_eq.push((t.unknown, e));
             rhs[row] = self.rhs_at(e, &vars, t.at);
             for j in 0..nu {
-                let op = self.ops[e][j].as_ref();
+                let op = ops[e][j].as_ref();
                 if op.is_none() && self.words[e][j].is_empty() {
                     continue;
                 }
@@ -1059,7 +1094,8 @@ impl SplitProblem {
             let mut b = DVector::zeros(nrows + nc);
             b.rows_mut(0, nrows).copy_from(&rhs);
             for (i, cond) in self.sys.conditions.iter().enumerate() {
-                let (row, constant) = layout.functional(&cond.terms)?;
+                let terms = self.condition_terms(i, &vars);
+                let (row, constant) = layout.functional(&terms)?;
                 if row.iter().any(|v| !v.is_finite()) {
                     return Err(invalid(format!(
                         "{}: an unknown is not finite where it is taken (a point value at a singular weight?)",
@@ -1087,8 +1123,9 @@ impl SplitProblem {
             .collect::<Result<Vec<f64>, PlanError>>()?;
         let mut residuals = residuals;
         if !side_rows {
-            for cond in &self.sys.conditions {
-                let (row, constant) = layout.functional(&cond.terms)?;
+            for (i, cond) in self.sys.conditions.iter().enumerate() {
+                let terms = self.condition_terms(i, &vars);
+                let (row, constant) = layout.functional(&terms)?;
                 residuals.push(constant + row.dot(&solution) - cond.value);
             }
         }
@@ -1104,7 +1141,100 @@ impl SplitProblem {
             residuals,
             cond,
             consistency,
+            ops: moved,
         })
+    }
+
+    /// The linear parts of the equations' operators at the slot values
+    /// `vars` with every operator range that ends at a scalar
+    /// (`int(x..a)`) ending at its value there; `None` when no operator
+    /// range does (then they are `self.ops`).
+    #[allow(clippy::type_complexity)]
+    fn moved_ops(&self, vars: &[f64]) -> Result<Option<Arc<Vec<Vec<Option<Operator>>>>>, PlanError> {
+        let mut operators = None;
+        for e in &self.contact.ends {
+            let EndSite::Operator { symbol, term } = e.site else {
+                continue;
+            };
+            let name = self.sys.symbols.get(symbol).map_or("?", String::as_str);
+            let v = e.value.eval(vars, 0.0);
+            if !v.is_finite() {
+                return Err(invalid(format!(
+                    "an integration limit of operator {name} is {v}"
+                )));
+            }
+            let ops = operators.get_or_insert_with(|| self.sys.operators.clone());
+            let limits = match ops
+                .get_mut(symbol)
+                .and_then(Option::as_mut)
+                .and_then(|o| o.terms.get_mut(term))
+            {
+                Some((_, NTerm::Integral { limits, .. })) => limits,
+                _ => {
+                    return Err(invalid(format!(
+                        "operator {name} has no integral term #{term} for its limit with a scalar"
+                    )));
+                }
+            };
+            match (limits, e.upper) {
+                (Limits::Upper { b } | Limits::Fixed { b, .. }, true)
+                | (Limits::Lower { a: b } | Limits::Fixed { a: b, .. }, false) => *b = v,
+                _ => {
+                    return Err(invalid(format!(
+                        "operator {name}: its limit with a scalar is the variable end of its range"
+                    )));
+                }
+            }
+        }
+        match operators {
+            Some(o) => Ok(Some(Arc::new(linear_parts(&self.sys, &o)?.0))),
+            None => Ok(None),
+        }
+    }
+
+    /// The linear part of the operator of equation `e` on unknown `j` as
+    /// the discrete solution `d` was assembled with (its ranges ending at
+    /// the scalars' values there).
+    pub fn operator_in<'s>(&'s self, d: &'s Discrete, e: usize, j: usize) -> Option<&'s Operator> {
+        match &d.ops {
+            Some(ops) => ops.get(e).and_then(|r| r.get(j)).and_then(Option::as_ref),
+            None => self.operator(e, j),
+        }
+    }
+
+    /// `terms` (those of the functional whose moving ends `site` picks)
+    /// with every integral that ends at a scalar ending at its value for
+    /// the slot values `vars`.
+    fn moved_terms<'t>(
+        &self,
+        terms: &'t [OutputTerm],
+        site: impl Fn(EndSite) -> Option<usize>,
+        vars: &[f64],
+    ) -> std::borrow::Cow<'t, [OutputTerm]> {
+        let mut out = std::borrow::Cow::Borrowed(terms);
+        for e in &self.contact.ends {
+            let Some(k) = site(e.site) else {
+                continue;
+            };
+            let v = e.value.eval(vars, 0.0);
+            if let Some(OutputTerm::Integral { lower, upper, .. }) = out.to_mut().get_mut(k) {
+                *(if e.upper { upper } else { lower }) = v;
+            }
+        }
+        out
+    }
+
+    /// The terms of side condition `i` at the slot values `vars`
+    /// ([`SplitProblem::moved_terms`]).
+    fn condition_terms(&self, i: usize, vars: &[f64]) -> std::borrow::Cow<'_, [OutputTerm]> {
+        self.moved_terms(
+            &self.sys.conditions[i].terms,
+            |s| match s {
+                EndSite::Condition { condition, term } if condition == i => Some(term),
+                _ => None,
+            },
+            vars,
+        )
     }
 
     /// `asm.matrix_on(op, xs, window)`, remembered across calls: a block
@@ -1137,6 +1267,13 @@ impl SplitProblem {
         }
         key.push(u64::MAX);
         key.extend(xs.iter().map(|x| x.to_bits()));
+        // The ranges (an operator range may end at a scalar).
+        for (_, t) in &op.terms {
+            if let NTerm::Integral { limits, .. } = t {
+                let (lo, hi) = limits.at(f64::NAN);
+                key.extend([lo.to_bits(), hi.to_bits()]);
+            }
+        }
         if let Ok(cache) = self.cache.lock()
             && let Some(m) = cache.get(&key)
         {
@@ -1174,7 +1311,15 @@ impl SplitProblem {
     /// The value of output `o` for a discrete solution: its functional's
     /// row (`Layout::functional`) applied to the coefficients.
     pub fn output(&self, d: &Discrete, o: usize) -> Result<f64, PlanError> {
-        let (row, constant) = d.layout().functional(&self.sys.outputs[o].terms)?;
+        let terms = self.moved_terms(
+            &self.sys.outputs[o].terms,
+            |s| match s {
+                EndSite::Output { output, term } if output == o => Some(term),
+                _ => None,
+            },
+            &d.vars,
+        );
+        let (row, constant) = d.layout().functional(&terms)?;
         Ok(constant + row.dot(&d.solution))
     }
 

@@ -750,7 +750,7 @@ impl<'a> Fields<'a> {
         };
         let b = &self.d.breaks;
         for j in 0..self.problem.sys.unknowns.len() {
-            let op = self.problem.operator(e, j);
+            let op = self.problem.operator_in(self.d, e, j);
             if op.is_none() && !self.problem.has_products_in(e, j) {
                 continue;
             }

@@ -16,7 +16,8 @@ use std::sync::Arc;
 use super::compiled::CompiledSystem;
 use super::error::PlanError;
 use crate::system::Program;
-use crate::system::contact::{Contact, Interval, RExpr, Scalar, SingularKind};
+use crate::system::OperatorDef;
+use crate::system::contact::{Contact, EndSite, Interval, RExpr, Scalar, SingularKind};
 
 /// A real function of the slot values and `x`.
 pub type SlotFn = Arc<dyn Fn(&[f64], f64) -> f64 + Send + Sync>;
@@ -151,6 +152,21 @@ pub struct SplitCondition {
     pub value: RealFn,
 }
 
+/// An integration limit that is a function of the slot values
+/// (`int(x..a)`): the operator system holds the unknowns' interval end
+/// there. For an operator, `site`'s term indexes the compiled
+/// [`crate::numeric::Operator`]'s terms ([`numeric_site`]); for an output
+/// or side condition, its compiled terms.
+#[derive(Clone)]
+pub struct SplitEnd {
+    /// The integral it belongs to.
+    pub site: EndSite,
+    /// The upper limit (`true`) or the lower one.
+    pub upper: bool,
+    /// Its value.
+    pub value: RealFn,
+}
+
 /// The split-domain declarations as numbers and functions (the numeric
 /// counterpart of `Contact`, field for field).
 #[derive(Clone, Default)]
@@ -181,6 +197,8 @@ pub struct SplitContact {
     /// slots (the scalar's own slot unused); `split_end.rs` uses it only
     /// where the solver cannot place the root.
     pub estimates: Vec<Option<RealFn>>,
+    /// Integration limits that use a scalar.
+    pub ends: Vec<SplitEnd>,
 }
 
 impl SplitContact {
@@ -264,6 +282,15 @@ impl SplitContact {
                 .iter()
                 .map(|e| e.as_ref().map(RealFn::from_expr))
                 .collect(),
+            ends: c
+                .ends
+                .iter()
+                .map(|e| SplitEnd {
+                    site: e.site,
+                    upper: e.upper,
+                    value: RealFn::from_expr(&e.value),
+                })
+                .collect(),
         }
     }
 
@@ -293,11 +320,46 @@ impl SplitInput {
     /// Compiles `prog` (a file with split-domain declarations): its
     /// operator system as if it had none, and its declarations.
     pub fn from_program(prog: &Program) -> Result<SplitInput, PlanError> {
+        let mut contact = SplitContact::from_contact(&prog.contact);
+        for e in &mut contact.ends {
+            e.site = numeric_site(prog, e.site)?;
+        }
         Ok(SplitInput {
             sys: CompiledSystem::from_program(&plain(prog), None)?,
-            contact: SplitContact::from_contact(&prog.contact),
+            contact,
         })
     }
+}
+
+/// `site` of a [`crate::system::contact::MovingEnd`] of `prog` with an
+/// operator's term counted among the compiled operator's terms (a
+/// definition's term may compile to none, or to two: the `ln|c|` part of
+/// a logarithmic kernel is a term of its own); outputs' and conditions'
+/// sites are unchanged.
+pub fn numeric_site(prog: &Program, site: EndSite) -> Result<EndSite, PlanError> {
+    let EndSite::Operator { symbol, term } = site else {
+        return Ok(site);
+    };
+    let def = prog
+        .operator(symbol)
+        .ok_or_else(|| PlanError::Invalid(format!("operator #{symbol} has no definition")))?;
+    let domain = prog
+        .contact
+        .unknown_domains
+        .iter()
+        .flatten()
+        .next()
+        .map(|d| d.eval(&[]))
+        .ok_or_else(|| {
+            PlanError::Invalid("an integration limit with a scalar needs the unknowns' interval".into())
+        })?;
+    let name = prog.symbols.get(symbol).cloned().unwrap_or_default();
+    let before = OperatorDef {
+        symbol,
+        terms: def.terms[..term.min(def.terms.len())].to_vec(),
+    };
+    let term = super::operators::plan_operator(&before, &name, domain)?.len();
+    Ok(EndSite::Operator { symbol, term })
 }
 
 /// `prog` without its split-domain declarations: the operator system the

@@ -553,7 +553,7 @@ fn product_notes(p: &Program) -> Vec<String> {
     }
     if !p.side_conditions.is_empty() {
         out.push(format!(
-            "{} side condition{} ({}): `solve` adds {} as row{} of the discrete system and solves the equations and conditions together by least squares, not by the eliminations shown here",
+            "{} side condition{} ({}): `solve` adds {} to the discrete system, not by the eliminations shown here ({} solved with the equations by least squares; in a file with unknown scalars, as conditions that fix the scalars)",
             p.side_conditions.len(),
             if p.side_conditions.len() == 1 { "" } else { "s" },
             p.side_conditions
@@ -562,7 +562,7 @@ fn product_notes(p: &Program) -> Vec<String> {
                 .collect::<Vec<_>>()
                 .join("; "),
             if p.side_conditions.len() == 1 { "it" } else { "them" },
-            if p.side_conditions.len() == 1 { "" } else { "s" },
+            if p.side_conditions.len() == 1 { "as a row" } else { "as rows" },
         ));
     }
     out

@@ -13,7 +13,7 @@ use num_rational::BigRational;
 use crate::algebra::mpoly::MPoly;
 use crate::algebra::ncpoly::NcPoly;
 use crate::system::contact::{Interval, RExpr};
-use crate::system::{Equation, Program};
+use crate::system::{Equation, Expr, FunctionalTerm, Program};
 
 /// One subinterval and its system.
 #[derive(Clone, Debug)]
@@ -114,6 +114,10 @@ pub fn pieces(p: &Program) -> Result<Vec<Piece>, PieceError> {
         program.equations = eqs.iter().map(|&e| p.equations[e].clone()).collect();
         let mut substituted = Vec::new();
         let mut removed = vec![false; p.unknowns.len()];
+        // What each unknown is on this piece: itself, or a factor times
+        // another (for the side conditions, printed in the piece's terms).
+        let mut through: Vec<(Option<BigRational>, usize)> =
+            (0..p.unknowns.len()).map(|u| (None, u)).collect();
         for r in c.relations.iter().filter(|r| holds(&r.domain, m)) {
             let factor = match &r.coeff {
                 RExpr::Const(q) => Factor::Exact(q.clone()),
@@ -141,6 +145,10 @@ pub fn pieces(p: &Program) -> Result<Vec<Piece>, PieceError> {
                 eq.lhs[r.unknown] = NcPoly::zero();
             }
             removed[r.unknown] = true;
+            through[r.unknown] = match &factor {
+                Factor::Exact(q) => (Some(q.clone()), r.other),
+                Factor::Symbol(_) => (None, usize::MAX),
+            };
             substituted.push(format!(
                 "{} = {}*{}",
                 p.unknowns[r.unknown],
@@ -157,6 +165,30 @@ pub fn pieces(p: &Program) -> Result<Vec<Piece>, PieceError> {
                 lhs: keep.iter().map(|&u| eq.lhs[u].clone()).collect(),
                 rhs: eq.rhs,
                 written: eq.written,
+            })
+            .collect();
+        // Side conditions over the piece's unknowns: a substituted unknown
+        // replaced by its relation (a condition through a relation with a
+        // parameter's factor is left out of the piece).
+        let index = |u: usize| keep.iter().position(|&k| k == u);
+        program.side_conditions = p
+            .side_conditions
+            .iter()
+            .filter_map(|sc| {
+                let mut sc = sc.clone();
+                for t in &mut sc.terms {
+                    let (FunctionalTerm::Integral { coeff, unknown, .. }
+                    | FunctionalTerm::Point { coeff, unknown, .. }) = t
+                    else {
+                        continue;
+                    };
+                    let (f, other) = through.get(*unknown).cloned()?;
+                    if let Some(f) = f {
+                        *coeff = Expr::Mul(Box::new(Expr::Const(f)), Box::new(coeff.clone()));
+                    }
+                    *unknown = index(other)?;
+                }
+                Some(sc)
             })
             .collect();
         program.directives.clear();

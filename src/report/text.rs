@@ -181,7 +181,7 @@ pub fn end_grading_line(c: &crate::plan::split_ends::EndCheck) -> String {
         .join(" and ");
     let why = match c.worst() {
         Some(w) => format!(
-            ": on level {} grading it moved {} by {:.1e}, {} its estimate {:.1e} (an undeclared singular behaviour there; declaring it with `singular … at {}` says so in the file)",
+            ": on level {} grading it moved {} by {:.1e}, {} its estimate {:.1e} (an undeclared singular behaviour there: a power `|x - {}|^e` can be declared with `singular … at {}`; a logarithmic one, such as the cone's pressure at its tip, cannot and stays graded so)",
             c.level,
             w.name,
             w.change,
@@ -191,6 +191,7 @@ pub fn end_grading_line(c: &crate::plan::split_ends::EndCheck) -> String {
                 "beyond".to_string()
             },
             w.estimate,
+            c.ends.first().copied().unwrap_or(f64::NAN),
             c.ends.first().copied().unwrap_or(f64::NAN)
         ),
         None => String::new(),

@@ -24,10 +24,10 @@ pub use crate::plan::compiled::{
     CompiledCondition, CompiledEquation, CompiledOutput, CompiledSystem, OutputTerm, words,
 };
 pub use crate::plan::split_input::{
-    RealFn, SplitCondition, SplitContact, SplitInequality, SplitInput, SplitInterval, SplitKind,
-    SplitLinTerm, SplitRelation, SplitSingular,
+    RealFn, SplitCondition, SplitContact, SplitEnd, SplitInequality, SplitInput, SplitInterval,
+    SplitKind, SplitLinTerm, SplitRelation, SplitSingular,
 };
-pub use crate::system::contact::{RFunc, Scalar, real_pow};
+pub use crate::system::contact::{EndSite, RFunc, Scalar, real_pow};
 pub use crate::system::expr::{acot, erf, gamma};
 
 /// The highest refinement level `--max-level` accepts (levels are numbered

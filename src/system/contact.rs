@@ -335,6 +335,48 @@ pub struct Contact {
     /// e`), a function of the real parameters; the solver uses it only
     /// where it cannot place the root itself.
     pub estimates: Vec<Option<RExpr>>,
+    /// Integration limits that use an unknown scalar (`int(x..a)` in an
+    /// operator, `int(0..a)` in an output or side condition): the
+    /// operator system holds the unknowns' interval end there, and the
+    /// split solver integrates to the limit's value at the scalars.
+    pub ends: Vec<MovingEnd>,
+}
+
+/// Where a [`MovingEnd`] sits.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum EndSite {
+    /// Term `term` of the definition of operator symbol `symbol`.
+    Operator {
+        /// Index into `Program::symbols`.
+        symbol: usize,
+        /// Index into the definition's terms.
+        term: usize,
+    },
+    /// Term `term` of output `output`.
+    Output {
+        /// Index into `Program::outputs`.
+        output: usize,
+        /// Index into its terms.
+        term: usize,
+    },
+    /// Term `term` of side condition `condition`.
+    Condition {
+        /// Index into `Program::side_conditions`.
+        condition: usize,
+        /// Index into its terms.
+        term: usize,
+    },
+}
+
+/// An integration limit that is a function of the slots.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MovingEnd {
+    /// The integral it belongs to.
+    pub site: EndSite,
+    /// The upper limit (`true`) or the lower one.
+    pub upper: bool,
+    /// Its value.
+    pub value: RExpr,
 }
 
 impl Contact {
@@ -345,6 +387,7 @@ impl Contact {
             && self.inequalities.is_empty()
             && self.singulars.is_empty()
             && self.conditions.is_empty()
+            && self.ends.is_empty()
             && self.equation_domains.iter().all(Option::is_none))
     }
 

@@ -164,6 +164,7 @@ pub fn input() -> Result<SplitInput, PlanError> {
         coefficients: Vec::new(),
         conditions: Vec::new(),
         estimates: Vec::new(),
+        ends: Vec::new(),
     };
     let sys = system()?;
     Ok(SplitInput { sys, contact })

@@ -180,6 +180,7 @@ pub fn input() -> Result<SplitInput, PlanError> {
             value: RealFn::new(condition_1_value),
         }],
         estimates: vec![None],
+        ends: Vec::new(),
     };
     let sys = system()?;
     Ok(SplitInput { sys, contact })

@@ -227,6 +227,7 @@ pub fn input() -> Result<SplitInput, PlanError> {
             value: RealFn::new(const_0),
         }],
         estimates: vec![None, None],
+        ends: Vec::new(),
     };
     let sys = system()?;
     Ok(SplitInput { sys, contact })
