@@ -189,18 +189,22 @@ pub fn input() -> Result<SplitInput, PlanError> {
             },
         ],
         reals: Vec::new(),
-        unknown_domains: vec![Some(SplitInterval {
-            lo: RealFn::new(const_0),
-            hi: RealFn::new(const_2),
-            lo_closed: true,
-            hi_closed: true,
-        })],
-        equation_domains: vec![Some(SplitInterval {
-            lo: RealFn::new(const_0),
-            hi: RealFn::new(slot_a),
-            lo_closed: true,
-            hi_closed: false,
-        })],
+        unknown_domains: vec![
+            Some(SplitInterval {
+                lo: RealFn::new(const_0),
+                hi: RealFn::new(const_2),
+                lo_closed: true,
+                hi_closed: true,
+            }),
+        ],
+        equation_domains: vec![
+            Some(SplitInterval {
+                lo: RealFn::new(const_0),
+                hi: RealFn::new(slot_a),
+                lo_closed: true,
+                hi_closed: false,
+            }),
+        ],
         rhs: vec![Some(RealFn::new(equation_1_rhs))],
         relations: vec![SplitRelation {
             unknown: 0,
@@ -253,10 +257,7 @@ pub fn input() -> Result<SplitInput, PlanError> {
                 value: RealFn::new(slot_a),
             },
             SplitEnd {
-                site: EndSite::Condition {
-                    condition: 0,
-                    term: 0,
-                },
+                site: EndSite::Condition { condition: 0, term: 0 },
                 upper: true,
                 value: RealFn::new(slot_a),
             },
