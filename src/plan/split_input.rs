@@ -155,7 +155,7 @@ pub struct SplitCondition {
 /// An integration limit that is a function of the slot values
 /// (`int(x..a)`): the operator system holds the unknowns' interval end
 /// there. For an operator, `site`'s term indexes the compiled
-/// [`crate::numeric::Operator`]'s terms ([`numeric_site`]); for an output
+/// [`crate::numeric::Operator`]'s terms (`numeric_site`); for an output
 /// or side condition, its compiled terms.
 #[derive(Clone)]
 pub struct SplitEnd {

@@ -342,7 +342,7 @@ pub struct Contact {
     pub ends: Vec<MovingEnd>,
 }
 
-/// Where a [`MovingEnd`] sits.
+/// Where a `MovingEnd` (a scalar integration limit) sits.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum EndSite {
     /// Term `term` of the definition of operator symbol `symbol`.
