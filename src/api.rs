@@ -572,11 +572,13 @@ pub struct SolveOptions {
     /// The unknown the eliminations solve for (default: the file's `solve
     /// for`, else the first unknown).
     pub unknown: Option<String>,
-    /// On a split domain, the unknowns' tolerance: each unknown's largest
-    /// pointwise estimate on the output grid within
-    /// `field_tol·max(1, size)` (`--field-tol`); `None` (the default):
-    /// the unknowns are reported with their estimates but do not enter
-    /// convergence.
+    /// On a split domain, the unknowns' tolerance: convergence also needs
+    /// each unknown's largest pointwise estimate on the output grid
+    /// within `field_tol·max(1, size)` (`--field-tol`). `None` (the
+    /// default): the larger of `tol` and `1e-6`
+    /// ([`crate::plan::split_solve::default_field_tol`]);
+    /// `Some(f64::INFINITY)` (`--field-tol inf`): the unknowns are
+    /// reported with their estimates but do not enter convergence.
     pub field_tol: Option<f64>,
 }
 

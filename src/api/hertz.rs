@@ -63,6 +63,7 @@ fn options(tol: f64) -> SplitOptions {
     SplitOptions {
         tol,
         max_level: DEFAULT_MAX_LEVEL,
+        field_tol: crate::plan::split_solve::default_field_tol(tol),
         ..SplitOptions::default()
     }
 }

@@ -167,7 +167,7 @@ pub struct SolveFlags {
     /// Refine until every error estimate (absolute, from successive levels) is within tol·max(1, |value|): absolute tolerance tol for values up to 1, relative above (finite, > 0).
     #[arg(long, default_value = "1e-10", allow_hyphen_values = true)]
     pub tol: f64,
-    /// Split-domain files: refine also until every unknown's largest pointwise estimate on the output grid is within field-tol·max(1, size), its size being its largest |u/weight| there (finite, > 0; e.g. 1e-6). Without it the unknowns are reported with their estimates but do not decide convergence. Ends where the behaviour is unresolved (graded by the end check) are left out of the grid.
+    /// Split-domain files: refine also until every unknown's largest pointwise estimate on the output grid is within field-tol·max(1, size), its size being its largest |u/weight| there (> 0; default: the larger of --tol and 1e-6). `--field-tol inf`: the unknowns are reported with their estimates but do not decide convergence. Points where the behaviour is not resolved pointwise (ends graded by the end check, points a `singular` declaration grades toward, pieces narrower than 1e-4 of the interval) are left out of the grid, each with its reason.
     #[arg(long, allow_hyphen_values = true)]
     pub field_tol: Option<f64>,
     /// Highest refinement level tried (levels are numbered from 0; at most 14).

@@ -966,6 +966,12 @@ fn solve_inner(
     let settings = SolveSettings {
         tol: opts.tol,
         max_level: opts.max_level,
+        // The unknowns' tolerance of `opts` (infinite: out of convergence).
+        field_tol: Some(if opts.fields_converge {
+            opts.field_tol
+        } else {
+            f64::INFINITY
+        }),
         grid,
         max_memory: budget,
         ..SolveSettings::default()

@@ -143,6 +143,13 @@ impl CheckedLu {
         Ok(y)
     }
 
+    /// Solves `Aᵀ x = b` (`A = S·D⁻¹` with `S` the equilibrated matrix
+    /// factorised, so `x = S⁻ᵀ·D·b`).
+    pub fn solve_transpose(&self, b: &DVector<f64>) -> DVector<f64> {
+        let db = DVector::from_iterator(b.len(), b.iter().zip(&self.scale).map(|(v, s)| v * s));
+        self.lu.solve_transpose(&db)
+    }
+
     /// Solves `A X = B` column by column.
     pub fn solve_matrix(&self, b: &DMatrix<f64>) -> Result<DMatrix<f64>, NumericError> {
         let mut out = DMatrix::zeros(b.nrows(), b.ncols());

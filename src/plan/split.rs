@@ -226,6 +226,40 @@ pub struct Discrete {
     /// The linear parts of the equations' operators as assembled, when an
     /// operator range ends at a scalar ([`SplitProblem::operator_in`]).
     ops: Option<Arc<Vec<Vec<Option<Operator>>>>>,
+    /// The factors and residual slack of the level's square system, for
+    /// the adjoint rounding bound of a point value (`split_solve.rs`);
+    /// `None` for a least-squares or method solve, or once dropped.
+    pub(super) rounding: Option<Box<Rounding>>,
+}
+
+/// What the adjoint rounding bound of a linear functional `l` of the
+/// solution `y` of `A y = b` needs: the factors of `A` and the slack
+/// `|r| + 32·ε·(|A||y| + |b|)` (`r = b − A y` as computed), so that
+/// `|A⁻ᵀl|ᵀ·slack` bounds the change of `lᵀy` from the rounding of the
+/// solve and of the assembled entries.
+pub(super) struct Rounding {
+    pub(super) lu: CheckedLu,
+    pub(super) slack: DVector<f64>,
+}
+
+impl Rounding {
+    fn new(a: &DMatrix<f64>, b: &DVector<f64>, y: &DVector<f64>, lu: CheckedLu) -> Rounding {
+        let eta = crate::numeric::solve::ROUNDING_GROWTH * f64::EPSILON;
+        let r = b - a * y;
+        let mut slack = DVector::from_iterator(
+            b.len(),
+            r.iter().zip(b.iter()).map(|(r, b)| r.abs() + eta * b.abs()),
+        );
+        for (j, yj) in y.iter().enumerate() {
+            let yj = eta * yj.abs();
+            if yj != 0.0 {
+                for (s, aij) in slack.iter_mut().zip(a.column(j).iter()) {
+                    *s += aij.abs() * yj;
+                }
+            }
+        }
+        Rounding { lu, slack }
+    }
 }
 
 /// Read-only access for `split_fields.rs` (field sampling), kept apart
@@ -268,19 +302,24 @@ impl SplitProblem {
     /// undeclared end singularity of an unknown meets a panel of full
     /// degree.
     pub fn ungraded_ends(&self, scalars: &[f64]) -> Vec<f64> {
-        let vars = self.contact.values(scalars);
         let (a, b) = self.domain;
-        let declared: Vec<f64> = self
-            .contact
+        let declared = self.declared_points(&self.contact.values(scalars));
+        [a, b]
+            .into_iter()
+            .filter(|&z| z.is_finite() && !declared.contains(&z) && !self.graded_ends.contains(&z))
+            .collect()
+    }
+
+    /// The points that `singular` declarations grade the mesh toward with
+    /// the full layers, at the slot values `vars` (the plain end weights
+    /// the automatic choice installed are not among them).
+    pub fn declared_points(&self, vars: &[f64]) -> Vec<f64> {
+        self.contact
             .singulars
             .iter()
             .enumerate()
             .filter(|(i, _)| !self.plain_ends.contains(i))
-            .map(|(_, s)| s.at.eval(&vars, 0.0))
-            .collect();
-        [a, b]
-            .into_iter()
-            .filter(|&z| z.is_finite() && !declared.contains(&z) && !self.graded_ends.contains(&z))
+            .map(|(_, s)| s.at.eval(vars, 0.0))
             .collect()
     }
 
@@ -1065,6 +1104,7 @@ impl SplitProblem {
             terms: &terms,
             offsets: &offsets,
         };
+        let mut rounding = None;
         let (solution, cond, consistency) = if let Some(m) = &self.method {
             let eq_rows = points.iter().map(Vec::len).collect();
             m.solve(
@@ -1082,11 +1122,10 @@ impl SplitProblem {
             )?
         } else if self.sys.conditions.is_empty() || !side_rows {
             let lu = CheckedLu::new(&mat, DEFAULT_MAX_COND).map_err(num("split-domain system"))?;
-            (
-                lu.solve(&rhs).map_err(num("split-domain system"))?,
-                lu.cond(),
-                0.0,
-            )
+            let y = lu.solve(&rhs).map_err(num("split-domain system"))?;
+            let cond = lu.cond();
+            rounding = Some(Box::new(Rounding::new(&mat, &rhs, &y, lu)));
+            (y, cond, 0.0)
         } else {
             let nc = self.sys.conditions.len();
             let mut big = DMatrix::zeros(nrows + nc, ncols);
@@ -1142,6 +1181,7 @@ impl SplitProblem {
             cond,
             consistency,
             ops: moved,
+            rounding,
         })
     }
 

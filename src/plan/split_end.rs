@@ -538,6 +538,7 @@ pub fn answer_at_end(
             unknowns: Vec::new(),
             sizes: Vec::new(),
             left_out: Vec::new(),
+            floors: Vec::new(),
         };
         // Each output's own level estimate.
         let noise: Vec<f64> = (0..n_out)
@@ -610,7 +611,12 @@ pub fn answer_at_end(
                 &this,
                 0.0,
                 false,
-                opts.tol,
+                // The unknowns are not measured on this ladder: they do
+                // not enter its convergence.
+                &SplitOptions {
+                    fields_converge: false,
+                    ..*opts
+                },
                 k + 1,
                 0.0,
             );

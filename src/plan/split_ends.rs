@@ -314,6 +314,7 @@ pub(super) fn check(
             unknowns: Vec::new(),
             sizes: Vec::new(),
             left_out: Vec::new(),
+            floors: Vec::new(),
         }];
         let (x, slope, d) = find_scalar(problem, lvl, &warm, opts.tol)?;
         (vec![x], slope, d)
@@ -329,6 +330,7 @@ pub(super) fn check(
         unknowns: Vec::new(),
         sizes: Vec::new(),
         left_out: Vec::new(),
+        floors: Vec::new(),
     };
     Ok(Verdict::Climb {
         level: Box::new(level),

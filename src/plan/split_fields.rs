@@ -209,11 +209,26 @@ pub enum LeftOutReason {
     /// Within the scalars' estimate of an end that moves with them: the
     /// point's side is not known.
     MovingEnd,
+    /// A point a `singular` declaration grades the mesh toward (with the
+    /// full layers), where the value is finite: the limit of the behaviour
+    /// declared there, which the collocation does not resolve pointwise
+    /// (the full-slip Hertz pressure declared `~ x^0` at the centre goes
+    /// like `x^(−μγ)` and is infinite there).
+    DeclaredPoint,
+    /// A point on a piece (between breakpoints) narrower than
+    /// [`THIN_PIECE`] of the unknowns' interval: the grading layers of
+    /// its ends fill it, and its point values are not resolved (see
+    /// [`LevelFields::on_grid`]).
+    ThinPiece,
     /// The value is not finite.
     NotFinite,
     /// The estimate is not finite (a level that has none).
     NoEstimate,
 }
+
+/// The width, relative to the unknowns' interval, below which a piece's
+/// points leave the output grid ([`LeftOutReason::ThinPiece`]).
+pub const THIN_PIECE: f64 = 1e-4;
 
 impl<'a> LevelFields<'a> {
     /// The fields of `s`'s last two levels, each unknown's estimate
@@ -294,6 +309,22 @@ impl<'a> LevelFields<'a> {
     /// open interval converge. The estimates then hold on the half-open or
     /// open interval, and [`GridField::left_out`] (the report's
     /// `left_out` of each unknown) names every point left out and why.
+    /// **Thin pieces.** So are the points on a piece narrower than
+    /// [`THIN_PIECE`] of the interval (a stick zone `[0, c)` with a tiny
+    /// `c`): the mesh graded toward its ends fills it with panels the
+    /// operators see only through their widths, so its point values carry
+    /// rounding amplified by about the inverse width, growing with the
+    /// level. Measured on the torsion punch (`examples/punch_torsion.lmx`,
+    /// μ = 1) at `c = 3.2e-4, 1.4e-5, 6.0e-7` (w = 6, 8, 10): `p(0)` off by
+    /// 1.5e-10, 1.1e-8 and 5.1e-7 (the last on level 6, 1.1e-7 on level 4),
+    /// its adjoint rounding bound 1.9e-8, 4.3e-7 and 2.0e-5, every other
+    /// grid point's below 1e-9.
+    ///
+    /// **Declared points.** So are the points a `singular` declaration
+    /// grades the mesh toward with the full layers (where the value is
+    /// finite; [`LeftOutReason::DeclaredPoint`]): the same grading, so the
+    /// same limit, whatever the behaviour declared (a declared `~ x^0`
+    /// grades the full-slip pressure's centre, where it is infinite).
     /// A plain end the automatic weights chose (few layers,
     /// [`super::split::PLAIN_END_LAYERS`]) stays on the grid: the flat
     /// punch's `p(0)` converges.
@@ -332,6 +363,7 @@ impl<'a> LevelFields<'a> {
                     .map(|&e| (e, self.scalar_error, LeftOutReason::MovingEnd)),
             );
         }
+        let declared = p.declared_points(&d.vars);
         let mut g = GridField::default();
         for k in 0..n {
             let t = a + (b - a) * k as f64 / (n - 1) as f64;
@@ -345,11 +377,24 @@ impl<'a> LevelFields<'a> {
                 Approach::Above
             };
             let v = self.value(u, t, side)?;
-            if !v.value.is_finite() || (skip_unestimated && !v.error.is_finite()) {
-                let reason = if v.value.is_finite() {
-                    LeftOutReason::NoEstimate
-                } else {
+            let at_declared = declared.iter().any(|&e| (t - e).abs() <= ulps(e));
+            let thin = self
+                .last
+                .piece(t, side)
+                .is_ok_and(|k| d.breaks[k + 1] - d.breaks[k] < THIN_PIECE * (hi - lo));
+            if !v.value.is_finite()
+                || at_declared
+                || thin
+                || (skip_unestimated && !v.error.is_finite())
+            {
+                let reason = if !v.value.is_finite() {
                     LeftOutReason::NotFinite
+                } else if at_declared {
+                    LeftOutReason::DeclaredPoint
+                } else if thin {
+                    LeftOutReason::ThinPiece
+                } else {
+                    LeftOutReason::NoEstimate
                 };
                 g.left_out.push(LeftOut { x: t, reason });
                 continue;

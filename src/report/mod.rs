@@ -113,8 +113,9 @@ pub struct SolveSettings {
     /// [`crate::numeric::budget`]).
     pub max_memory: Option<u64>,
     /// The unknowns' tolerance on a split domain (`--field-tol`,
-    /// [`crate::plan::SplitOptions::field_tol`]); `None`: the unknowns do
-    /// not enter convergence.
+    /// [`crate::plan::SplitOptions::field_tol`]); `None`: the larger of
+    /// `tol` and `1e-6` ([`crate::plan::split_solve::default_field_tol`]);
+    /// infinite: the unknowns do not enter convergence.
     pub field_tol: Option<f64>,
 }
 
@@ -145,10 +146,10 @@ impl SolveSettings {
             )));
         }
         if let Some(ft) = self.field_tol
-            && !(ft > 0.0 && ft.is_finite())
+            && (ft.is_nan() || ft <= 0.0)
         {
             return Err(PlanError::Invalid(format!(
-                "--field-tol {ft}: the tolerance must be a finite number > 0, e.g. 1e-6"
+                "--field-tol {ft}: the tolerance must be a number > 0, e.g. 1e-6 (inf: the unknowns do not decide convergence)"
             )));
         }
         if self.max_level == 0 || self.max_level > MAX_LEVEL {
@@ -202,15 +203,20 @@ pub fn solve_split_solution(
     s: &SolveSettings,
 ) -> Result<(Report, SplitSolution), PlanError> {
     s.check()?;
+    let field_tol = s
+        .field_tol
+        .unwrap_or_else(|| crate::plan::split_solve::default_field_tol(s.tol));
     let opts = SplitOptions {
         tol: s.tol,
         max_level: s.max_level,
         grid: s.grid,
         method: s.method.unwrap_or(Method::Coupled),
-        fields_converge: s.field_tol.is_some(),
-        field_tol: s
-            .field_tol
-            .unwrap_or(crate::plan::split_solve::DEFAULT_FIELD_TOL),
+        fields_converge: field_tol.is_finite(),
+        field_tol: if field_tol.is_finite() {
+            field_tol
+        } else {
+            crate::plan::split_solve::DEFAULT_FIELD_TOL
+        },
     };
     let sol = crate::plan::split_solve::solve_split_within(input, &opts, s.max_memory)?;
     let r = from_split(&sol, s.grid)?;
