@@ -248,3 +248,84 @@ fn cattaneo_mindlin_fields_are_bounded_on_the_open_interval() {
     );
     assert!(compared >= 190, "only {compared} finite estimates compared");
 }
+
+/// The unknowns' estimates that decide convergence are taken on the
+/// default grid whatever grid the report asks for: the `hertz` front
+/// (two report points) and the library's `api::hertz_report` (101) climb
+/// the same levels to the same answer.
+#[test]
+fn the_report_grid_does_not_decide_convergence() {
+    use lambdamat::api::{Given, HertzOptions, hertz_report};
+    for (nu, mu) in [(0.3, 0.5), (0.25, 0.1801)] {
+        let front = lambdamat::hertz::front::solve(nu, Given::Mu(mu), &SplitOptions::default())
+            .expect("solves");
+        for grid in [2, 101] {
+            let api = hertz_report(
+                nu,
+                Given::Mu(mu),
+                &HertzOptions {
+                    grid,
+                    ..HertzOptions::default()
+                },
+            )
+            .expect("solves");
+            let j: serde_json::Value = serde_json::from_str(&api.to_json()).expect("json");
+            assert_eq!(
+                j["levels"].as_u64(),
+                Some(front.levels as u64),
+                "ν {nu}, μ {mu}, grid {grid}"
+            );
+            assert_eq!(j["converged"], true);
+            assert_eq!(api.c(), front.c, "ν {nu}, μ {mu}, grid {grid}");
+        }
+    }
+}
+
+/// Where `32·ε·κ` would decide a field's estimate, the adjoint rounding
+/// bound replaces it and still bounds the true error: the torsion punch
+/// at w = 10 (`c = 6.0e-7`, κ about `1e10` from the grading toward `c`),
+/// whose pressure is the flat punch's, `p = (2/π)/√(1 − x²)`; the thin
+/// stick zone `[0, c)` leaves the grid.
+#[test]
+fn the_adjoint_rounding_bound_bounds_the_pressure_beside_a_thin_stick_zone() {
+    let path = "examples/punch_torsion.lmx";
+    let src = std::fs::read_to_string(path)
+        .expect("example")
+        .replace("param w  = 2 ", "param w  = 10 ");
+    assert!(src.contains("param w  = 10 "));
+    let prog = parse_program(&src, path).expect("parses");
+    let s = solve_split_fields(&prog, &SplitOptions::default()).expect("solves");
+    let r = &s.report;
+    assert!(r.converged, "estimate {:.1e}", r.error_estimate);
+    assert!(r.cond > 1e9, "κ {:.1e}", r.cond);
+    let lf = LevelFields::new(&s).expect("fields");
+    let p = s
+        .problem
+        .sys
+        .unknowns
+        .iter()
+        .position(|u| u == "p")
+        .expect("p");
+    let e = &r.unknowns[p];
+    // The adjoint bound ran: the floor is far below 32·ε·κ·max(1, size).
+    assert!(
+        e.floor < 1e-3 * 32.0 * f64::EPSILON * r.cond * e.size.max(1.0),
+        "floor {:.1e}, κ {:.1e}",
+        e.floor,
+        r.cond
+    );
+    let g = lf.on_grid(p, 101, true).expect("grid");
+    assert!(
+        g.left_out
+            .iter()
+            .any(|l| l.reason == LeftOutReason::ThinPiece && l.x == 0.0)
+    );
+    assert!(g.x.len() >= 99);
+    for ((x, v), err) in g.x.iter().zip(&g.values).zip(&g.errors) {
+        let exact = 2.0 / PI / (1.0 - x * x).sqrt();
+        assert!(
+            (v - exact).abs() <= *err,
+            "p({x}) = {v} ± {err:.1e}, exact {exact}"
+        );
+    }
+}

@@ -209,7 +209,10 @@ pub fn solve_split_solution(
     let opts = SplitOptions {
         tol: s.tol,
         max_level: s.max_level,
-        grid: s.grid,
+        // The unknowns' estimates that decide convergence are taken on at
+        // least the default grid, so that a coarser report (the `hertz`
+        // front's two points) converges as the default one does.
+        grid: s.grid.max(GRID_POINTS),
         method: s.method.unwrap_or(Method::Coupled),
         fields_converge: field_tol.is_finite(),
         field_tol: if field_tol.is_finite() {
