@@ -389,3 +389,87 @@ fn two_admissible_roots_of_the_conditions_are_refused_naming_both() {
         );
     }
 }
+
+/// JKR adhesion at a given tensile depth, `delta = -1/10`, has two
+/// equilibria with one unknown scalar: `delta = a^2 - (pi/2) C sqrt(a)`
+/// falls and then rises in `a`. The single-scalar search refuses with
+/// exit 3 naming both; a range narrowed to either one returns it, equal
+/// to the closed form to 1e-9 and within its estimate.
+#[test]
+fn two_admissible_roots_of_one_scalar_are_refused_and_each_can_be_selected() {
+    let file = "examples/contact/jkr_indentation.lmx";
+    let (c, delta) = (0.25f64, -0.1f64);
+    let depth = |a: f64| a * a - std::f64::consts::PI / 2.0 * c * a.sqrt() - delta;
+    let root = |mut lo: f64, mut hi: f64| {
+        for _ in 0..200 {
+            let m = 0.5 * (lo + hi);
+            if (depth(m) > 0.0) == (depth(lo) > 0.0) {
+                lo = m;
+            } else {
+                hi = m;
+            }
+        }
+        lo
+    };
+    // The minimum of the depth: sqrt(a)^3 = pi C/8.
+    let turn = (std::f64::consts::PI * c / 8.0).powf(2.0 / 3.0);
+    let roots = [root(1e-12, turn), root(turn, 2.0)];
+    assert!(roots[0] < 0.2 && roots[1] > 0.2, "{roots:?}");
+
+    let out = lambdamat()
+        .args(["solve", file, "--set", "delta=-1/10"])
+        .output()
+        .expect("runs");
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(3), "{err}");
+    assert!(out.stdout.is_empty());
+    assert!(
+        err.contains("the condition for a has 2 admissible roots in (0, 2)")
+            && err.contains("narrow the range in `scalar a in (lo, hi)`"),
+        "{err}"
+    );
+    // Each root is named, to the accuracy of the first level.
+    let named: Vec<f64> = err
+        .split("a = ")
+        .skip(1)
+        .filter_map(|t| t.split([',', ';']).next()?.trim().parse().ok())
+        .collect();
+    assert_eq!(named.len(), 2, "{err}");
+    for (n, r) in named.iter().zip(roots) {
+        assert!((n - r).abs() < 1e-9, "named {n}, closed form {r}");
+    }
+
+    // The range, with parameter ends, narrowed to each root in turn.
+    let text = std::fs::read_to_string(file).expect("reads");
+    let line = "scalar a in (0, 2)";
+    assert!(text.contains(line));
+    let src = text.replace(
+        line,
+        "param amin = 0\nparam amax = 2\nscalar a in (amin, amax)",
+    );
+    let f = lmx_file(&src);
+    let path = f.path().to_str().expect("utf-8");
+    for (range, exact) in [
+        (["amax=1/5", "amin=0"], roots[0]),
+        (["amin=1/5", "amax=2"], roots[1]),
+    ] {
+        let j = json(&[
+            "solve",
+            path,
+            "--set",
+            "delta=-1/10",
+            "--set",
+            range[0],
+            "--set",
+            range[1],
+        ]);
+        assert_eq!(j["converged"], true, "{range:?}");
+        let a = j["scalars"]["a"].as_f64().expect("a");
+        let e = j["error_estimates"]["a"].as_f64().expect("estimate");
+        let error = (a - exact).abs();
+        assert!(
+            error <= 1e-9 && error <= e + 8.0 * f64::EPSILON,
+            "{range:?}: a = {a} ± {e}, closed form {exact}"
+        );
+    }
+}
