@@ -533,3 +533,25 @@ fn a_logarithmic_end_is_declared_in_any_spelling() {
     }
     assert!(bits.windows(2).all(|w| w[0] == w[1]), "{bits:?}");
 }
+
+/// An unknown on an interval that ends at an unknown scalar is refused at
+/// the scalar (exit 2), saying how to write it on a fixed interval.
+#[test]
+fn an_unknown_interval_ending_at_a_scalar_is_an_input_error() {
+    let sphere =
+        std::fs::read_to_string("examples/contact/sphere_indentation.lmx").expect("source");
+    let line = sphere
+        .lines()
+        .position(|l| l.starts_with("unknown p on [0, 2]"))
+        .expect("the unknown's declaration")
+        + 1;
+    let out = run(&sphere.replace("unknown p on [0, 2]", "unknown p on [0, a]"));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("an unknown's interval cannot end at an unknown scalar")
+            && err.contains(&format!(":{line}:18]"))
+            && err.contains("`relation p = 0 on [a, 2]`"),
+        "{err}"
+    );
+}

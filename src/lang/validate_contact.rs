@@ -435,6 +435,24 @@ impl Validator {
         self.real_expr(&i.hi, false);
     }
 
+    /// Refuses an unknowns' interval with an end that uses an unknown
+    /// scalar: the unknowns live on a fixed interval.
+    pub(super) fn fixed_interval(&mut self, i: &Interval) {
+        for end in [&i.lo, &i.hi] {
+            if self.uses_scalar(end) {
+                self.err(
+                    LangError::new(
+                        ErrorKind::Unsupported,
+                        "an unknown's interval cannot end at an unknown scalar: the unknowns live on a fixed interval",
+                        end.span,
+                        "uses an unknown scalar",
+                    )
+                    .with_help("declare the unknown on a fixed interval that holds every value of the scalar, and say what it is beyond the scalar: `unknown p on [0, 2]`, `relation p = 0 on [a, 2]` (examples/contact/sphere_indentation.lmx)"),
+                );
+            }
+        }
+    }
+
     /// Checks a scalar's range: constants, `inf` allowed as the right end.
     pub(super) fn scalar_range(&mut self, i: &Interval) {
         if is_inf(&i.lo) {
