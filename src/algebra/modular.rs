@@ -185,6 +185,7 @@ pub fn long_primes() -> impl Iterator<Item = u64> {
 }
 
 /// The k-th of [`primes`] (0-based), `None` beyond [`NPRIMES`].
+#[cfg(test)]
 pub fn prime(k: usize) -> Option<u64> {
     if k >= NPRIMES {
         return None;
