@@ -542,6 +542,17 @@ fn solve_split_ladder(
 /// three levels there is no estimate (infinite): one difference cannot
 /// tell a converged value from a stalled one.
 ///
+/// **The sign guard.** When the last two differences have opposite signs
+/// the ladder is not in its asymptotic regime (it wobbles about a floor
+/// the levels do not refine, or overshoots), and the last difference says
+/// nothing about the distance to the limit: the estimate is then at least
+/// the previous difference. Measured on `tests/data/traps/contact_spike_8.lmx`
+/// (a kernel spike of width 1e-8): `a` was off by 9.5e-9, 3.9e-10, 5.1e-11,
+/// 2.2e-11, 2.2e-11 on levels 0–4, the last two differences 2.95e-11 and
+/// −2.0e-13, so the stall guard alone gave 3.5e-12; `P` was off by
+/// 1.2e-10, 4.5e-11, 6.7e-11 on levels 2–4 while its differences fell
+/// 7.9e-11, −2.2e-11.
+///
 /// It is never below 32 ulps of the value (the rounding of the sums that
 /// form an output over hundreds of panels: `examples/punch_torsion.lmx`'s
 /// load P = 1 came out 1.0e-15 off while two levels agreed to 6.7e-16).
@@ -571,6 +582,13 @@ pub(super) fn level_estimate(history: &[f64]) -> f64 {
     } else {
         // Also when a ratio is undefined (two equal levels).
         last.max(prev)
+    };
+    // The sign guard: the last two differences point opposite ways.
+    let d = |k: usize| history[k] - history[k - 1];
+    let est = if d(n - 1) * d(n - 2) < 0.0 {
+        est.max(prev)
+    } else {
+        est
     };
     est.max(floor)
 }
@@ -1821,6 +1839,35 @@ mod tests {
         // FASTEST_UNCONFIRMED of the first.
         let est = level_estimate(&[1.0, 1.0 + 1e-4, 1.0 + 1e-4]);
         assert!(est >= 0.99e-4 * FASTEST_UNCONFIRMED, "{est:e}");
+    }
+
+    #[test]
+    fn the_level_estimate_does_not_trust_a_difference_that_turns_back() {
+        // tests/data/traps/contact_spike_8.lmx at the default tolerance,
+        // levels 0–4 (exact a = √(1/2), P = (8/3)a³).
+        let a = [
+            0.707_106_771_258_991,
+            0.707_106_780_792_587,
+            0.707_106_781_135_340_1,
+            0.707_106_781_164_821_3,
+            0.707_106_781_164_621_6,
+        ];
+        let exact_a = std::f64::consts::FRAC_1_SQRT_2;
+        assert_eq!(bounds_every_level(&a, exact_a), vec![5]);
+        let p = [
+            0.942_809_013_869_512_2,
+            0.942_809_040_605_730_8,
+            0.942_809_041_458_665_3,
+            0.942_809_041_537_230_7,
+            0.942_809_041_514_966_4,
+        ];
+        let exact_p = 0.942_809_041_582_063_4;
+        assert_eq!(bounds_every_level(&p, exact_p), vec![5]);
+        // Without the turn the stall guard alone decides: a monotone
+        // history with the same magnitudes gets the smaller estimate.
+        let mut mono = a;
+        mono[4] = a[3] + (a[4] - a[3]).abs();
+        assert!(level_estimate(&mono) < level_estimate(&a));
     }
 
     #[test]
