@@ -551,12 +551,24 @@ fn solve_split_ladder(
 /// 2.2e-11, 2.2e-11 on levels 0–4, the last two differences 2.95e-11 and
 /// −2.0e-13, so the stall guard alone gave 3.5e-12; `P` was off by
 /// 1.2e-10, 4.5e-11, 6.7e-11 on levels 2–4 while its differences fell
-/// 7.9e-11, −2.2e-11.
+/// 7.9e-11, −2.2e-11. Point values go without it
+/// ([`level_estimate_guarded`]).
 ///
 /// It is never below 32 ulps of the value (the rounding of the sums that
 /// form an output over hundreds of panels: `examples/punch_torsion.lmx`'s
 /// load P = 1 came out 1.0e-15 off while two levels agreed to 6.7e-16).
 pub(super) fn level_estimate(history: &[f64]) -> f64 {
+    level_estimate_guarded(history, true)
+}
+
+/// [`level_estimate`], with the sign guard only when `sign_guard`. Point
+/// values go without it ([`output_estimate`]): beside the plain end of
+/// `examples/contact/flat_punch.lmx`, `p(1e-9)` wobbles about a floor of
+/// 1e-10 to 3e-10 from level 5 on (off by 3.3e-11, 2.9e-10, 1.7e-10,
+/// 1.2e-10 on levels 5–8), so the guard drove the ladder from level 3
+/// (off by 2.3e-11 against 5.4e-11) into that floor, where the last
+/// differences (+2.6e-10, −1.2e-10, −5.1e-11) again understate it.
+fn level_estimate_guarded(history: &[f64], sign_guard: bool) -> f64 {
     let n = history.len();
     if n < 3 {
         return f64::INFINITY;
@@ -585,7 +597,7 @@ pub(super) fn level_estimate(history: &[f64]) -> f64 {
     };
     // The sign guard: the last two differences point opposite ways.
     let d = |k: usize| history[k] - history[k - 1];
-    let est = if d(n - 1) * d(n - 2) < 0.0 {
+    let est = if sign_guard && d(n - 1) * d(n - 2) < 0.0 {
         est.max(prev)
     } else {
         est
@@ -619,13 +631,25 @@ pub(super) fn estimate_of(
     of: &dyn Fn(&Level) -> &[f64],
     i: usize,
 ) -> f64 {
+    estimate_of_guarded(levels, this, of, i, true)
+}
+
+/// [`estimate_of`] with the sign guard only when `sign_guard`
+/// ([`level_estimate_guarded`]).
+fn estimate_of_guarded(
+    levels: &[Level],
+    this: &Level,
+    of: &dyn Fn(&Level) -> &[f64],
+    i: usize,
+    sign_guard: bool,
+) -> f64 {
     if refines(levels, this) {
         // Not floored at `32·ε·κ` ([`rounding_floor`](crate::numeric::solve::rounding_floor);
         // point outputs are, [`point_rounding`]): κ reaches 1.4e4
         // by level 7 on the contact gallery (floor 1.0e-10), where the
         // radii are right to 1e-13 (the cone's `a`), so no example would
         // reach the default tolerance.
-        level_estimate(&history(levels, this, of, i))
+        level_estimate_guarded(&history(levels, this, of, i), sign_guard)
     } else {
         f64::INFINITY
     }
@@ -671,14 +695,21 @@ pub(super) fn point_rounding(problem: &SplitProblem, this: &Level, o: usize) -> 
     rounding_floor(this.cond) * weight.max(this.outputs[o].abs())
 }
 
-/// [`estimate_of`] of output `o`, at least its [`point_rounding`].
+/// [`estimate_of`] of output `o`, at least its [`point_rounding`]; an
+/// output with a point value goes without the sign guard
+/// ([`level_estimate_guarded`]).
 pub(super) fn output_estimate(
     problem: &SplitProblem,
     levels: &[Level],
     this: &Level,
     o: usize,
 ) -> f64 {
-    estimate_of(levels, this, &|l| &l.outputs, o).max(point_rounding(problem, this, o))
+    let point = point_rounding(problem, this, o);
+    let has_point = problem.sys.outputs[o]
+        .terms
+        .iter()
+        .any(|t| matches!(t, super::compiled::OutputTerm::Point { .. }));
+    estimate_of_guarded(levels, this, &|l| &l.outputs, o, !has_point).max(point)
 }
 
 /// One quantity's values on every level climbed, then on `this`.
@@ -1868,6 +1899,9 @@ mod tests {
         let mut mono = a;
         mono[4] = a[3] + (a[4] - a[3]).abs();
         assert!(level_estimate(&mono) < level_estimate(&a));
+        // Without the guard the last level's estimate is below its error.
+        let unguarded = level_estimate_guarded(&a, false);
+        assert!(unguarded < (a[4] - exact_a).abs(), "{unguarded:e}");
     }
 
     #[test]
