@@ -575,8 +575,7 @@ pub struct SolveOptions {
     /// On a split domain, the unknowns' tolerance: convergence also needs
     /// each unknown's largest pointwise estimate on the output grid
     /// within `field_tol·max(1, size)` (`--field-tol`). `None` (the
-    /// default): the larger of `tol` and `1e-6`
-    /// ([`crate::plan::split_solve::default_field_tol`]);
+    /// default): the larger of `tol` and `1e-6`;
     /// `Some(f64::INFINITY)` (`--field-tol inf`): the unknowns are
     /// reported with their estimates but do not enter convergence.
     pub field_tol: Option<f64>,
