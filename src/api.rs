@@ -37,6 +37,7 @@ use crate::plan::{CompiledSystem, PlanError, SplitInput};
 use crate::system::Program;
 
 mod hertz;
+pub(crate) mod locate;
 pub(crate) use self::hertz::check_tol;
 pub use self::hertz::{
     Hertz, HertzOptions, HertzRefusal, HertzSweep, HertzTable, MAX_SWEEP_POINTS, Tally, hertz,
@@ -399,7 +400,7 @@ impl Problem {
         let p = &self.program;
         let u = crate::reduce::choose_unknown(p, target).map_err(|e| Error(e.into()))?;
         if p.contact.is_split() {
-            let pieces = crate::cli::reduce::split_reductions(p, u)?;
+            let pieces = crate::report::reduction::split_reductions(p, u)?;
             return Ok(Reduction {
                 pieces: pieces
                     .into_iter()
@@ -698,12 +699,12 @@ impl SmithForm {
 
     /// The text `lambdamat smith` prints.
     pub fn text(&self) -> String {
-        crate::cli::render::smith_text(&self.report)
+        crate::report::smith::smith_text(&self.report)
     }
 
     /// The LaTeX `lambdamat smith --latex` prints.
     pub fn latex(&self) -> String {
-        crate::cli::render::smith_latex(&self.report)
+        crate::report::smith::smith_latex(&self.report)
     }
 
     /// The JSON `lambdamat smith --json` prints.
@@ -786,9 +787,9 @@ impl Reduction {
 
     fn print(&self, latex: bool) -> String {
         match self.split_list() {
-            Some(list) => crate::cli::reduce::split_text(&list, latex),
-            None if latex => crate::cli::reduce::latex(self.value()),
-            None => crate::cli::reduce::text(self.value()),
+            Some(list) => crate::report::reduction::split_text(&list, latex),
+            None if latex => crate::report::reduction::latex(self.value()),
+            None => crate::report::reduction::text(self.value()),
         }
     }
 
@@ -802,8 +803,8 @@ impl Reduction {
     /// The JSON `lambdamat reduce --json` prints.
     pub fn to_json(&self) -> String {
         let v = match self.split_list() {
-            Some(list) => crate::cli::reduce::split_json(&list),
-            None => crate::cli::reduce::to_json(self.value()),
+            Some(list) => crate::report::reduction::split_json(&list),
+            None => crate::report::reduction::to_json(self.value()),
         };
         serde_json::to_string_pretty(&v).unwrap_or_default()
     }

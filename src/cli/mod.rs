@@ -5,13 +5,10 @@
 //! prints what they return.
 //!
 //! * [`error`]: the top-level error and its exit codes;
-//! * [`locate`]: solve-time errors (kernels, right sides) pointed at the source;
 //! * [`output`]: the files commands write (`wrote FILE`, never over an input);
-//! * [`render`]: matrices, certificates and reports as text and LaTeX;
 //! * [`hertz`]: the flagship Hertz problem (solve, table, sweep);
 //! * [`plot`]: SVG plots;
 //! * [`smith`]: the `smith` command and the Smith part of `run`;
-//! * [`reduce`]: the `reduce` command and the `solve for` part of `run`;
 //! * [`run`]: the `run` command (everything a file asks for);
 //! * [`solve`]: the `solve` command (numerical solution of the file's system);
 //! * [`codegen`]: the `codegen` command (a Rust solver for the file's system).
@@ -19,11 +16,8 @@
 pub mod codegen;
 pub mod error;
 pub mod hertz;
-pub mod locate;
 pub mod output;
 pub mod plot;
-pub mod reduce;
-pub mod render;
 pub mod run;
 pub mod smith;
 pub mod solve;
@@ -309,7 +303,7 @@ pub fn main() -> i32 {
     let result = match cli.command {
         Command::Run(a) => run::run(&a.file, &a.out, a.max_memory, &mut stdout),
         Command::Smith(a) => smith::smith_command(&a, &mut stdout),
-        Command::Reduce(a) => reduce::reduce_command(&a, &mut stdout),
+        Command::Reduce(a) => crate::report::reduction::reduce_command(&a, &mut stdout),
         Command::Solve(a) => solve::solve_command(&a, &mut stdout),
         Command::Codegen(a) => codegen::codegen_command(&a, &mut stdout),
         Command::Hertz(a) => hertz::hertz_command(&a, &mut stdout),

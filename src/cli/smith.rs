@@ -3,7 +3,8 @@
 //! reports and prints them. Also runs `check smith` directives for `run`.
 
 use super::error::CliError;
-use super::{OutputArgs, SmithArgs, read_source, render};
+use super::{OutputArgs, SmithArgs, read_source};
+use crate::report::smith as render;
 use crate::algebra::matrix::Matrix;
 use crate::algebra::polyring::PolyRing;
 use crate::algebra::smith::modes::{

@@ -108,7 +108,7 @@ pub fn converged(r: &Report) -> Result<(), CliError> {
 /// A plan error pointed at its place in `src` (a kernel, a right side),
 /// when it has one.
 pub fn located(e: PlanError, src: &Source) -> CliError {
-    match super::locate::locate_plan_error(&e, &src.text, &src.name) {
+    match crate::api::locate::locate_plan_error(&e, &src.text, &src.name) {
         Some(errs) => CliError::Lang(Box::new(errs)),
         None => CliError::Plan(e),
     }

@@ -28,6 +28,9 @@
 //! * [`svg`]: the plot of the unknowns.
 
 #[cfg(feature = "cli")]
+pub mod reduction;
+pub mod smith;
+#[cfg(feature = "cli")]
 pub mod svg;
 pub mod text;
 

@@ -3,9 +3,9 @@
 //! unknown and prints it as text, LaTeX or one JSON object. Formatting only;
 //! the algebra and the expansion are done elsewhere.
 
-use super::error::CliError;
-use super::render::{checks, matrix};
-use super::{OutputArgs, ReduceArgs};
+use super::smith::{checks, matrix};
+use crate::cli::error::CliError;
+use crate::cli::{OutputArgs, ReduceArgs};
 use crate::algebra::print::latex_name;
 use crate::reduce::expand::{sum_latex, sum_text};
 use crate::reduce::{Reduction, StepsForm, reduce};
@@ -16,8 +16,8 @@ use std::io::Write;
 /// `lambdamat reduce FILE [--for u] [--json] [--latex]`: prints what
 /// [`crate::api::Problem::reduce`] returns.
 pub fn reduce_command(a: &ReduceArgs, w: &mut dyn Write) -> Result<(), CliError> {
-    let (text, name) = super::read_source(&a.file)?;
-    let r = crate::api::Problem::with_sets(text, name, super::overrides().to_vec())
+    let (text, name) = crate::cli::read_source(&a.file)?;
+    let r = crate::api::Problem::with_sets(text, name, crate::cli::overrides().to_vec())
         .and_then(|p| p.reduce(a.unknown.as_deref()))
         .map_err(crate::api::Error::into_cli)?;
     if a.out.json {
@@ -111,7 +111,7 @@ pub fn split_text(list: &[(crate::reduce::split::Piece, Reduction)], as_latex: b
 pub fn print_reduction(r: &Reduction, out: &OutputArgs, w: &mut dyn Write) -> Result<(), CliError> {
     if out.json {
         let v = to_json(r);
-        super::output::write_json(w, &v)?;
+        crate::cli::output::write_json(w, &v)?;
     } else if out.latex {
         write!(w, "{}", latex(r))?;
     } else {
