@@ -207,7 +207,9 @@ fn trailing(c: &mut Criterion) {
 /// seconds: the non-square diagonals (monomial route), the rank-deficient
 /// and rectangular inputs (unit-factor rank certificate), the sparse ones
 /// (Hermite certificate with the local pivots moved last) and the 2×2 with
-/// one huge coefficient (D alone from the adjugate). Criterion's "time" is
+/// one huge coefficient (D alone from the adjugate), and the 4×4 of
+/// 45-digit rationals (integer Hermite route on up to 4 096 word primes,
+/// with U and V). Criterion's "time" is
 /// process CPU time per call. `cargo bench --bench smith -- smith_stall`.
 fn stall(c: &mut Criterion) {
     let mut g = c.benchmark_group("smith_stall");
@@ -222,6 +224,7 @@ fn stall(c: &mut Criterion) {
         "sparse_sing_17",
         "sparse_24_e24",
         "bigc_2_d50",
+        "bigq_4_d2",
     ] {
         let a = first_matrix(&format!("benches/data/issue29_{case}.lmx"));
         g.bench_function(case, |b| b.iter_custom(|iters| cpu_time_of(iters, &a)));

@@ -280,9 +280,10 @@ fn equivalent_weights_at_a_negative_point_give_the_same_answer() {
     assert!(values.windows(2).all(|w| w[0] == w[1]), "{values:?}");
 }
 
-/// What a singular declaration cannot say yet is refused at its line and
-/// column (exit 2): a logarithm, and a second exact term of one unknown
-/// at one point and side.
+/// What a singular declaration cannot say is refused at its line and
+/// column (exit 2): a logarithm at another point than the declared one,
+/// a logarithm of something other than a linear expression, and a second
+/// exact term of one unknown at one point and side.
 #[test]
 fn logarithmic_and_second_singular_terms_are_refused_at_their_place() {
     let cone = std::fs::read_to_string("examples/contact/cone.lmx").expect("source");
@@ -293,8 +294,12 @@ fn logarithmic_and_second_singular_terms_are_refused_at_their_place() {
         + 1;
     for (extra, want) in [
         (
-            "singular p at 0 ~ ln(x)",
-            "logarithmic singular behaviour cannot be declared",
+            "singular p at 0 ~ ln(x - 1)",
+            "this logarithm is singular at x = 1, not at the declared point 0",
+        ),
+        (
+            "singular p at 0 ~ ln(x^2)",
+            "logarithmic singular behaviour must be the logarithm of an expression linear in x",
         ),
         (
             "singular p at a- ~ D*(a^2 - x^2)^(-1/2)",
@@ -388,4 +393,165 @@ fn two_admissible_roots_of_the_conditions_are_refused_naming_both() {
             "root a = {a} not named: {err}"
         );
     }
+}
+
+/// JKR adhesion at a given tensile depth, `delta = -1/10`, has two
+/// equilibria with one unknown scalar: `delta = a^2 - (pi/2) C sqrt(a)`
+/// falls and then rises in `a`. The single-scalar search refuses with
+/// exit 3 naming both; a range narrowed to either one returns it, equal
+/// to the closed form to 1e-9 and within its estimate.
+#[test]
+fn two_admissible_roots_of_one_scalar_are_refused_and_each_can_be_selected() {
+    let file = "examples/contact/jkr_indentation.lmx";
+    let (c, delta) = (0.25f64, -0.1f64);
+    let depth = |a: f64| a * a - std::f64::consts::PI / 2.0 * c * a.sqrt() - delta;
+    let root = |mut lo: f64, mut hi: f64| {
+        for _ in 0..200 {
+            let m = 0.5 * (lo + hi);
+            if (depth(m) > 0.0) == (depth(lo) > 0.0) {
+                lo = m;
+            } else {
+                hi = m;
+            }
+        }
+        lo
+    };
+    // The minimum of the depth: sqrt(a)^3 = pi C/8.
+    let turn = (std::f64::consts::PI * c / 8.0).powf(2.0 / 3.0);
+    let roots = [root(1e-12, turn), root(turn, 2.0)];
+    assert!(roots[0] < 0.2 && roots[1] > 0.2, "{roots:?}");
+
+    let out = lambdamat()
+        .args(["solve", file, "--set", "delta=-1/10"])
+        .output()
+        .expect("runs");
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(3), "{err}");
+    assert!(out.stdout.is_empty());
+    assert!(
+        err.contains("the condition for a has 2 admissible roots in (0, 2)")
+            && err.contains("narrow the range in `scalar a in (lo, hi)`"),
+        "{err}"
+    );
+    // Each root is named, to the accuracy of the first level.
+    let named: Vec<f64> = err
+        .split("a = ")
+        .skip(1)
+        .filter_map(|t| t.split([',', ';']).next()?.trim().parse().ok())
+        .collect();
+    assert_eq!(named.len(), 2, "{err}");
+    for (n, r) in named.iter().zip(roots) {
+        assert!((n - r).abs() < 1e-9, "named {n}, closed form {r}");
+    }
+
+    // The range, with parameter ends, narrowed to each root in turn.
+    let text = std::fs::read_to_string(file).expect("reads");
+    let line = "scalar a in (0, 2)";
+    assert!(text.contains(line));
+    let src = text.replace(
+        line,
+        "param amin = 0\nparam amax = 2\nscalar a in (amin, amax)",
+    );
+    let f = lmx_file(&src);
+    let path = f.path().to_str().expect("utf-8");
+    for (range, exact) in [
+        (["amax=1/5", "amin=0"], roots[0]),
+        (["amin=1/5", "amax=2"], roots[1]),
+    ] {
+        let j = json(&[
+            "solve",
+            path,
+            "--set",
+            "delta=-1/10",
+            "--set",
+            range[0],
+            "--set",
+            range[1],
+        ]);
+        assert_eq!(j["converged"], true, "{range:?}");
+        let a = j["scalars"]["a"].as_f64().expect("a");
+        let e = j["error_estimates"]["a"].as_f64().expect("estimate");
+        let error = (a - exact).abs();
+        assert!(
+            error <= 1e-9 && error <= e + 8.0 * f64::EPSILON,
+            "{range:?}: a = {a} ± {e}, closed form {exact}"
+        );
+    }
+}
+
+/// The cone's pressure `arccosh(a/x)` is logarithmically infinite at the
+/// centre; `singular p at 0 ~ ln(x)` says so. Every spelling gives the same
+/// answer bit for bit, within 1e-9 and its estimate of Sneddon's
+/// `a = 2 delta/pi`, `P = pi a^2`; the report says what the declaration
+/// does, and `p(0)` is not among the values.
+#[test]
+fn a_logarithmic_end_is_declared_in_any_spelling() {
+    let cone = std::fs::read_to_string("examples/contact/cone.lmx").expect("source");
+    let a = 2.0 / std::f64::consts::PI;
+    let exact = [("a", a), ("P", std::f64::consts::PI * a * a)];
+    let mut bits = Vec::new();
+    for body in [
+        "ln(x)",
+        "log(x)",
+        "-ln(abs(x - 0))",
+        "ln(2*x)/2",
+        "ln(0 - x)",
+    ] {
+        let src = cone.replace(
+            "singular p at a-",
+            &format!("singular p at 0 ~ {body}\nsingular p at a-"),
+        );
+        let f = lmx_file(&src);
+        let j = json(&["solve", f.path().to_str().expect("utf-8")]);
+        assert_eq!(j["converged"], true, "{body}");
+        let mut these = Vec::new();
+        for (name, want) in exact {
+            let v = j["scalars"][name]
+                .as_f64()
+                .or_else(|| j["outputs"][name].as_f64())
+                .expect("value");
+            let e = j["error_estimates"][name].as_f64().expect("estimate");
+            let err = (v - want).abs();
+            assert!(
+                err <= 1e-9 && err <= e,
+                "{body}: {name} = {v} ± {e}, closed form {want}"
+            );
+            these.push(v.to_bits());
+        }
+        bits.push(these);
+        let notes = j["notes"].to_string();
+        assert!(
+            notes.contains("p is declared logarithmic at 0")
+                && !notes.contains("graded toward the end"),
+            "{body}: {notes}"
+        );
+        let xs = j["unknowns"]["p"]["x"].as_array().expect("grid");
+        assert!(
+            !xs.is_empty() && xs.iter().all(|x| x.as_f64() != Some(0.0)),
+            "{xs:?}"
+        );
+    }
+    assert!(bits.windows(2).all(|w| w[0] == w[1]), "{bits:?}");
+}
+
+/// An unknown on an interval that ends at an unknown scalar is refused at
+/// the scalar (exit 2), saying how to write it on a fixed interval.
+#[test]
+fn an_unknown_interval_ending_at_a_scalar_is_an_input_error() {
+    let sphere =
+        std::fs::read_to_string("examples/contact/sphere_indentation.lmx").expect("source");
+    let line = sphere
+        .lines()
+        .position(|l| l.starts_with("unknown p on [0, 2]"))
+        .expect("the unknown's declaration")
+        + 1;
+    let out = run(&sphere.replace("unknown p on [0, 2]", "unknown p on [0, a]"));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("an unknown's interval cannot end at an unknown scalar")
+            && err.contains(&format!(":{line}:18]"))
+            && err.contains("`relation p = 0 on [a, 2]`"),
+        "{err}"
+    );
 }

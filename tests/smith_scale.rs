@@ -11,7 +11,8 @@
 //! several-symbol inputs certified from det and adj without elimination
 //! or minors (a 10×10 over Q[x, y], a random 4×4 over Q[x, y, z]); and a
 //! 24×24 with three non-trivial factors certified without transforms, the
-//! issue's 50×50 of degree 1 without the adjugate.
+//! issue's 50×50 of degree 1 without the adjugate; a 4×4 of 45-digit
+//! rationals against PARI's factor (issue 29).
 
 mod common;
 
@@ -596,4 +597,60 @@ fn sparse_degree_two_input_is_certified_without_a_swelling_local_basis() {
     assert_eq!(inv[22], "x - 2/5");
     assert!(inv[23].starts_with("x^45 "), "{}", inv[23]);
     check_names(&v);
+}
+
+/// `f` printed the way the report prints a Q\[x\] polynomial, from its
+/// coefficients (constant first) as PARI prints them.
+fn printed_from_coefficients(coefs: &[&str]) -> String {
+    let mut out = String::new();
+    for (k, c) in coefs.iter().enumerate().rev() {
+        if *c == "0" {
+            continue;
+        }
+        let (neg, a) = c.strip_prefix('-').map_or((false, *c), |a| (true, a));
+        let mono = match k {
+            0 => String::new(),
+            1 => "x".to_string(),
+            _ => format!("x^{k}"),
+        };
+        let term = if k == 0 {
+            a.to_string()
+        } else if a == "1" {
+            mono
+        } else {
+            format!("{a}*{mono}")
+        };
+        if out.is_empty() {
+            out = if neg { format!("-{term}") } else { term };
+        } else {
+            out += if neg { " - " } else { " + " };
+            out += &term;
+        }
+    }
+    out
+}
+
+#[test]
+fn large_rational_four_by_four_matches_pari() {
+    // 4×4 of degree 2 with 45-digit rational coefficients
+    // (`issue29_bigq_4_d2`, seeded in benches/stall_families.py). Its row
+    // scales give det Ã about 7 000 bits, so h needs about 1 500 word
+    // primes: the integer Hermite route now takes them (`long_primes`)
+    // instead of falling back to the exact extended Euclid over Q. The
+    // factor of degree 8 is PARI's `matsnf(M, 2)` made monic
+    // (`issue29_bigq_4_d2.pari`, coefficients constant first).
+    let v = json(&["smith", "tests/data/issue29_bigq_4_d2.lmx"]);
+    assert_eq!(v["verified"], true);
+    assert!(v["U"].is_array() && v["V"].is_array());
+    let inv = strings(&v["invariant_factors"]);
+    assert_eq!(inv.len(), 4);
+    assert!(inv[..3].iter().all(|f| f == "1"), "{inv:?}");
+    let pari = std::fs::read_to_string("tests/data/issue29_bigq_4_d2.pari").expect("PARI factor");
+    let coefs: Vec<&str> = pari.lines().map(str::trim).collect();
+    assert_eq!(coefs.len(), 9);
+    assert_eq!(inv[3], printed_from_coefficients(&coefs));
+    let names = check_names(&v);
+    for want in ["U·A·V = D", "U unimodular", "V unimodular"] {
+        assert!(names.iter().any(|n| n == want), "{want} missing: {names:?}");
+    }
 }

@@ -169,12 +169,33 @@ pub const NPRIMES: usize = 512;
 /// small input needs two or three of them; finding all 512 costs a few
 /// milliseconds, which used to be most of a small `smith` run).
 pub fn primes() -> impl Iterator<Item = u64> {
-    Primes(0)
+    Primes(0, NPRIMES)
+}
+
+/// How many primes [`long_primes`] offers (about 250 000 bits).
+pub const NPRIMES_LONG: usize = 4096;
+
+/// [`primes`] continued to [`NPRIMES_LONG`] primes, for the routes whose
+/// size estimate is known before the first image (the generic Hermite
+/// route's h and U rows, `smith::small`): a row-scaled matrix of
+/// 45-digit rationals needs about 1 500 of them. The routes that stop only
+/// when the primes run out keep [`primes`].
+pub fn long_primes() -> impl Iterator<Item = u64> {
+    Primes(0, NPRIMES_LONG)
 }
 
 /// The k-th of [`primes`] (0-based), `None` beyond [`NPRIMES`].
+#[cfg(test)]
 pub fn prime(k: usize) -> Option<u64> {
     if k >= NPRIMES {
+        return None;
+    }
+    nth_prime(k)
+}
+
+/// The k-th of [`long_primes`], found lazily and kept.
+fn nth_prime(k: usize) -> Option<u64> {
+    if k >= NPRIMES_LONG {
         return None;
     }
     static FOUND: std::sync::Mutex<Vec<u64>> = std::sync::Mutex::new(Vec::new());
@@ -189,18 +210,21 @@ pub fn prime(k: usize) -> Option<u64> {
     Some(found[k])
 }
 
-/// The iterator behind [`primes`].
-struct Primes(usize);
+/// The iterator behind [`primes`] and [`long_primes`] (next index, end).
+struct Primes(usize, usize);
 
 impl Iterator for Primes {
     type Item = u64;
     fn next(&mut self) -> Option<u64> {
-        let p = prime(self.0)?;
+        if self.0 >= self.1 {
+            return None;
+        }
+        let p = nth_prime(self.0)?;
         self.0 += 1;
         Some(p)
     }
     fn size_hint(&self) -> (usize, Option<usize>) {
-        let left = NPRIMES.saturating_sub(self.0);
+        let left = self.1.saturating_sub(self.0);
         (left, Some(left))
     }
 }

@@ -357,6 +357,7 @@ fn contact_lit(c: &Contact, sites: &[EndSite], fns: &mut Fns) -> String {
                     );
                     lit("SplitKind::Weight", &[("exponent", f)])
                 }
+                SingularKind::Log => "SplitKind::Log".to_string(),
                 SingularKind::Term { coefficient, func } => {
                     let f = fns.real(
                         &format!("{role}_term"),

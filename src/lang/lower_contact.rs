@@ -10,7 +10,7 @@ use super::error::{ErrorKind, LangError};
 use super::lower::constant;
 use super::scope::{Entry, Scope, Sort};
 use super::validate_contact::{
-    coefficient_term, inequality_sides, is_inf, linear_side, relation_form, weight_form,
+    coefficient_term, inequality_sides, is_inf, linear_side, log_form, relation_form, weight_form,
 };
 use crate::system::contact::{
     Condition, Contact, EndSite, Inequality, Interval as CInterval, LinTerm, MovingEnd, RBin,
@@ -305,6 +305,7 @@ pub fn lower_contact(file: &File, scope: &Scope) -> Result<Contact, LangError> {
                         coefficient: k,
                         func: rexpr(g, scope, &slots)?,
                     },
+                    None if log_form(body, scope).is_some() => SingularKind::Log,
                     None => {
                         let (_, exp) = weight_form(body, scope)
                             .ok_or_else(|| internal(body.span, "a weight"))?;

@@ -64,6 +64,7 @@ fn contact(program: &Program, slots: &[String], out: &mut String) {
             SingularKind::Weight { exponent } => {
                 format!("({at} - x)^({})", exponent.to_text(slots))
             }
+            SingularKind::Log => format!("ln(abs(x - ({at})))"),
             SingularKind::Term { coefficient, func } => format!(
                 "{}*({})",
                 c.coefficients.get(*coefficient).map_or("?", String::as_str),

@@ -332,7 +332,10 @@ impl Validator {
                 }
                 Stmt::Solve(id) => self.solve_target(id),
                 Stmt::Output { body, .. } => self.output_body(body),
-                Stmt::Unknown(_, Some(d)) => self.interval(d),
+                Stmt::Unknown(_, Some(d)) => {
+                    self.interval(d);
+                    self.fixed_interval(d);
+                }
                 Stmt::Relation {
                     unknown,
                     value,

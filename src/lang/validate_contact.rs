@@ -62,10 +62,11 @@ fn uses_x(e: &Expr) -> bool {
     }
 }
 
-/// Whether `e` calls `ln`.
+/// Whether `e` calls `ln` (or `log`, its spelling in a singular
+/// declaration).
 fn uses_ln(e: &Expr) -> bool {
     match &e.kind {
-        ExprKind::Call(f, a) => f.name == "ln" || uses_ln(a),
+        ExprKind::Call(f, a) => f.name == "ln" || f.name == "log" || uses_ln(a),
         ExprKind::Neg(a) => uses_ln(a),
         ExprKind::Binary(_, a, b) => uses_ln(a) || uses_ln(b),
         _ => false,
@@ -169,6 +170,26 @@ pub(super) fn weight_form(e: &Expr, scope: &Scope) -> Option<(Expr, Expr)> {
             weight_form(w, scope)
         }
         ExprKind::Binary(BinOp::Div, w, k) if !uses_x(k) => weight_form(w, scope),
+        _ => None,
+    }
+}
+
+/// A logarithmic singular behaviour: `ln(L)` or `log(L)` with `L` linear
+/// in `x` (or its absolute value, square root or power), possibly negated
+/// or times a constant (`ln(x)`, `-ln(1 - x)`, `ln(abs(x - P))/2`): the
+/// point `P` where `L` vanishes.
+pub(super) fn log_form(e: &Expr, scope: &Scope) -> Option<Expr> {
+    match &e.kind {
+        ExprKind::Call(f, a) if f.name == "ln" || f.name == "log" => {
+            let one = number(BigRational::one(), e.span);
+            let power = node(ExprKind::Binary(BinOp::Pow, a.clone(), Box::new(one)), e.span);
+            weight_form(&power, scope).map(|(point, _)| point)
+        }
+        ExprKind::Neg(a) => log_form(a, scope),
+        ExprKind::Binary(BinOp::Mul, k, w) | ExprKind::Binary(BinOp::Mul, w, k) if !uses_x(k) => {
+            log_form(w, scope)
+        }
+        ExprKind::Binary(BinOp::Div, w, k) if !uses_x(k) => log_form(w, scope),
         _ => None,
     }
 }
@@ -414,6 +435,24 @@ impl Validator {
         self.real_expr(&i.hi, false);
     }
 
+    /// Refuses an unknowns' interval with an end that uses an unknown
+    /// scalar: the unknowns live on a fixed interval.
+    pub(super) fn fixed_interval(&mut self, i: &Interval) {
+        for end in [&i.lo, &i.hi] {
+            if self.uses_scalar(end) {
+                self.err(
+                    LangError::new(
+                        ErrorKind::Unsupported,
+                        "an unknown's interval cannot end at an unknown scalar: the unknowns live on a fixed interval",
+                        end.span,
+                        "uses an unknown scalar",
+                    )
+                    .with_help("declare the unknown on a fixed interval that holds every value of the scalar, and say what it is beyond the scalar: `unknown p on [0, 2]`, `relation p = 0 on [a, 2]` (examples/contact/sphere_indentation.lmx)"),
+                );
+            }
+        }
+    }
+
     /// Checks a scalar's range: constants, `inf` allowed as the right end.
     pub(super) fn scalar_range(&mut self, i: &Interval) {
         if is_inf(&i.lo) {
@@ -542,31 +581,28 @@ impl Validator {
             self.real_expr(g, true);
             return;
         }
+        if let Some(point) = log_form(body, &self.scope) {
+            if self.real_expr(&point, false) {
+                self.same_point(body, &point, at, "logarithm", "`singular p at 0 ~ ln(x)`");
+            }
+            return;
+        }
         match weight_form(body, &self.scope) {
             Some((point, exp)) => {
                 let ok = self.real_expr(&point, false);
                 self.real_expr(&exp, false);
-                let exact = |e: &Expr| super::lower::constant(e, &self.scope);
-                if ok
-                    && let (Some(p), Some(a)) = (exact(&point), exact(at))
-                    && p != a
-                {
-                    self.err(wrong(
-                        body,
-                        format!("this weight is singular at x = {p}, not at the declared point {a}"),
-                        "another point",
-                        "write the weight of the point after `at`, e.g. `singular f at -1 ~ (1 + x)^(-1/2)`",
-                    ));
+                if ok {
+                    self.same_point(body, &point, at, "weight", "`singular f at -1 ~ (1 + x)^(-1/2)`");
                 }
             }
             None if uses_ln(body) => self.err(
                 LangError::new(
                     ErrorKind::Unsupported,
-                    "logarithmic singular behaviour cannot be declared: a singular declaration factors out a power `|x - P|^e` or states a term `B*g(x)` with a power singularity",
+                    "logarithmic singular behaviour must be the logarithm of an expression linear in x that vanishes at the declared point: `ln(x - P)`, `ln(P - x)`, `ln(abs(x - P))` or `log(…)`, alone or times a constant",
                     body.span,
-                    "a logarithm",
+                    "not such a logarithm",
                 )
-                .with_help("leave a logarithmic end undeclared: the solver grades the mesh toward the ends of the unknowns' interval and toward every breakpoint (the cone's pressure, logarithmic at 0, converges so: examples/contact/cone.lmx)"),
+                .with_help("e.g. `singular p at 0 ~ ln(x)`; a logarithm times a power is not supported: declare the power as a weight, or leave the end undeclared (the solver grades the mesh toward the ends of the unknowns' interval and toward every breakpoint)"),
             ),
             None => self.err(wrong(
                 body,
@@ -574,6 +610,22 @@ impl Validator {
                 "not understood",
                 "e.g. `singular p at 1 ~ (1 - x)^(-alpha)` or `singular q at c- ~ B*x/sqrt(c^2 - x^2)`",
             )),
+        }
+    }
+
+    /// Refuses a weight or logarithm (`what`) in `body` singular at
+    /// `point` other than the declared `at`, when both are exact.
+    fn same_point(&mut self, body: &Expr, point: &Expr, at: &Expr, what: &str, example: &str) {
+        let exact = |e: &Expr| super::lower::constant(e, &self.scope);
+        if let (Some(p), Some(a)) = (exact(point), exact(at))
+            && p != a
+        {
+            self.err(wrong(
+                body,
+                format!("this {what} is singular at x = {p}, not at the declared point {a}"),
+                "another point",
+                &format!("write the {what} of the point after `at`, e.g. {example}"),
+            ));
         }
     }
 

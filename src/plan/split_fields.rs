@@ -17,6 +17,7 @@ use nalgebra::{DMatrix, DVector};
 
 use super::error::PlanError;
 use super::split::{Discrete, SplitProblem};
+use super::split_input::SplitKind;
 use super::split_solve::SplitSolution;
 use crate::numeric::{Assembler, Mesh, Operator, PanelBasis};
 
@@ -320,6 +321,14 @@ impl<'a> LevelFields<'a> {
             .iter()
             .map(|t| (t.at, ulps(t.at), LeftOutReason::SingularPoint))
             .collect();
+        avoid.extend(
+            p.contact
+                .singulars
+                .iter()
+                .filter(|s| s.unknown == u && matches!(s.kind, SplitKind::Log))
+                .map(|s| s.at.eval(&d.vars, 0.0))
+                .map(|z| (z, ulps(z), LeftOutReason::SingularPoint)),
+        );
         avoid.extend(
             p.graded_ends()
                 .iter()

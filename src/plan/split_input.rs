@@ -121,6 +121,9 @@ pub enum SplitKind {
         /// The exponent `e`.
         exponent: RealFn,
     },
+    /// A logarithmic end `ln|x - P|`: graded toward, no weight factored
+    /// out, the value at the point left out of the reported grid.
+    Log,
     /// An exact singular term `B·g(x)` with a free coefficient `B`.
     Term {
         /// Index of the coefficient.
@@ -261,6 +264,7 @@ impl SplitContact {
                         SingularKind::Weight { exponent } => SplitKind::Weight {
                             exponent: RealFn::from_expr(exponent),
                         },
+                        SingularKind::Log => SplitKind::Log,
                         SingularKind::Term { coefficient, func } => SplitKind::Term {
                             coefficient: *coefficient,
                             func: RealFn::from_expr(func),

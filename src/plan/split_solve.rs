@@ -1257,7 +1257,9 @@ pub(super) fn find_scalar(
                 Err(e) => return Err(at_end(e, name, &evals.borrow())),
             };
             let mut rejected: Vec<(f64, String)> = Vec::new();
-            let mut found = None;
+            // Every admissible root the brackets hold: one is the answer,
+            // several are refused (the answer would be a choice).
+            let mut admissible: Vec<(f64, f64)> = Vec::new();
             for &(a, fa, b, fb) in &scanned.brackets {
                 let stol = map.s_tolerance(a, xtol).min(map.s_tolerance(b, xtol));
                 let s = brent(&mut f, a, fa, b, fb, stol)?;
@@ -1286,10 +1288,12 @@ pub(super) fn find_scalar(
                     ));
                     continue;
                 }
-                found = Some(s);
-                break;
+                admissible.push((s, x));
             }
-            let Some(s) = found else {
+            if admissible.len() > 1 {
+                return Err(several_roots(name, &map, &admissible));
+            }
+            let Some(&(s, _)) = admissible.first() else {
                 // The admissible root, if any, is beyond the resolved range
                 // at the end where the condition is smaller in size.
                 let (left, right) = (scanned.left, scanned.right);
@@ -1345,11 +1349,12 @@ pub(super) fn find_scalar(
 /// toward the lower end with steps 2, 4, 8, … in `s` (to `s = -S_LIMIT_LO`,
 /// or to the last `s` where the discretisation works) until the sign
 /// changes; only if neither shows a sign change, the same toward the upper
-/// end. The caller takes the lowest admissible root: a contact condition
-/// has its physical root lowest (the largest slip zone) and may have
-/// further roots accumulating at the upper end (`c → 1`), which violate
-/// the Coulomb inequality. No sign change at all is refused, naming the end
-/// toward which the condition kept its sign.
+/// end. The caller solves every bracket and refuses several admissible
+/// roots: a contact condition may have further roots accumulating at the
+/// upper end (`c → 1`), which the Coulomb inequality rejects. Two roots
+/// between neighbouring points of the grid are not seen. No sign change
+/// at all is refused, naming the end toward which the condition kept its
+/// sign.
 #[allow(clippy::type_complexity)]
 fn scan<F>(f: &mut F, map: &ScalarMap) -> Result<Scan, PlanError>
 where
@@ -1475,6 +1480,25 @@ where
             (-if toward_hi { S_LIMIT } else { S_LIMIT_LO }).exp(),
         ),
     })))
+}
+
+/// The refusal of a condition with several admissible roots `(s, x)`,
+/// naming each and how to select one.
+fn several_roots(name: &str, map: &ScalarMap, roots: &[(f64, f64)]) -> PlanError {
+    PlanError::Numeric {
+        context: "scalar root".into(),
+        source: NumericError::NoConvergence(format!(
+            "the condition for {name} has {} admissible roots in ({}, {}): {}; state an inequality that tells them apart, or narrow the range in `scalar {name} in (lo, hi)` to one of them (its ends may be parameters, set with --set)",
+            roots.len(),
+            map.lo,
+            map.hi,
+            roots
+                .iter()
+                .map(|(_, x)| format!("{name} = {x:.12e}"))
+                .collect::<Vec<_>>()
+                .join(", ")
+        )),
+    }
 }
 
 /// What [`scan`] found: the brackets of sign changes, lowest first, and

@@ -338,7 +338,9 @@ pub fn from_split(sol: &SplitSolution, grid: usize) -> Result<Report, PlanError>
         );
     }
     extra.insert("unique".into(), json!(r.uniqueness.is_none()));
-    extra.insert("notes".into(), json!(text::split_notes(r)));
+    let mut notes = text::split_notes(r);
+    notes.extend(text::log_end_notes(sol));
+    extra.insert("notes".into(), json!(notes));
     extra.insert("dim".into(), json!(r.dim));
     extra.insert("cond".into(), finite(r.cond));
     extra.insert("singular_exponents".into(), json!(r.singular_exponents));

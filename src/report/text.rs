@@ -170,6 +170,24 @@ pub fn split_notes(r: &SplitReport) -> Vec<String> {
     out
 }
 
+/// The lines saying what each logarithmic declaration
+/// (`singular p at 0 ~ ln(x)`) makes of its point.
+pub fn log_end_notes(sol: &crate::plan::SplitSolution) -> Vec<String> {
+    let p = &sol.problem;
+    p.contact
+        .singulars
+        .iter()
+        .filter(|s| matches!(s.kind, crate::plan::split_input::SplitKind::Log))
+        .map(|s| {
+            let u = &p.sys.unknowns[s.unknown];
+            let z = s.at.eval(&sol.discrete.vars, 0.0);
+            format!(
+                "{u} is declared logarithmic at {z}: the mesh is graded toward it as toward any declared point, no weight is factored out, and {u}({z}) (infinite) is left out of the values and their estimate"
+            )
+        })
+        .collect()
+}
+
 /// The line saying that the mesh was graded toward ends no `singular`
 /// declaration names, and why.
 pub fn end_grading_line(c: &crate::plan::split_ends::EndCheck) -> String {
@@ -179,9 +197,10 @@ pub fn end_grading_line(c: &crate::plan::split_ends::EndCheck) -> String {
         .map(|z| z.to_string())
         .collect::<Vec<_>>()
         .join(" and ");
+    let z = c.ends.first().copied().unwrap_or(f64::NAN);
     let why = match c.worst() {
         Some(w) => format!(
-            ": on level {} grading it moved {} by {:.1e}, {} its estimate {:.1e} (an undeclared singular behaviour there: a power `|x - {}|^e` can be declared with `singular … at {}`; a logarithmic one, such as the cone's pressure at its tip, cannot and stays graded so)",
+            ": on level {} grading it moved {} by {:.1e}, {} its estimate {:.1e} (an undeclared singular behaviour there: a power `|x - {z}|^e` can be declared with `singular … at {z}`, a logarithmic one, such as the cone's pressure at its tip, with `singular … at {z} ~ ln(abs(x - {z}))`)",
             c.level,
             w.name,
             w.change,
@@ -191,8 +210,6 @@ pub fn end_grading_line(c: &crate::plan::split_ends::EndCheck) -> String {
                 "beyond".to_string()
             },
             w.estimate,
-            c.ends.first().copied().unwrap_or(f64::NAN),
-            c.ends.first().copied().unwrap_or(f64::NAN)
         ),
         None => String::new(),
     };

@@ -264,6 +264,10 @@ pub enum SingularKind {
         /// The exponent `e`.
         exponent: RExpr,
     },
+    /// `ln|x - P|` (`ln(x)`, `log(1 - x)`, …): a logarithmic end. The
+    /// mesh is graded toward `P` as toward any declared point; no weight
+    /// is factored out, and the unknown's value at `P` is not reported.
+    Log,
     /// `B * g(x)`: an exact singular term with a free coefficient.
     Term {
         /// Index of the coefficient in [`Contact::coefficients`].

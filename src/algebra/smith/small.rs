@@ -191,8 +191,9 @@ fn reconstruct_h(
     let detbits = det.iter().map(|c| c.bits()).max().unwrap_or(0) as usize;
     let first_try = (9 * big_n.saturating_sub(1) * detbits).div_ceil(5 * 61);
     let mut images: Vec<HImage> = Vec::new();
+    let mut next_try = first_try.max(1);
     let mut unlucky = 0;
-    for p in modular::primes() {
+    for p in modular::long_primes() {
         let Some(img) = h_image(Fp::new(p), det, adj, order) else {
             unlucky += 1;
             if unlucky > 3 {
@@ -202,9 +203,12 @@ fn reconstruct_h(
         };
         images.push(img);
         let k = images.len() - 1;
-        if k < first_try.max(1) {
+        // Attempts at first_try, then every k/8 further primes (a late
+        // attempt costs one Garner basis and one reconstruction, O(k²)).
+        if k < next_try {
             continue;
         }
+        next_try = k + (k / 8).max(1);
         // Twice the first try: h larger than that is not of the measured
         // kind, and the exact route takes over.
         if k > 200.max(2 * first_try) {
@@ -500,7 +504,8 @@ fn lift_rows(
         .unwrap_or(0);
     // U's rows have about as many bits as h's denominators.
     let start = (hbits as usize).div_ceil(61).max(1);
-    for p in modular::primes() {
+    let mut next_try = start;
+    for p in modular::long_primes() {
         let f = Fp::new(p);
         let Some(img) = row_image(f, pp, adj, delta, h, wlen, fps.is_empty()) else {
             unlucky += 1;
@@ -512,9 +517,10 @@ fn lift_rows(
         fps.push(f);
         images.push(img);
         let k = images.len() - 1;
-        if k < start {
+        if k < next_try {
             continue;
         }
+        next_try = k + (k / 8).max(1);
         if k > 200.max(2 * start) {
             return None;
         }
