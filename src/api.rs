@@ -29,7 +29,7 @@ use num_rational::BigRational;
 use crate::algebra::matrix::Matrix;
 use crate::algebra::polyring::PolyRing;
 use crate::algebra::smith::modes::{self, SmithReport};
-use crate::cli::error::CliError;
+use crate::error::CliError;
 pub use crate::hertz::front::Given;
 use crate::lang::Directive;
 pub use crate::plan::Method;
@@ -85,7 +85,7 @@ pub struct Error(CliError);
 impl Error {
     /// The kind (invalid input or failed computation).
     pub fn kind(&self) -> ErrorKind {
-        if self.exit_code() == crate::cli::error::EXIT_FAILED {
+        if self.exit_code() == crate::error::EXIT_FAILED {
             ErrorKind::ComputationFailed
         } else {
             ErrorKind::InvalidInput
@@ -95,8 +95,8 @@ impl Error {
     /// The exit code `lambdamat` ends with for this error: 2 or 3.
     pub fn exit_code(&self) -> i32 {
         match self.0.exit_code() {
-            crate::cli::error::EXIT_FAILED => crate::cli::error::EXIT_FAILED,
-            _ => crate::cli::error::EXIT_INVALID,
+            crate::error::EXIT_FAILED => crate::error::EXIT_FAILED,
+            _ => crate::error::EXIT_INVALID,
         }
     }
 
@@ -201,7 +201,7 @@ impl Problem {
     /// # Ok::<(), lambdamat::Error>(())
     /// ```
     pub fn from_file(path: impl AsRef<Path>) -> Result<Problem, Error> {
-        let (text, name) = crate::cli::read_source(&path.as_ref().to_path_buf())?;
+        let (text, name) = locate::read_source(path.as_ref())?;
         Problem::with_sets(text, name, Vec::new())
     }
 
@@ -499,11 +499,7 @@ impl Problem {
 
     /// A plan error pointed at its place in the source, when it has one.
     fn located(&self, e: PlanError) -> Error {
-        let src = crate::cli::smith::Source {
-            text: self.text.clone(),
-            name: self.name.clone(),
-        };
-        Error(crate::cli::solve::located(e, &src))
+        Error(locate::located(e, &self.text, &self.name))
     }
 }
 

@@ -65,6 +65,7 @@ internal! {
     #[cfg(feature = "cli")]
     cli;
     codegen;
+    error;
     hertz;
     lang;
     numeric;
@@ -74,7 +75,6 @@ internal! {
     system;
 }
 
-#[cfg(feature = "cli")]
 pub mod api;
 pub mod standalone;
 
@@ -86,7 +86,6 @@ pub fn cli_main() -> i32 {
     cli::main()
 }
 
-#[cfg(feature = "cli")]
 pub use api::{
     Error, ErrorKind, Field, Location, Method, Problem, Reduction, SmithForm, SmithOptions,
     Solution, SolveOptions,

@@ -14,10 +14,11 @@
 //! * [`codegen`]: the `codegen` command (a Rust solver for the file's system).
 
 pub mod codegen;
-pub mod error;
+pub use crate::error;
 pub mod hertz;
 pub mod output;
 pub mod plot;
+pub mod reduce;
 pub mod run;
 pub mod smith;
 pub mod solve;
@@ -243,28 +244,7 @@ pub struct ReduceArgs {
     pub out: OutputArgs,
 }
 
-/// Reads a source file, mapping I/O errors to invalid input; text that is
-/// not UTF-8 is reported with the byte offset, line and column of the
-/// first bad byte.
-pub fn read_source(path: &PathBuf) -> Result<(String, String), CliError> {
-    let name = path.display().to_string();
-    let bytes = std::fs::read(path).map_err(|e| CliError::Io {
-        path: name.clone(),
-        source: e,
-    })?;
-    let text = String::from_utf8(bytes).map_err(|e| {
-        let at = e.utf8_error().valid_up_to();
-        let bytes = e.as_bytes();
-        let good = String::from_utf8_lossy(&bytes[..at]);
-        let line = good.matches('\n').count() + 1;
-        let col = good.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
-        CliError::Invalid(format!(
-            "{name}:{line}:{col}: not UTF-8 text: byte 0x{:02x} at byte offset {at}",
-            bytes.get(at).copied().unwrap_or(0)
-        ))
-    })?;
-    Ok((text, name))
-}
+pub use crate::api::locate::read_source;
 
 /// The command line parsed as `T`, or the exit code after clap printed
 /// help (0) or a usage error (1).
@@ -303,7 +283,7 @@ pub fn main() -> i32 {
     let result = match cli.command {
         Command::Run(a) => run::run(&a.file, &a.out, a.max_memory, &mut stdout),
         Command::Smith(a) => smith::smith_command(&a, &mut stdout),
-        Command::Reduce(a) => crate::report::reduction::reduce_command(&a, &mut stdout),
+        Command::Reduce(a) => reduce::reduce_command(&a, &mut stdout),
         Command::Solve(a) => solve::solve_command(&a, &mut stdout),
         Command::Codegen(a) => codegen::codegen_command(&a, &mut stdout),
         Command::Hertz(a) => hertz::hertz_command(&a, &mut stdout),

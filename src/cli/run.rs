@@ -8,7 +8,8 @@
 
 use super::OutputArgs;
 use super::error::CliError;
-use crate::report::reduction::{print_reduction, to_json};
+use super::reduce::print_reduction;
+use crate::report::reduction::to_json;
 use crate::report::smith as render;
 use super::smith::{check, load_problem, principal, print_report, report};
 use super::solve;
@@ -16,11 +17,11 @@ use crate::lang::Directive;
 use crate::reduce::{derive, reduce_with};
 use serde_json::json;
 use std::io::Write;
-use std::path::PathBuf;
+use std::path::Path;
 
 /// `lambdamat run FILE`.
 pub fn run(
-    file: &PathBuf,
+    file: &Path,
     out: &OutputArgs,
     max_memory: Option<u64>,
     w: &mut dyn Write,

@@ -34,7 +34,7 @@ pub struct Source {
 
 /// Reads the file at `path` and validates it with the command line's
 /// `--set` overrides: a [`crate::api::Problem`].
-pub fn load_problem(path: &std::path::PathBuf) -> Result<Problem, CliError> {
+pub fn load_problem(path: &std::path::Path) -> Result<Problem, CliError> {
     let (text, name) = read_source(path)?;
     Problem::with_sets(text, name, super::overrides().to_vec()).map_err(crate::api::Error::into_cli)
 }

@@ -108,8 +108,5 @@ pub fn converged(r: &Report) -> Result<(), CliError> {
 /// A plan error pointed at its place in `src` (a kernel, a right side),
 /// when it has one.
 pub fn located(e: PlanError, src: &Source) -> CliError {
-    match crate::api::locate::locate_plan_error(&e, &src.text, &src.name) {
-        Some(errs) => CliError::Lang(Box::new(errs)),
-        None => CliError::Plan(e),
-    }
+    crate::api::locate::located(e, &src.text, &src.name)
 }

@@ -31,7 +31,6 @@
 //! certificates, Smith and check reports as text and LaTeX) and
 //! `reduction` (a reduction as text, LaTeX and JSON).
 
-#[cfg(feature = "cli")]
 pub mod reduction;
 pub mod smith;
 #[cfg(feature = "cli")]

@@ -1,34 +1,16 @@
-//! The `reduce` command and the `solve for` part of `run`: asks
-//! [`crate::reduce`] for the reduction of a file's operator system for one
-//! unknown and prints it as text, LaTeX or one JSON object. Formatting only;
-//! the algebra and the expansion are done elsewhere.
+//! A reduction as text, LaTeX or one JSON object: the printer behind
+//! [`crate::api::Reduction`], the `reduce` command and the `solve for` part
+//! of `run`, and the per-subinterval reductions of a split-domain program.
+//! Formatting only; the algebra and the expansion are done in
+//! [`crate::reduce`].
 
 use super::smith::{checks, matrix};
-use crate::cli::error::CliError;
-use crate::cli::{OutputArgs, ReduceArgs};
+use crate::error::CliError;
 use crate::algebra::print::latex_name;
 use crate::reduce::expand::{sum_latex, sum_text};
 use crate::reduce::{Reduction, StepsForm, reduce};
 use serde_json::{Value, json};
 use std::fmt::Write as _;
-use std::io::Write;
-
-/// `lambdamat reduce FILE [--for u] [--json] [--latex]`: prints what
-/// [`crate::api::Problem::reduce`] returns.
-pub fn reduce_command(a: &ReduceArgs, w: &mut dyn Write) -> Result<(), CliError> {
-    let (text, name) = crate::cli::read_source(&a.file)?;
-    let r = crate::api::Problem::with_sets(text, name, crate::cli::overrides().to_vec())
-        .and_then(|p| p.reduce(a.unknown.as_deref()))
-        .map_err(crate::api::Error::into_cli)?;
-    if a.out.json {
-        writeln!(w, "{}", r.to_json())?;
-    } else if a.out.latex {
-        write!(w, "{}", r.latex())?;
-    } else {
-        write!(w, "{}", r.text())?;
-    }
-    Ok(())
-}
 
 /// The reduction of every subinterval of a split-domain program for
 /// unknown `u` (where it is free; else the first free unknown there). A
@@ -105,19 +87,6 @@ pub fn split_text(list: &[(crate::reduce::split::Piece, Reduction)], as_latex: b
         s.push_str(&text(r));
     }
     s
-}
-
-/// Prints a reduction in the requested form.
-pub fn print_reduction(r: &Reduction, out: &OutputArgs, w: &mut dyn Write) -> Result<(), CliError> {
-    if out.json {
-        let v = to_json(r);
-        crate::cli::output::write_json(w, &v)?;
-    } else if out.latex {
-        write!(w, "{}", latex(r))?;
-    } else {
-        write!(w, "{}", text(r))?;
-    }
-    Ok(())
 }
 
 /// The JSON object of a reduction. Every formula in it is in the
