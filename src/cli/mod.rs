@@ -14,7 +14,7 @@
 //! * [`codegen`]: the `codegen` command (a Rust solver for the file's system).
 
 pub mod codegen;
-pub use crate::error;
+pub(crate) use crate::error;
 pub mod hertz;
 pub mod output;
 pub mod plot;

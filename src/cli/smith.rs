@@ -24,14 +24,6 @@ pub fn to_matrix(symbols: &[String], m: &MatrixDef) -> Matrix<PolyRing> {
     )
 }
 
-/// A source file's text and the name it is shown under.
-pub struct Source {
-    /// The text.
-    pub text: String,
-    /// The file name as given.
-    pub name: String,
-}
-
 /// Reads the file at `path` and validates it with the command line's
 /// `--set` overrides: a [`crate::api::Problem`].
 pub fn load_problem(path: &std::path::Path) -> Result<Problem, CliError> {

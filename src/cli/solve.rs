@@ -11,10 +11,10 @@ use std::path::Path;
 
 use super::error::CliError;
 use super::output::{check_writable, write_file};
-use super::smith::{Source, load_problem};
+use super::smith::load_problem;
 use super::{SolveArgs, SolveFlags};
 use crate::api::SolveOptions;
-use crate::plan::{Method, PlanError};
+use crate::plan::Method;
 use crate::report::{Report, SolveSettings};
 
 /// `lambdamat solve FILE …`.
@@ -103,10 +103,4 @@ pub fn converged(r: &Report) -> Result<(), CliError> {
     } else {
         Err(CliError::NotConverged(r.not_converged_message()))
     }
-}
-
-/// A plan error pointed at its place in `src` (a kernel, a right side),
-/// when it has one.
-pub fn located(e: PlanError, src: &Source) -> CliError {
-    crate::api::locate::located(e, &src.text, &src.name)
 }
