@@ -105,7 +105,7 @@ fn twenty_unknowns(c: &mut Criterion) {
     g.bench_function("reduce + text with the steps", |b| {
         b.iter(|| {
             let r = lambdamat::reduce::reduce(&prog, 0).expect("reduces");
-            lambdamat::cli::reduce::text(&r)
+            lambdamat::report::reduction::text(&r)
         })
     });
     g.bench_function("codegen", |b| {

@@ -29,7 +29,7 @@ use num_rational::BigRational;
 use crate::algebra::matrix::Matrix;
 use crate::algebra::polyring::PolyRing;
 use crate::algebra::smith::modes::{self, SmithReport};
-use crate::cli::error::CliError;
+use crate::error::CliError;
 pub use crate::hertz::front::Given;
 use crate::lang::Directive;
 pub use crate::plan::Method;
@@ -37,6 +37,7 @@ use crate::plan::{CompiledSystem, PlanError, SplitInput};
 use crate::system::Program;
 
 mod hertz;
+pub(crate) mod locate;
 pub(crate) use self::hertz::check_tol;
 pub use self::hertz::{
     Hertz, HertzOptions, HertzRefusal, HertzSweep, HertzTable, MAX_SWEEP_POINTS, Tally, hertz,
@@ -84,7 +85,7 @@ pub struct Error(CliError);
 impl Error {
     /// The kind (invalid input or failed computation).
     pub fn kind(&self) -> ErrorKind {
-        if self.exit_code() == crate::cli::error::EXIT_FAILED {
+        if self.exit_code() == crate::error::EXIT_FAILED {
             ErrorKind::ComputationFailed
         } else {
             ErrorKind::InvalidInput
@@ -94,8 +95,8 @@ impl Error {
     /// The exit code `lambdamat` ends with for this error: 2 or 3.
     pub fn exit_code(&self) -> i32 {
         match self.0.exit_code() {
-            crate::cli::error::EXIT_FAILED => crate::cli::error::EXIT_FAILED,
-            _ => crate::cli::error::EXIT_INVALID,
+            crate::error::EXIT_FAILED => crate::error::EXIT_FAILED,
+            _ => crate::error::EXIT_INVALID,
         }
     }
 
@@ -200,7 +201,7 @@ impl Problem {
     /// # Ok::<(), lambdamat::Error>(())
     /// ```
     pub fn from_file(path: impl AsRef<Path>) -> Result<Problem, Error> {
-        let (text, name) = crate::cli::read_source(&path.as_ref().to_path_buf())?;
+        let (text, name) = locate::read_source(path.as_ref())?;
         Problem::with_sets(text, name, Vec::new())
     }
 
@@ -399,7 +400,7 @@ impl Problem {
         let p = &self.program;
         let u = crate::reduce::choose_unknown(p, target).map_err(|e| Error(e.into()))?;
         if p.contact.is_split() {
-            let pieces = crate::cli::reduce::split_reductions(p, u)?;
+            let pieces = crate::report::reduction::split_reductions(p, u)?;
             return Ok(Reduction {
                 pieces: pieces
                     .into_iter()
@@ -498,11 +499,7 @@ impl Problem {
 
     /// A plan error pointed at its place in the source, when it has one.
     fn located(&self, e: PlanError) -> Error {
-        let src = crate::cli::smith::Source {
-            text: self.text.clone(),
-            name: self.name.clone(),
-        };
-        Error(crate::cli::solve::located(e, &src))
+        Error(locate::located(e, &self.text, &self.name))
     }
 }
 
@@ -699,12 +696,12 @@ impl SmithForm {
 
     /// The text `lambdamat smith` prints.
     pub fn text(&self) -> String {
-        crate::cli::render::smith_text(&self.report)
+        crate::report::smith::smith_text(&self.report)
     }
 
     /// The LaTeX `lambdamat smith --latex` prints.
     pub fn latex(&self) -> String {
-        crate::cli::render::smith_latex(&self.report)
+        crate::report::smith::smith_latex(&self.report)
     }
 
     /// The JSON `lambdamat smith --json` prints.
@@ -787,9 +784,9 @@ impl Reduction {
 
     fn print(&self, latex: bool) -> String {
         match self.split_list() {
-            Some(list) => crate::cli::reduce::split_text(&list, latex),
-            None if latex => crate::cli::reduce::latex(self.value()),
-            None => crate::cli::reduce::text(self.value()),
+            Some(list) => crate::report::reduction::split_text(&list, latex),
+            None if latex => crate::report::reduction::latex(self.value()),
+            None => crate::report::reduction::text(self.value()),
         }
     }
 
@@ -803,8 +800,8 @@ impl Reduction {
     /// The JSON `lambdamat reduce --json` prints.
     pub fn to_json(&self) -> String {
         let v = match self.split_list() {
-            Some(list) => crate::cli::reduce::split_json(&list),
-            None => crate::cli::reduce::to_json(self.value()),
+            Some(list) => crate::report::reduction::split_json(&list),
+            None => crate::report::reduction::to_json(self.value()),
         };
         serde_json::to_string_pretty(&v).unwrap_or_default()
     }

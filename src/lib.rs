@@ -24,12 +24,12 @@
 //!   entry `report::solve`) and its text, JSON, CSV and SVG;
 //! * [`standalone`]: the `main` of generated solvers (no command-line
 //!   crates: they build with `default-features = false`);
-//! * `api` (feature `cli`, on by default): the small entry point —
+//! * `api` (with or without the feature `cli`): the small entry point —
 //!   `Problem` with its methods `smith`, `reduce`, `codegen` and `solve`,
 //!   their values and one `Error` — re-exported here; the CLI and the
 //!   Python package are its clients;
 //! * `cli` (feature `cli`): the `lambdamat` command line (clap, miette's
-//!   fancy output, plotters, indicatif), run by [`cli_main`].
+//!   fancy output, plotters, indicatif), run by `cli_main`.
 //!
 //! The public surface is `api` (its names re-exported here) and
 //! [`standalone`], which generated solvers build against. The other modules
@@ -37,10 +37,10 @@
 //! project's own tests, benches and probes; not part of the API.
 
 // Without the command line (`default-features = false`, the build generated
-// solvers depend on) and without `internals`, only `standalone` is public:
-// the rest of the pipeline (parsing, algebra, reduction, codegen) is
-// compiled but unreachable from it, so its dead code (and the imports only
-// that code uses) are expected there. The
+// solvers and the Python package depend on) and without `internals`, only
+// `api` and `standalone` are public: the parts of the pipeline only the
+// command line uses are compiled but unreachable, so their dead code (and
+// the imports only that code uses) are expected there. The
 // default build and the `internals` build keep the dead-code lint.
 #![cfg_attr(
     not(any(feature = "cli", feature = "internals")),
@@ -65,6 +65,7 @@ internal! {
     #[cfg(feature = "cli")]
     cli;
     codegen;
+    error;
     hertz;
     lang;
     numeric;
@@ -74,7 +75,6 @@ internal! {
     system;
 }
 
-#[cfg(feature = "cli")]
 pub mod api;
 pub mod standalone;
 
@@ -86,7 +86,6 @@ pub fn cli_main() -> i32 {
     cli::main()
 }
 
-#[cfg(feature = "cli")]
 pub use api::{
     Error, ErrorKind, Field, Location, Method, Problem, Reduction, SmithForm, SmithOptions,
     Solution, SolveOptions,

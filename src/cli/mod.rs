@@ -5,25 +5,20 @@
 //! prints what they return.
 //!
 //! * [`error`]: the top-level error and its exit codes;
-//! * [`locate`]: solve-time errors (kernels, right sides) pointed at the source;
 //! * [`output`]: the files commands write (`wrote FILE`, never over an input);
-//! * [`render`]: matrices, certificates and reports as text and LaTeX;
 //! * [`hertz`]: the flagship Hertz problem (solve, table, sweep);
 //! * [`plot`]: SVG plots;
 //! * [`smith`]: the `smith` command and the Smith part of `run`;
-//! * [`reduce`]: the `reduce` command and the `solve for` part of `run`;
 //! * [`run`]: the `run` command (everything a file asks for);
 //! * [`solve`]: the `solve` command (numerical solution of the file's system);
 //! * [`codegen`]: the `codegen` command (a Rust solver for the file's system).
 
 pub mod codegen;
-pub mod error;
+pub(crate) use crate::error;
 pub mod hertz;
-pub mod locate;
 pub mod output;
 pub mod plot;
 pub mod reduce;
-pub mod render;
 pub mod run;
 pub mod smith;
 pub mod solve;
@@ -249,28 +244,7 @@ pub struct ReduceArgs {
     pub out: OutputArgs,
 }
 
-/// Reads a source file, mapping I/O errors to invalid input; text that is
-/// not UTF-8 is reported with the byte offset, line and column of the
-/// first bad byte.
-pub fn read_source(path: &PathBuf) -> Result<(String, String), CliError> {
-    let name = path.display().to_string();
-    let bytes = std::fs::read(path).map_err(|e| CliError::Io {
-        path: name.clone(),
-        source: e,
-    })?;
-    let text = String::from_utf8(bytes).map_err(|e| {
-        let at = e.utf8_error().valid_up_to();
-        let bytes = e.as_bytes();
-        let good = String::from_utf8_lossy(&bytes[..at]);
-        let line = good.matches('\n').count() + 1;
-        let col = good.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
-        CliError::Invalid(format!(
-            "{name}:{line}:{col}: not UTF-8 text: byte 0x{:02x} at byte offset {at}",
-            bytes.get(at).copied().unwrap_or(0)
-        ))
-    })?;
-    Ok((text, name))
-}
+pub use crate::api::locate::read_source;
 
 /// The command line parsed as `T`, or the exit code after clap printed
 /// help (0) or a usage error (1).

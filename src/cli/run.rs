@@ -8,19 +8,20 @@
 
 use super::OutputArgs;
 use super::error::CliError;
-use super::reduce::{print_reduction, to_json};
-use super::render;
+use super::reduce::print_reduction;
+use crate::report::reduction::to_json;
+use crate::report::smith as render;
 use super::smith::{check, load_problem, principal, print_report, report};
 use super::solve;
 use crate::lang::Directive;
 use crate::reduce::{derive, reduce_with};
 use serde_json::json;
 use std::io::Write;
-use std::path::PathBuf;
+use std::path::Path;
 
 /// `lambdamat run FILE`.
 pub fn run(
-    file: &PathBuf,
+    file: &Path,
     out: &OutputArgs,
     max_memory: Option<u64>,
     w: &mut dyn Write,
@@ -63,13 +64,13 @@ pub fn run(
                 // solve below.
                 sep(w, &mut first)?;
                 if p.contact.is_split() {
-                    let list = super::reduce::split_reductions(p, *unknown)?;
+                    let list = crate::report::reduction::split_reductions(p, *unknown)?;
                     if out.json {
                         results.push(
-                            json!({"kind": "reduce", "result": super::reduce::split_json(&list)}),
+                            json!({"kind": "reduce", "result": crate::report::reduction::split_json(&list)}),
                         );
                     } else {
-                        write!(w, "{}", super::reduce::split_text(&list, out.latex))?;
+                        write!(w, "{}", crate::report::reduction::split_text(&list, out.latex))?;
                     }
                 } else {
                     let red = reduce_with(p, &derive(p, *unknown)?)?;

@@ -3,7 +3,8 @@
 //! reports and prints them. Also runs `check smith` directives for `run`.
 
 use super::error::CliError;
-use super::{OutputArgs, SmithArgs, read_source, render};
+use super::{OutputArgs, SmithArgs, read_source};
+use crate::report::smith as render;
 use crate::algebra::matrix::Matrix;
 use crate::algebra::polyring::PolyRing;
 use crate::algebra::smith::modes::{
@@ -23,17 +24,9 @@ pub fn to_matrix(symbols: &[String], m: &MatrixDef) -> Matrix<PolyRing> {
     )
 }
 
-/// A source file's text and the name it is shown under.
-pub struct Source {
-    /// The text.
-    pub text: String,
-    /// The file name as given.
-    pub name: String,
-}
-
 /// Reads the file at `path` and validates it with the command line's
 /// `--set` overrides: a [`crate::api::Problem`].
-pub fn load_problem(path: &std::path::PathBuf) -> Result<Problem, CliError> {
+pub fn load_problem(path: &std::path::Path) -> Result<Problem, CliError> {
     let (text, name) = read_source(path)?;
     Problem::with_sets(text, name, super::overrides().to_vec()).map_err(crate::api::Error::into_cli)
 }

@@ -11,10 +11,10 @@ use std::path::Path;
 
 use super::error::CliError;
 use super::output::{check_writable, write_file};
-use super::smith::{Source, load_problem};
+use super::smith::load_problem;
 use super::{SolveArgs, SolveFlags};
 use crate::api::SolveOptions;
-use crate::plan::{Method, PlanError};
+use crate::plan::Method;
 use crate::report::{Report, SolveSettings};
 
 /// `lambdamat solve FILE …`.
@@ -102,14 +102,5 @@ pub fn converged(r: &Report) -> Result<(), CliError> {
         Ok(())
     } else {
         Err(CliError::NotConverged(r.not_converged_message()))
-    }
-}
-
-/// A plan error pointed at its place in `src` (a kernel, a right side),
-/// when it has one.
-pub fn located(e: PlanError, src: &Source) -> CliError {
-    match super::locate::locate_plan_error(&e, &src.text, &src.name) {
-        Some(errs) => CliError::Lang(Box::new(errs)),
-        None => CliError::Plan(e),
     }
 }

@@ -26,7 +26,13 @@
 //!
 //! * [`text`]: the text report;
 //! * [`svg`]: the plot of the unknowns.
+//!
+//! The printers of the exact results live here too: `smith` (matrices,
+//! certificates, Smith and check reports as text and LaTeX) and
+//! `reduction` (a reduction as text, LaTeX and JSON).
 
+pub mod reduction;
+pub mod smith;
 #[cfg(feature = "cli")]
 pub mod svg;
 pub mod text;

@@ -1,4 +1,4 @@
-//! The command line's top-level error: it wraps each layer's error enum and
+//! The library's and the command line's one error: it wraps each layer's error enum and
 //! decides the exit code and how the error is shown (miette for source
 //! errors, one plain line otherwise). Nothing else in the CLI prints errors.
 //!
@@ -13,7 +13,7 @@
 //! | 4 | finished but not converged: results printed and marked, tolerance not reached |
 //!
 //! A closed standard output (`lambdamat … | head`) or standard error does
-//! not change the exit code (see [`super::output::Stdout`]); messages to a
+//! not change the exit code (see the CLI's `output::Stdout`); messages to a
 //! closed standard error are dropped.
 
 use crate::algebra::smith::modes::SmithError;

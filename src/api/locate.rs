@@ -88,6 +88,38 @@ fn integrals(e: &Expr, out: &mut Vec<Span>) {
     }
 }
 
+/// Reads a source file, mapping I/O errors to invalid input; text that is
+/// not UTF-8 is reported with the byte offset, line and column of the
+/// first bad byte.
+pub fn read_source(path: &std::path::Path) -> Result<(String, String), crate::error::CliError> {
+    let name = path.display().to_string();
+    let bytes = std::fs::read(path).map_err(|e| crate::error::CliError::Io {
+        path: name.clone(),
+        source: e,
+    })?;
+    let text = String::from_utf8(bytes).map_err(|e| {
+        let at = e.utf8_error().valid_up_to();
+        let bytes = e.as_bytes();
+        let good = String::from_utf8_lossy(&bytes[..at]);
+        let line = good.matches('\n').count() + 1;
+        let col = good.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+        crate::error::CliError::Invalid(format!(
+            "{name}:{line}:{col}: not UTF-8 text: byte 0x{:02x} at byte offset {at}",
+            bytes.get(at).copied().unwrap_or(0)
+        ))
+    })?;
+    Ok((text, name))
+}
+
+/// A plan error pointed at its place in the source when it has one (a
+/// language error), else kept as a plan error.
+pub(crate) fn located(e: crate::plan::PlanError, text: &str, name: &str) -> crate::error::CliError {
+    match locate_plan_error(&e, text, name) {
+        Some(errs) => crate::error::CliError::Lang(Box::new(errs)),
+        None => crate::error::CliError::Plan(e),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
