@@ -9,29 +9,30 @@ use lambdamat::plan::split::{SplitLevel, SplitProblem};
 use lambdamat::plan::{PlanError, SplitOptions};
 
 fn front(nu: f64, given: Given, tol: f64, max_level: usize) -> HertzResult {
-    solve(
-        nu,
-        given,
-        &SplitOptions {
-            tol,
-            max_level,
-            ..SplitOptions::default()
-        },
-    )
-    .expect("the front solves")
+    front_with(nu, given, tol, max_level, true)
 }
 
 /// The front with the unknowns kept out of convergence: the ladder stops
 /// on the scalar's tolerance alone, so a coarse `tol` gives a coarse mesh
 /// (the fields' default tolerance, 1e-6, would otherwise refine it too).
 fn front_scalars_only(nu: f64, given: Given, tol: f64, max_level: usize) -> HertzResult {
+    front_with(nu, given, tol, max_level, false)
+}
+
+fn front_with(
+    nu: f64,
+    given: Given,
+    tol: f64,
+    max_level: usize,
+    fields_converge: bool,
+) -> HertzResult {
     solve(
         nu,
         given,
         &SplitOptions {
             tol,
             max_level,
-            fields_converge: false,
+            fields_converge,
             ..SplitOptions::default()
         },
     )
