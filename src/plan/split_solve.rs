@@ -681,18 +681,24 @@ fn estimate_of_guarded(
 /// no such term (only the 32 ulps of [`level_estimate`]), and the
 /// gallery's estimates (all integrals) are unchanged.
 pub(super) fn point_rounding(problem: &SplitProblem, this: &Level, o: usize) -> f64 {
-    let weight: f64 = problem.sys.outputs[o]
+    let weight = point_weight(problem, o);
+    if weight == 0.0 {
+        return 0.0;
+    }
+    rounding_floor(this.cond) * weight.max(this.outputs[o].abs())
+}
+
+/// The sum of `|coeff|` over output `o`'s point values `coeff·u(c)`
+/// (0 for an output of integrals and constants only).
+fn point_weight(problem: &SplitProblem, o: usize) -> f64 {
+    problem.sys.outputs[o]
         .terms
         .iter()
         .map(|t| match t {
             super::compiled::OutputTerm::Point { coeff, .. } => coeff.abs(),
             _ => 0.0,
         })
-        .sum();
-    if weight == 0.0 {
-        return 0.0;
-    }
-    rounding_floor(this.cond) * weight.max(this.outputs[o].abs())
+        .sum()
 }
 
 /// [`estimate_of`] of output `o`, at least its [`point_rounding`]; an
@@ -704,12 +710,8 @@ pub(super) fn output_estimate(
     this: &Level,
     o: usize,
 ) -> f64 {
-    let point = point_rounding(problem, this, o);
-    let has_point = problem.sys.outputs[o]
-        .terms
-        .iter()
-        .any(|t| matches!(t, super::compiled::OutputTerm::Point { .. }));
-    estimate_of_guarded(levels, this, &|l| &l.outputs, o, !has_point).max(point)
+    let guarded = point_weight(problem, o) == 0.0;
+    estimate_of_guarded(levels, this, &|l| &l.outputs, o, guarded).max(point_rounding(problem, this, o))
 }
 
 /// One quantity's values on every level climbed, then on `this`.
