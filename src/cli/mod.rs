@@ -9,6 +9,8 @@
 //! * [`hertz`]: the flagship Hertz problem (solve, table, sweep);
 //! * [`plot`]: SVG plots;
 //! * [`smith`]: the `smith` command and the Smith part of `run`;
+//! * [`reduce`]: the `reduce` command and the `solve for` part of `run` (the
+//!   printers are `report::reduction`'s);
 //! * [`run`]: the `run` command (everything a file asks for);
 //! * [`solve`]: the `solve` command (numerical solution of the file's system);
 //! * [`codegen`]: the `codegen` command (a Rust solver for the file's system).
