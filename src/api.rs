@@ -44,18 +44,39 @@ pub use self::hertz::{
     hertz_report, hertz_sweep, hertz_table,
 };
 
-/// What kind of failure an [`Error`] is; each kind is one of the command
-/// line's exit codes.
+/// What kind of failure an [`Error`] is; each kind maps to one of the
+/// command line's exit codes ([`Error::exit_code`]). New kinds may be
+/// added, so a `match` on it needs a wildcard arm.
+///
+/// ```
+/// use lambdamat::{ErrorKind, Problem};
+/// let e = Problem::from_file("no/such/file.lmx").unwrap_err();
+/// assert_eq!(e.kind(), ErrorKind::Io);
+/// assert_eq!(e.exit_code(), 2);
+/// let e = Problem::from_source("var x\nmatrix A = [y]", "a.lmx").unwrap_err();
+/// assert_eq!(e.kind(), ErrorKind::InvalidInput);
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum ErrorKind {
-    /// Invalid input: the text, a parameter, an option or a path (exit 2);
-    /// nothing was computed.
+    /// Invalid input: the text, a parameter or an option (exit 2); nothing
+    /// was computed.
     InvalidInput,
+    /// A file could not be read or written (exit 2, as invalid input: the
+    /// path given is wrong); nothing was computed.
+    Io,
     /// A computation refused or failed, naming the cause (exit 3).
     ComputationFailed,
 }
 
-/// A place in a source file an [`Error`] points at (1-based).
+/// A place in a source file an [`Error`] points at (1-based); see
+/// [`Error::locations`].
+///
+/// ```
+/// let e = lambdamat::Problem::from_source("var x\n\nmatrix A = [x, z]", "a.lmx").unwrap_err();
+/// let lambdamat::Location { file, line, column } = e.locations()[0].clone();
+/// assert_eq!(format!("{file}:{line}:{column}"), "a.lmx:3:16");
+/// ```
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Location {
     /// The file name as given to [`Problem::from_source`] or
@@ -83,16 +104,31 @@ pub struct Location {
 pub struct Error(CliError);
 
 impl Error {
-    /// The kind (invalid input or failed computation).
+    /// The kind: invalid input, a file that cannot be read or written, or
+    /// a failed computation.
+    ///
+    /// ```
+    /// use lambdamat::{ErrorKind, Problem, SolveOptions};
+    /// // A file with a matrix and no system parses, but has nothing to solve.
+    /// let p = Problem::from_source("var x\nmatrix A = [x, 1]", "a.lmx")?;
+    /// let e = p.solve(&SolveOptions::default()).unwrap_err();
+    /// assert_eq!(e.kind(), ErrorKind::InvalidInput);
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn kind(&self) -> ErrorKind {
-        if self.exit_code() == crate::error::EXIT_FAILED {
-            ErrorKind::ComputationFailed
-        } else {
-            ErrorKind::InvalidInput
+        match &self.0 {
+            CliError::Io { .. } | CliError::Write { .. } => ErrorKind::Io,
+            _ if self.exit_code() == crate::error::EXIT_FAILED => ErrorKind::ComputationFailed,
+            _ => ErrorKind::InvalidInput,
         }
     }
 
     /// The exit code `lambdamat` ends with for this error: 2 or 3.
+    ///
+    /// ```
+    /// let e = lambdamat::Problem::from_source("unknown f on [0, 1", "a.lmx").unwrap_err();
+    /// assert_eq!(e.exit_code(), 2);
+    /// ```
     pub fn exit_code(&self) -> i32 {
         match self.0.exit_code() {
             crate::error::EXIT_FAILED => crate::error::EXIT_FAILED,
@@ -101,6 +137,12 @@ impl Error {
     }
 
     /// The source places the error points at (empty when it names none).
+    ///
+    /// ```
+    /// let e = lambdamat::Problem::from_source("var x\nmatrix A = [x, z]", "a.lmx").unwrap_err();
+    /// let at = &e.locations()[0];
+    /// assert_eq!((at.file.as_str(), at.line, at.column), ("a.lmx", 2, 16));
+    /// ```
     pub fn locations(&self) -> Vec<Location> {
         match &self.0 {
             CliError::Lang(errs) => errs
@@ -188,7 +230,16 @@ pub struct Problem {
 }
 
 impl Problem {
-    /// Parses and validates `text`, shown as `name` in messages.
+    /// Parses and validates `text`, shown as `name` in messages. Invalid
+    /// text is an [`Error`] naming `name`, line and column.
+    ///
+    /// ```
+    /// let p = lambdamat::Problem::from_source("var x\nmatrix A = [x, 1; 0, x]", "m.lmx")?;
+    /// assert_eq!(p.name(), "m.lmx");
+    /// let e = lambdamat::Problem::from_source("var x\nmatrix A = [x, 1; 0]", "m.lmx").unwrap_err();
+    /// assert_eq!(e.locations()[0].file, "m.lmx");
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn from_source(text: &str, name: &str) -> Result<Problem, Error> {
         Problem::with_sets(text.to_string(), name.to_string(), Vec::new())
     }
@@ -261,11 +312,24 @@ impl Problem {
     }
 
     /// The name the source is shown under.
+    ///
+    /// ```
+    /// let p = lambdamat::Problem::from_source("var x\nmatrix A = [x]", "mine.lmx")?;
+    /// assert_eq!(p.name(), "mine.lmx");
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn name(&self) -> &str {
         &self.name
     }
 
     /// The source text (without the settings of [`Problem::with_set`]).
+    ///
+    /// ```
+    /// let p = lambdamat::Problem::from_source("param a = 1\nvar x\nmatrix A = [a*x]", "m.lmx")?;
+    /// let q = p.with_set(&[("a".into(), "2".into())])?;
+    /// assert_eq!(q.source(), p.source());
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn source(&self) -> &str {
         &self.text
     }
@@ -273,6 +337,15 @@ impl Problem {
     /// The parameters in definition order: each name and its value as
     /// written in the file (or as set by [`Problem::with_set`], printed
     /// exactly).
+    ///
+    /// ```
+    /// let p = lambdamat::Problem::from_file("examples/hertz.lmx")?;
+    /// for (name, value) in p.params() {
+    ///     println!("{name} = {value}");
+    /// }
+    /// assert_eq!(p.params()[0].0, "nu");
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn params(&self) -> Vec<(String, String)> {
         let text = crate::lang::strip_bom(&self.text);
         let Ok(ast) = crate::lang::parse_ast(text, &self.name) else {
@@ -505,6 +578,13 @@ impl Problem {
 
 /// A float as `--set` reads it: its shortest decimal (`0.1801`, not the
 /// binary double's exact expansion).
+///
+/// ```
+/// assert_eq!(lambdamat::api::float_text(0.1801), "0.1801");
+/// let s = lambdamat::api::parse_sets(&[("mu".into(), lambdamat::api::float_text(0.3))])?;
+/// assert_eq!(s[0].1.to_string(), "3/10");
+/// # Ok::<(), lambdamat::Error>(())
+/// ```
 pub fn float_text(x: f64) -> String {
     format!("{x}")
 }
@@ -534,6 +614,11 @@ pub(crate) fn principal_of(p: &Program, flag: Option<&str>) -> Result<Option<usi
 
 /// The highest refinement level a solve tries by default (the command
 /// line's `--max-level` default).
+///
+/// ```
+/// assert_eq!(lambdamat::SolveOptions::default().max_level, None); // means this
+/// assert_eq!(lambdamat::api::DEFAULT_MAX_LEVEL, 8);
+/// ```
 pub const DEFAULT_MAX_LEVEL: usize = 8;
 
 /// Options of [`Problem::solve`].
@@ -606,6 +691,14 @@ pub use crate::algebra::smith::certify::Check;
 pub use crate::reduce::{OrderedForm, Printed};
 
 /// Options of [`Problem::smith`].
+///
+/// ```
+/// use lambdamat::{Problem, SmithOptions};
+/// let p = Problem::from_source("var x, y\nmatrix A = [x, y; 0, x]\nmatrix B = [y]", "m.lmx")?;
+/// let s = p.smith(&SmithOptions { matrix: Some("B".into()), principal: Some("y".into()) })?;
+/// assert_eq!(s.name(), "B");
+/// # Ok::<(), lambdamat::Error>(())
+/// ```
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct SmithOptions {
     /// The principal symbol λ (overrides the file's `principal` line).
@@ -649,62 +742,162 @@ impl SmithForm {
     }
 
     /// The matrix's name (`A` for an operator system's λ-matrix).
+    ///
+    /// ```
+    /// use lambdamat::{Problem, SmithOptions};
+    /// let p = Problem::from_source("var x\nmatrix A = [x, 1; 0, x]", "m.lmx")?;
+    /// let s = p.smith(&SmithOptions::default())?;
+    /// assert_eq!(s.name(), "A");
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn name(&self) -> &str {
         &self.report.matrix
     }
 
     /// The ring, e.g. `Q[x]` or `Q(k1, k2, k3)[k4]`.
+    ///
+    /// ```
+    /// use lambdamat::{Problem, SmithOptions};
+    /// let p = Problem::from_source("var x\nmatrix A = [x, 1; 0, x]", "m.lmx")?;
+    /// let s = p.smith(&SmithOptions::default())?;
+    /// assert_eq!(s.ring(), "Q[x]");
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn ring(&self) -> &str {
         &self.report.ring
     }
 
     /// The input matrix A.
+    ///
+    /// ```
+    /// use lambdamat::{Problem, SmithOptions};
+    /// let p = Problem::from_source("var x\nmatrix A = [x, 1; 0, x]", "m.lmx")?;
+    /// let s = p.smith(&SmithOptions::default())?;
+    /// assert_eq!(s.a()[0], ["x", "1"]);
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn a(&self) -> &[Vec<String>] {
         &self.report.a
     }
 
-    /// The nonzero invariant factors.
+    /// The nonzero invariant factors, each monic, each dividing the next.
+    ///
+    /// ```
+    /// use lambdamat::{Problem, SmithOptions};
+    /// let p = Problem::from_source("var x\nmatrix A = [x, 1; 0, x]", "m.lmx")?;
+    /// let s = p.smith(&SmithOptions::default())?;
+    /// assert_eq!(s.invariant_factors(), ["1", "x^2"]);
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn invariant_factors(&self) -> &[String] {
         &self.report.invariant_factors
     }
 
-    /// D.
+    /// D, the diagonal matrix of invariant factors.
+    ///
+    /// ```
+    /// use lambdamat::{Problem, SmithOptions};
+    /// let p = Problem::from_source("var x\nmatrix A = [x, 1; 0, x]", "m.lmx")?;
+    /// let s = p.smith(&SmithOptions::default())?;
+    /// assert_eq!(s.d(), [["1", "0"], ["0", "x^2"]]);
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn d(&self) -> &[Vec<String>] {
         &self.report.d
     }
 
     /// U (None in the determinantal-divisor mode, which gives D only).
+    ///
+    /// ```
+    /// use lambdamat::{Problem, SmithOptions};
+    /// let p = Problem::from_source("var x\nmatrix A = [x, 1; 0, x]", "m.lmx")?;
+    /// let s = p.smith(&SmithOptions::default())?;
+    /// let u = s.u().expect("U is computed");
+    /// assert_eq!((u.len(), u[0].len()), (2, 2));
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn u(&self) -> Option<&[Vec<String>]> {
         self.report.u.as_deref()
     }
 
     /// V (None in the determinantal-divisor mode).
+    ///
+    /// ```
+    /// use lambdamat::{Problem, SmithOptions};
+    /// let p = Problem::from_source("var x\nmatrix A = [x, 1; 0, x]", "m.lmx")?;
+    /// let s = p.smith(&SmithOptions::default())?;
+    /// let v = s.v().expect("V is computed");
+    /// assert_eq!((v.len(), v[0].len()), (2, 2));
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn v(&self) -> Option<&[Vec<String>]> {
         self.report.v.as_deref()
     }
 
     /// Whether every check of the certificate passed (always true for a
     /// returned form: a failure is an [`Error`]).
+    ///
+    /// ```
+    /// use lambdamat::{Problem, SmithOptions};
+    /// let p = Problem::from_source("var x\nmatrix A = [x, 1; 0, x]", "m.lmx")?;
+    /// let s = p.smith(&SmithOptions::default())?;
+    /// assert!(s.verified());
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn verified(&self) -> bool {
         self.report.verified
     }
 
     /// The certificate: each property checked, recomputed from A, U, D, V.
+    ///
+    /// ```
+    /// use lambdamat::{Problem, SmithOptions};
+    /// let p = Problem::from_source("var x\nmatrix A = [x, 1; 0, x]", "m.lmx")?;
+    /// let s = p.smith(&SmithOptions::default())?;
+    /// assert!(!s.certificate().is_empty());
+    /// assert!(s.certificate().iter().all(|c| c.ok));
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn certificate(&self) -> &[Check] {
         &self.report.certificate
     }
 
     /// The text `lambdamat smith` prints.
+    ///
+    /// ```
+    /// use lambdamat::{Problem, SmithOptions};
+    /// let p = Problem::from_source("var x\nmatrix A = [x, 1; 0, x]", "m.lmx")?;
+    /// let s = p.smith(&SmithOptions::default())?;
+    /// assert!(s.text().contains("x^2"));
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn text(&self) -> String {
         crate::report::smith::smith_text(&self.report)
     }
 
     /// The LaTeX `lambdamat smith --latex` prints.
+    ///
+    /// ```
+    /// use lambdamat::{Problem, SmithOptions};
+    /// let p = Problem::from_source("var x\nmatrix A = [x, 1; 0, x]", "m.lmx")?;
+    /// let s = p.smith(&SmithOptions::default())?;
+    /// assert!(s.latex().contains("x^{2}"));
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn latex(&self) -> String {
         crate::report::smith::smith_latex(&self.report)
     }
 
     /// The JSON `lambdamat smith --json` prints.
+    ///
+    /// ```
+    /// use lambdamat::{Problem, SmithOptions};
+    /// let p = Problem::from_source("var x\nmatrix A = [x, 1; 0, x]", "m.lmx")?;
+    /// let s = p.smith(&SmithOptions::default())?;
+    /// let v: serde_json::Value = serde_json::from_str(&s.to_json()).unwrap();
+    /// assert_eq!(v["invariant_factors"][1], "x^2");
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn to_json(&self) -> String {
         serde_json::to_string_pretty(&self.report).unwrap_or_default()
     }
@@ -735,6 +928,14 @@ impl Reduction {
 
     /// Each subinterval's label and reduction (one unlabelled piece for a
     /// file on one interval).
+    ///
+    /// ```
+    /// let r = lambdamat::Problem::from_file("examples/generic3.lmx")?.reduce(None)?;
+    /// let pieces = r.pieces();
+    /// assert_eq!(pieces.len(), 1);
+    /// assert_eq!(pieces[0].0, None);
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn pieces(&self) -> Vec<(Option<&str>, Reduction)> {
         self.pieces
             .iter()
@@ -748,22 +949,49 @@ impl Reduction {
     }
 
     /// The unknown solved for.
+    ///
+    /// ```
+    /// let r = lambdamat::Problem::from_file("examples/generic3.lmx")?.reduce(None)?;
+    /// assert_eq!(r.unknown(), "u1");
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn unknown(&self) -> &str {
         &self.value().unknown
     }
 
     /// The commutative eliminant's operator on the unknown, printed.
+    ///
+    /// ```
+    /// let r = lambdamat::Problem::from_file("examples/generic3.lmx")?.reduce(None)?;
+    /// // The determinant of the 3×3 λ-matrix acts on u1.
+    /// assert!(r.eliminant().lmx.contains("k1*k5*k9"));
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn eliminant(&self) -> Printed {
         crate::reduce::Printed::of(&self.value().lhs_node)
     }
 
     /// The ordered elimination's form, or why there is none.
+    ///
+    /// ```
+    /// let r = lambdamat::Problem::from_file("examples/generic3.lmx")?.reduce(None)?;
+    /// assert!(r.ordered().is_ok());
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn ordered(&self) -> Result<&OrderedForm, &str> {
         self.value().ordered.as_ref().map_err(String::as_str)
     }
 
     /// The pairs of operators the commutative eliminant treats as
     /// commuting.
+    ///
+    /// ```
+    /// let r = lambdamat::Problem::from_file("examples/generic3.lmx")?.reduce(None)?;
+    /// for [a, b] in r.commuted_pairs() {
+    ///     assert_ne!(a, b);
+    /// }
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn commuted_pairs(&self) -> Vec<[String; 2]> {
         self.value()
             .commuted_pairs
@@ -773,11 +1001,23 @@ impl Reduction {
     }
 
     /// The text `lambdamat reduce` prints.
+    ///
+    /// ```
+    /// let r = lambdamat::Problem::from_file("examples/generic3.lmx")?.reduce(None)?;
+    /// assert!(r.text().contains("u1"));
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn text(&self) -> String {
         self.print(false)
     }
 
     /// The LaTeX `lambdamat reduce --latex` prints.
+    ///
+    /// ```
+    /// let r = lambdamat::Problem::from_file("examples/generic3.lmx")?.reduce(None)?;
+    /// assert!(r.latex().contains("u_{1}") || r.latex().contains("u1"));
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn latex(&self) -> String {
         self.print(true)
     }
@@ -798,6 +1038,13 @@ impl Reduction {
     }
 
     /// The JSON `lambdamat reduce --json` prints.
+    ///
+    /// ```
+    /// let r = lambdamat::Problem::from_file("examples/generic3.lmx")?.reduce(None)?;
+    /// let v: serde_json::Value = serde_json::from_str(&r.to_json()).unwrap();
+    /// assert_eq!(v["unknown"], "u1");
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn to_json(&self) -> String {
         let v = match self.split_list() {
             Some(list) => crate::report::reduction::split_json(&list),

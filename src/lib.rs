@@ -36,6 +36,9 @@
 //! are public only with the feature `internals`: unstable internals for the
 //! project's own tests, benches and probes; not part of the API.
 
+// Every public item is documented; the internals, public only for the
+// project's own tests with the feature `internals`, are not API.
+#![cfg_attr(not(feature = "internals"), warn(missing_docs))]
 // Without the command line (`default-features = false`, the build generated
 // solvers and the Python package depend on) and without `internals`, only
 // `api` and `standalone` are public: the parts of the pipeline only the

@@ -114,7 +114,9 @@ fn source_errors_carry_locations_and_the_cli_message() {
     assert_eq!(code, e.exit_code());
     assert_eq!(err, format!("{e}\n"));
     let missing = Problem::from_file(dir.path().join("none.lmx")).expect_err("missing");
-    assert_eq!(missing.kind(), ErrorKind::InvalidInput);
+    assert_eq!(missing.kind(), ErrorKind::Io);
+    assert_eq!(missing.exit_code(), 2);
+    assert!(missing.locations().is_empty());
     assert!(missing.to_string().starts_with("error: cannot read"));
 }
 

@@ -35,8 +35,11 @@ pyo3::create_exception!(
 fn to_py(py: Python<'_>, e: lambdamat::Error) -> PyErr {
     let msg = e.to_string();
     let err = match e.kind() {
-        ErrorKind::InvalidInput => InvalidInput::new_err(msg),
+        // A file that cannot be read is invalid input, as its exit code says.
+        ErrorKind::InvalidInput | ErrorKind::Io => InvalidInput::new_err(msg),
         ErrorKind::ComputationFailed => ComputationFailed::new_err(msg),
+        _ if e.exit_code() == 3 => ComputationFailed::new_err(msg),
+        _ => InvalidInput::new_err(msg),
     };
     let first = e.locations().into_iter().next();
     let value = err.value(py);

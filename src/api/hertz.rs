@@ -104,6 +104,14 @@ impl std::fmt::Debug for Hertz {
 /// one of the physical limits the solver does not resolve, the JSON
 /// `lambdamat hertz --json` prints for it (the error and the limit's
 /// asymptotic values, for information).
+///
+/// ```
+/// use lambdamat::api::{Given, HertzOptions, hertz_report};
+/// let r = hertz_report(0.25, Given::C(1.5), &HertzOptions::default()).unwrap_err();
+/// assert_eq!(r.error().exit_code(), 2); // c lies in (0, 1]
+/// let e: lambdamat::Error = r.into();
+/// assert!(!e.to_string().is_empty());
+/// ```
 #[derive(Debug)]
 pub struct HertzRefusal {
     error: Error,
@@ -112,12 +120,26 @@ pub struct HertzRefusal {
 
 impl HertzRefusal {
     /// The error (its text states the limit, when there is one).
+    ///
+    /// ```
+    /// use lambdamat::api::{Given, HertzOptions, hertz_report};
+    /// let r = hertz_report(0.25, Given::Mu(-1.0), &HertzOptions::default()).unwrap_err();
+    /// assert_eq!(r.error().kind(), lambdamat::ErrorKind::InvalidInput);
+    /// ```
     pub fn error(&self) -> &Error {
         &self.error
     }
 
     /// The JSON object of a refusal at a physical limit (`None` for any
     /// other failure).
+    ///
+    /// ```
+    /// use lambdamat::api::{Given, HertzOptions, hertz_report};
+    /// // ν = −0.9, μ = 0.01 puts c near 1e-25, in the small-friction limit.
+    /// let opts = HertzOptions { tol: 1e-11, ..HertzOptions::default() };
+    /// let r = hertz_report(-0.9, Given::Mu(0.01), &opts).unwrap_err();
+    /// assert!(r.limit_json().unwrap().contains("small"));
+    /// ```
     pub fn limit_json(&self) -> Option<&str> {
         self.json.as_deref()
     }
@@ -210,36 +232,87 @@ pub fn hertz(nu: f64, given: Given, tol: f64) -> Result<Solution, Error> {
 
 impl Hertz {
     /// Poisson's ratio.
+    ///
+    /// ```
+    /// use lambdamat::api::{Given, HertzOptions, hertz_report};
+    /// let h = hertz_report(0.25, Given::Mu(0.1801), &HertzOptions { tol: 1e-7, ..HertzOptions::default() })?;
+    /// assert_eq!(h.nu(), 0.25);
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn nu(&self) -> f64 {
         self.result.nu
     }
 
     /// The stick radius (given or found; 0 without friction, 1 at ν = 1/2).
+    ///
+    /// ```
+    /// use lambdamat::api::{Given, HertzOptions, hertz_report};
+    /// let h = hertz_report(0.25, Given::Mu(0.1801), &HertzOptions { tol: 1e-7, ..HertzOptions::default() })?;
+    /// assert!((h.c() - 0.4956467).abs() < 1e-6);
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn c(&self) -> f64 {
         self.result.c
     }
 
     /// The friction coefficient (given or found).
+    ///
+    /// ```
+    /// use lambdamat::api::{Given, HertzOptions, hertz_report};
+    /// let h = hertz_report(0.25, Given::Mu(0.1801), &HertzOptions { tol: 1e-7, ..HertzOptions::default() })?;
+    /// assert_eq!(h.mu(), 0.1801);
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn mu(&self) -> f64 {
         self.result.mu
     }
 
     /// The compliance `P* = (π/2) ∫ x p dx`.
+    ///
+    /// ```
+    /// use lambdamat::api::{Given, HertzOptions, hertz_report};
+    /// let h = hertz_report(0.25, Given::Mu(0.1801), &HertzOptions { tol: 1e-7, ..HertzOptions::default() })?;
+    /// // Friction stiffens the contact a little: P* lies between 1 (no friction)
+    /// // and artanh(γ)/γ (full stick).
+    /// assert!(h.compliance() > 1.0 && h.compliance() < 1.1);
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn compliance(&self) -> f64 {
         self.result.compliance
     }
 
     /// The largest absolute estimate of the found scalar and the outputs.
+    ///
+    /// ```
+    /// use lambdamat::api::{Given, HertzOptions, hertz_report};
+    /// let h = hertz_report(0.25, Given::Mu(0.1801), &HertzOptions { tol: 1e-7, ..HertzOptions::default() })?;
+    /// assert!(h.error_estimate() <= h.tol());
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn error_estimate(&self) -> f64 {
         self.result.error_estimate
     }
 
     /// Whether every estimate reached the tolerance.
+    ///
+    /// ```
+    /// use lambdamat::api::{Given, HertzOptions, hertz_report};
+    /// let h = hertz_report(0.25, Given::Mu(0.1801), &HertzOptions { tol: 1e-7, ..HertzOptions::default() })?;
+    /// assert!(h.converged());
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn converged(&self) -> bool {
         self.result.converged
     }
 
     /// The requested tolerance.
+    ///
+    /// ```
+    /// use lambdamat::api::{Given, HertzOptions, hertz_report};
+    /// let h = hertz_report(0.25, Given::Mu(0.1801), &HertzOptions { tol: 1e-7, ..HertzOptions::default() })?;
+    /// assert_eq!(h.tol(), 1e-7);
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn tol(&self) -> f64 {
         self.result.tol
     }
@@ -250,17 +323,43 @@ impl Hertz {
     }
 
     /// The report of the language file's solve (see [`hertz`]).
+    ///
+    /// ```
+    /// use lambdamat::api::{Given, HertzOptions, hertz_report};
+    /// let h = hertz_report(0.25, Given::Mu(0.1801), &HertzOptions { tol: 1e-7, ..HertzOptions::default() })?;
+    /// let (c, s) = (h.c(), h.into_solution());
+    /// assert_eq!(s.scalars["c"], c);
+    /// assert!(s.unknowns.contains_key("p"));
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn into_solution(self) -> Solution {
         self.result.into_file_report()
     }
 
     /// The JSON `lambdamat hertz --json` prints.
+    ///
+    /// ```
+    /// use lambdamat::api::{Given, HertzOptions, hertz_report};
+    /// let h = hertz_report(0.25, Given::Mu(0.1801), &HertzOptions { tol: 1e-7, ..HertzOptions::default() })?;
+    /// let v: serde_json::Value = serde_json::from_str(&h.to_json()).unwrap();
+    /// assert_eq!(v["nu"], 0.25);
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn to_json(&self) -> String {
         serde_json::to_string_pretty(&self.result).unwrap_or_default()
     }
 
     /// `x, p, q, mu_p, u` on a fine grid, each field followed by its error
     /// estimate (`*_err`), as CSV: what `lambdamat hertz --csv FILE` writes.
+    ///
+    /// ```
+    /// use lambdamat::api::{Given, HertzOptions, hertz_report};
+    /// let h = hertz_report(0.25, Given::Mu(0.1801), &HertzOptions { tol: 1e-7, ..HertzOptions::default() })?;
+    /// let csv = h.profile_csv()?;
+    /// assert!(csv.starts_with("x,p,p_err,q,"));
+    /// assert!(csv.lines().count() > 100);
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn profile_csv(&self) -> Result<String, Error> {
         let samples = self.result.profile(400)?;
         let mut out = String::from("x,p,p_err,q,q_err,mu_p,mu_p_err,u,u_err\n");
@@ -275,6 +374,13 @@ impl Hertz {
     }
 
     /// The text `lambdamat hertz` prints.
+    ///
+    /// ```
+    /// use lambdamat::api::{Given, HertzOptions, hertz_report};
+    /// let h = hertz_report(0.25, Given::Mu(0.1801), &HertzOptions { tol: 1e-7, ..HertzOptions::default() })?;
+    /// assert!(h.text().contains("c = 0.49564"));
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn text(&self) -> String {
         text(&self.result, matches!(self.given, Given::C(_)))
     }
@@ -463,6 +569,13 @@ fn text(s: &HertzResult, given_c: bool) -> String {
 }
 
 /// How the solves of a table or sweep ended.
+///
+/// ```
+/// let s = lambdamat::api::hertz_sweep(&[0.25], &[0.1801], 1e-7, &|| {})?;
+/// let t = s.tally();
+/// assert_eq!((t.total, t.failed, t.not_converged), (1, 0, 0));
+/// # Ok::<(), lambdamat::Error>(())
+/// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Tally {
     /// How many solves there were.
@@ -516,6 +629,12 @@ fn seed_cell(nu: f64, mu: f64, c: f64, tol: f64) -> String {
 /// The seed paper's Tables 1 and 2 beside lambdamat's values: what
 /// `lambdamat hertz table` prints ([`HertzTable::markdown`],
 /// [`HertzTable::csv`]). A failed solve is a cell with its error.
+///
+/// ```no_run
+/// let t = lambdamat::api::hertz_table(None, 1e-8)?;
+/// print!("{}", t.markdown());
+/// # Ok::<(), lambdamat::Error>(())
+/// ```
 #[derive(Debug)]
 pub struct HertzTable {
     which: Option<u8>,
@@ -648,12 +767,24 @@ pub fn hertz_table(which: Option<u8>, tol: f64) -> Result<HertzTable, Error> {
 
 impl HertzTable {
     /// How the solves ended.
+    ///
+    /// ```no_run
+    /// let t = lambdamat::api::hertz_table(Some(2), 1e-8)?;
+    /// assert_eq!(t.tally().failed, 0);
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn tally(&self) -> Tally {
         self.tally
     }
 
     /// The table as CSV: Table 2 if only it was computed, else Table 1
     /// (what `lambdamat hertz table --csv` prints).
+    ///
+    /// ```no_run
+    /// let t = lambdamat::api::hertz_table(Some(2), 1e-8)?;
+    /// assert!(t.csv().starts_with("ν,c,seed μ"));
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn csv(&self) -> String {
         if self.which == Some(2) {
             csv_rows(&HEAD2, &self.rows2)
@@ -664,6 +795,12 @@ impl HertzTable {
 
     /// The computed tables as Markdown with their notes (what `lambdamat
     /// hertz table` prints).
+    ///
+    /// ```no_run
+    /// let t = lambdamat::api::hertz_table(Some(1), 1e-8)?;
+    /// assert!(t.markdown().contains("seed c1 (Spence)"));
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn markdown(&self) -> String {
         let mut w = String::new();
         if self.which != Some(2) {
@@ -720,6 +857,14 @@ fn csv_rows(head: &[&str], rows: &[Vec<String>]) -> String {
 }
 
 /// The most points a sweep solves (ν count × μ count).
+///
+/// ```
+/// let nus = vec![0.25; 1000];
+/// let mus = vec![0.5; 101];
+/// assert!(1000 * 101 > lambdamat::api::MAX_SWEEP_POINTS);
+/// let e = lambdamat::api::hertz_sweep(&nus, &mus, 1e-8, &|| {}).unwrap_err();
+/// assert_eq!(e.exit_code(), 2);
+/// ```
 pub const MAX_SWEEP_POINTS: usize = 100_000;
 
 #[derive(Debug, serde::Serialize)]
@@ -769,6 +914,12 @@ fn bounded(s: &HertzResult) -> Option<String> {
 /// a failed point being a row with its error; what `lambdamat hertz
 /// sweep` prints ([`HertzSweep::csv`], [`HertzSweep::jsonl`],
 /// [`HertzSweep::summary`]).
+///
+/// ```
+/// let s = lambdamat::api::hertz_sweep(&[0.0, 0.25], &[0.5], 1e-7, &|| {})?;
+/// assert_eq!(s.tally().total, 2);
+/// # Ok::<(), lambdamat::Error>(())
+/// ```
 #[derive(Debug)]
 pub struct HertzSweep {
     rows: Vec<SweepRow>,
@@ -862,11 +1013,25 @@ pub fn hertz_sweep(
 
 impl HertzSweep {
     /// How the solves ended.
+    ///
+    /// ```
+    /// let s = lambdamat::api::hertz_sweep(&[0.25], &[0.1801, 1.0], 1e-7, &|| {})?;
+    /// assert_eq!(s.tally(), lambdamat::api::Tally { total: 2, failed: 0, not_converged: 0 });
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn tally(&self) -> Tally {
         self.tally
     }
 
     /// One JSON object per row, one per line (`--jsonl`).
+    ///
+    /// ```
+    /// let s = lambdamat::api::hertz_sweep(&[0.25], &[0.1801, 1.0], 1e-7, &|| {})?;
+    /// assert_eq!(s.jsonl().lines().count(), 2);
+    /// let row: serde_json::Value = serde_json::from_str(s.jsonl().lines().next().unwrap()).unwrap();
+    /// assert_eq!(row["mu"], 0.1801);
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn jsonl(&self) -> String {
         let mut text = String::new();
         for r in &self.rows {
@@ -876,6 +1041,12 @@ impl HertzSweep {
     }
 
     /// The rows as CSV with a header line (the default output).
+    ///
+    /// ```
+    /// let s = lambdamat::api::hertz_sweep(&[0.25], &[0.1801, 1.0], 1e-7, &|| {})?;
+    /// assert_eq!(s.csv().lines().count(), 3);
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn csv(&self) -> String {
         let mut text = String::from(
             "nu,mu,c,alpha,compliance,compliance_via_shear,error_estimate,stick_ok,slip_ok,error,limit,c_asymptotic_low,c_asymptotic_high,compliance_asymptotic,end_answer\n",
@@ -918,6 +1089,12 @@ impl HertzSweep {
     /// solved points (stick, slip, 0 < c < 1 or c = 1 at ν = 1/2; c
     /// non-decreasing in μ at each ν, whatever order the μ range was given
     /// in). The command line prints it on standard error.
+    ///
+    /// ```
+    /// let s = lambdamat::api::hertz_sweep(&[0.25], &[0.1801, 1.0], 1e-7, &|| {})?;
+    /// assert!(s.summary().contains("2"));
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn summary(&self) -> String {
         let rows = &self.rows;
         let solved: Vec<&SweepRow> = rows.iter().filter(|r| r.c.is_some()).collect();

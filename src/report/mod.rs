@@ -53,6 +53,19 @@ use crate::system::Program;
 pub const GRID_POINTS: usize = 101;
 
 /// An unknown on the output grid.
+///
+/// ```
+/// let p = lambdamat::Problem::from_source(
+///     "unknown f on [0, 1]\noperator k = int(0..x) dt\nequation f + k f = 1\noutput F = int(0..1) f(x) dx",
+///     "ex.lmx",
+/// )?;
+/// let s = p.solve(&lambdamat::SolveOptions::default())?;
+/// let f = &s.unknowns["f"];
+/// assert_eq!(f.x.len(), f.values.len());
+/// // f = exp(-x)
+/// assert!((f.values[0] - 1.0).abs() <= f.error_estimate + 1e-12);
+/// # Ok::<(), lambdamat::Error>(())
+/// ```
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Field {
     /// Grid points (points where the unknown is unbounded are left out).
@@ -67,6 +80,18 @@ pub struct Field {
 }
 
 /// What a numerical solve found, in one shape for every file.
+///
+/// ```
+/// let p = lambdamat::Problem::from_source(
+///     "unknown f on [0, 1]\noperator k = int(0..x) dt\nequation f + k f = 1\noutput F = int(0..1) f(x) dx",
+///     "ex.lmx",
+/// )?;
+/// let s = p.solve(&lambdamat::SolveOptions::default())?;
+/// assert!(s.converged);
+/// assert!(s.error_estimates["F"] <= 1e-10);
+/// assert!(s.warnings.is_empty());
+/// # Ok::<(), lambdamat::Error>(())
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct Report {
     /// `ordered`, `coupled`, `commutative`, or the split solver's method.
@@ -427,6 +452,18 @@ impl Report {
     /// `error_estimates` (absolute), `warnings`, then the track-specific
     /// keys of [`Report::extra`]. Non-finite numbers are written as null
     /// (they occur only in a report that did not converge).
+    ///
+    /// ```
+    /// let p = lambdamat::Problem::from_source(
+    ///     "unknown f on [0, 1]\noperator k = int(0..x) dt\nequation f + k f = 1\noutput F = int(0..1) f(x) dx",
+    ///     "ex.lmx",
+    /// )?;
+    /// let s = p.solve(&lambdamat::SolveOptions::default())?;
+    /// let v = s.to_json();
+    /// assert_eq!(v["converged"], true);
+    /// assert!(v["unknowns"]["f"]["values"].is_array());
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn to_json(&self) -> Value {
         let nums = |m: &BTreeMap<String, f64>| -> Map<String, Value> {
             m.iter().map(|(k, v)| (k.clone(), finite(*v))).collect()
@@ -472,6 +509,16 @@ impl Report {
     /// The unknowns as CSV: `x` and one column per unknown, on the union
     /// of the unknowns' grids (a cell is empty where an unknown has no
     /// value).
+    ///
+    /// ```
+    /// let p = lambdamat::Problem::from_source(
+    ///     "unknown f on [0, 1]\noperator k = int(0..x) dt\nequation f + k f = 1\noutput F = int(0..1) f(x) dx",
+    ///     "ex.lmx",
+    /// )?;
+    /// let s = p.solve(&lambdamat::SolveOptions::default())?;
+    /// assert!(s.csv().starts_with("x,f\n"));
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn csv(&self) -> String {
         let mut s = String::from("x");
         for name in self.unknowns.keys() {
@@ -497,6 +544,18 @@ impl Report {
 
     /// The message of a result that did not reach its tolerance (exit 4),
     /// the same for `lambdamat solve` and generated solvers.
+    ///
+    /// ```
+    /// let p = lambdamat::Problem::from_source(
+    ///     "unknown f on [0, 1]\noperator k = int(0..x) dt\nequation f + k f = 1\noutput F = int(0..1) f(x) dx",
+    ///     "ex.lmx",
+    /// )?;
+    /// let s = p.solve(&lambdamat::SolveOptions::default())?;
+    /// let mut r = s.clone();
+    /// r.converged = false;
+    /// assert!(!r.not_converged_message().is_empty());
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn not_converged_message(&self) -> String {
         format!(
             "after {} levels an error estimate (largest {:.1e}) is above tol·max(1, |value|) with tol {:.1e}; the result above is marked \"not converged\"",
@@ -507,11 +566,32 @@ impl Report {
     }
 
     /// The largest estimate of every reported quantity (0 with none).
+    ///
+    /// ```
+    /// let p = lambdamat::Problem::from_source(
+    ///     "unknown f on [0, 1]\noperator k = int(0..x) dt\nequation f + k f = 1\noutput F = int(0..1) f(x) dx",
+    ///     "ex.lmx",
+    /// )?;
+    /// let s = p.solve(&lambdamat::SolveOptions::default())?;
+    /// assert!(s.largest_estimate() >= s.error_estimates["F"]);
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn largest_estimate(&self) -> f64 {
         self.error_estimates.values().fold(0.0, |m, &e| m.max(e))
     }
 
     /// The estimate of a named quantity.
+    ///
+    /// ```
+    /// let p = lambdamat::Problem::from_source(
+    ///     "unknown f on [0, 1]\noperator k = int(0..x) dt\nequation f + k f = 1\noutput F = int(0..1) f(x) dx",
+    ///     "ex.lmx",
+    /// )?;
+    /// let s = p.solve(&lambdamat::SolveOptions::default())?;
+    /// assert_eq!(s.estimate("F"), Some(s.error_estimates["F"]));
+    /// assert_eq!(s.estimate("G"), None);
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn estimate(&self, name: &str) -> Option<f64> {
         self.error_estimates.get(name).copied()
     }

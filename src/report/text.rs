@@ -10,7 +10,19 @@ use super::Report;
 use crate::plan::SplitReport;
 
 impl Report {
-    /// Writes the text report.
+    /// Writes the text report (what `lambdamat solve` prints).
+    ///
+    /// ```
+    /// let p = lambdamat::Problem::from_source(
+    ///     "unknown f on [0, 1]\noperator k = int(0..x) dt\nequation f + k f = 1\noutput F = int(0..1) f(x) dx",
+    ///     "ex.lmx",
+    /// )?;
+    /// let s = p.solve(&lambdamat::SolveOptions::default())?;
+    /// let mut out = Vec::new();
+    /// s.write_text(&mut out).unwrap();
+    /// assert!(String::from_utf8(out).unwrap().contains("F"));
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
     pub fn write_text(&self, w: &mut dyn Write) -> std::io::Result<()> {
         let model = self.extra.get("model").and_then(Value::as_bool) == Some(true);
         let label = if model {

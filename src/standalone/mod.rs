@@ -33,9 +33,20 @@ pub use crate::system::expr::{acot, erf, gamma};
 /// The highest refinement level `--max-level` accepts (levels are numbered
 /// from 0): beyond it the geometric grading makes panels too small for the
 /// quadrature rules.
+///
+/// ```
+/// use lambdamat::standalone::{Flags, MAX_LEVEL};
+/// assert_eq!(MAX_LEVEL, 14);
+/// assert!(Flags::default().max_level <= MAX_LEVEL);
+/// ```
 pub const MAX_LEVEL: usize = crate::report::MAX_LEVEL;
 
 /// The flags of a generated solver.
+///
+/// ```
+/// let f = lambdamat::standalone::Flags::default();
+/// assert_eq!((f.tol, f.max_level, f.json), (1e-10, 8, false));
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct Flags {
     /// `--method`: coupled, ordered (default) or commutative.
@@ -63,6 +74,10 @@ impl Default for Flags {
 }
 
 /// The text of `--help`.
+///
+/// ```
+/// assert!(lambdamat::standalone::USAGE.contains("--tol T"));
+/// ```
 pub const USAGE: &str = "A solver written by `lambdamat codegen`: solves its system and prints the report of `lambdamat solve`.
 
 Usage: SOLVER [--method coupled|ordered|commutative] [--tol T] [--max-level N] [--json] [--csv FILE]
@@ -77,7 +92,12 @@ Options:
 
 Exit codes: 0 success; 1 usage error; 2 invalid input; 3 a computation failed; 4 finished but not converged (results printed and marked).";
 
-/// Why the flags were not parsed: a usage error (exit 1) or help (exit 0).
+/// What the flags ask for: a solve with these flags, or help (exit 0).
+///
+/// ```
+/// use lambdamat::standalone::{Parsed, parse_flags};
+/// assert_eq!(parse_flags(["--help".to_string()]), Ok(Parsed::Help));
+/// ```
 #[derive(Debug, PartialEq)]
 pub enum Parsed {
     /// The flags.
@@ -88,7 +108,15 @@ pub enum Parsed {
 
 /// Parses the flags (without the program name). Values may be negative
 /// numbers in any notation (`--tol -1e-3` is a value, refused later as
-/// invalid input).
+/// invalid input). A usage error (exit 1) is its message.
+///
+/// ```
+/// use lambdamat::standalone::{Parsed, parse_flags};
+/// let args = ["--tol", "1e-8", "--json"].map(String::from);
+/// let Ok(Parsed::Flags(f)) = parse_flags(args) else { panic!() };
+/// assert_eq!((f.tol, f.json), (1e-8, true));
+/// assert!(parse_flags(["--frobnicate".to_string()]).is_err());
+/// ```
 pub fn parse_flags(args: impl IntoIterator<Item = String>) -> Result<Parsed, String> {
     let mut f = Flags::default();
     let mut it = args.into_iter();
@@ -165,6 +193,11 @@ impl Failure {
 /// Whether `path` can be written, tried without truncating it or leaving a
 /// file behind (an existing file is opened for appending; a new one is
 /// created and removed). The reason otherwise.
+///
+/// ```
+/// let dir = std::env::temp_dir();
+/// assert_eq!(lambdamat::standalone::probe_writable(&dir).unwrap_err(), "it is a directory");
+/// ```
 pub fn probe_writable(path: &Path) -> Result<(), String> {
     if path.is_dir() {
         return Err("it is a directory".into());
@@ -187,6 +220,10 @@ pub fn probe_writable(path: &Path) -> Result<(), String> {
 
 /// Prints one line on standard error; a closed or failing standard error
 /// is ignored (a message must never turn an exit code into a panic).
+///
+/// ```
+/// lambdamat::standalone::note("solving at level 3");
+/// ```
 pub fn note(line: &str) {
     let _ = writeln!(std::io::stderr(), "{line}");
 }
@@ -319,7 +356,15 @@ fn solve_and_print(
 }
 
 /// The `main` of a solver `lambdamat codegen` wrote for a file on one
-/// interval: returns the exit code.
+/// interval: returns the exit code. A generated solver's whole `main`:
+///
+/// ```no_run
+/// use lambdamat::standalone::{CompiledSystem, PlanError, solver_main};
+/// fn system() -> Result<CompiledSystem, PlanError> {
+///     todo!("written by `lambdamat codegen`")
+/// }
+/// std::process::exit(solver_main(system));
+/// ```
 pub fn solver_main(system: fn() -> Result<CompiledSystem, PlanError>) -> i32 {
     run_main(|flags, out| {
         solve_and_print(flags, out, |s| crate::report::solve_compiled(&system()?, s))
@@ -328,6 +373,14 @@ pub fn solver_main(system: fn() -> Result<CompiledSystem, PlanError>) -> i32 {
 
 /// The `main` of a solver `lambdamat codegen` wrote for a split-domain
 /// file: returns the exit code.
+///
+/// ```no_run
+/// use lambdamat::standalone::{PlanError, SplitInput, split_solver_main};
+/// fn input() -> Result<SplitInput, PlanError> {
+///     todo!("written by `lambdamat codegen`")
+/// }
+/// std::process::exit(split_solver_main(input));
+/// ```
 pub fn split_solver_main(input: fn() -> Result<SplitInput, PlanError>) -> i32 {
     run_main(|flags, out| solve_and_print(flags, out, |s| crate::report::solve_split(input()?, s)))
 }
