@@ -36,8 +36,10 @@ pub use crate::plan::Method;
 use crate::plan::{CompiledSystem, PlanError, SplitInput};
 use crate::system::Program;
 
+mod exact;
 mod hertz;
 pub(crate) mod locate;
+pub use self::exact::{RationalFunction, Terms};
 pub(crate) use self::hertz::check_tol;
 pub use self::hertz::{
     Hertz, HertzOptions, HertzRefusal, HertzSweep, HertzTable, MAX_SWEEP_POINTS, Tally, hertz,
@@ -723,6 +725,7 @@ pub struct SmithOptions {
 #[derive(Clone, Debug, PartialEq)]
 pub struct SmithForm {
     report: SmithReport,
+    symbols: Vec<String>,
 }
 
 impl SmithForm {
@@ -738,7 +741,110 @@ impl SmithForm {
             progress: progress.clone(),
         };
         let report = modes::smith_report(name, a, &opts).map_err(|e| Error(e.into()))?;
-        Ok(SmithForm { report })
+        Ok(SmithForm {
+            report,
+            symbols: a.ring.names.clone(),
+        })
+    }
+
+    /// `rows` read back as exact values.
+    fn exact(&self, rows: &[Vec<String>]) -> Result<Vec<Vec<RationalFunction>>, Error> {
+        rows.iter()
+            .map(|r| r.iter().map(|e| self.read(e)).collect())
+            .collect()
+    }
+
+    /// One printed entry read back as an exact value.
+    fn read(&self, text: &str) -> Result<RationalFunction, Error> {
+        RationalFunction::read(text, &self.symbols).ok_or_else(|| {
+            Error(CliError::Numeric(format!(
+                "the printed entry `{text}` of {} does not read back as a rational function of {}",
+                self.report.matrix,
+                self.symbols.join(", ")
+            )))
+        })
+    }
+
+    /// The invariant factors as exact values (the same facts as
+    /// [`SmithForm::invariant_factors`], read back from them).
+    ///
+    /// ```
+    /// use lambdamat::{Problem, SmithOptions};
+    /// let p = Problem::from_file("examples/hertz.lmx")?;
+    /// let s = p.smith(&SmithOptions::default())?;
+    /// let f = s.exact_invariant_factors()?;
+    /// assert_eq!(f.len(), s.invariant_factors().len());
+    /// assert_eq!(f[0].to_string(), s.invariant_factors()[0]);
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
+    pub fn exact_invariant_factors(&self) -> Result<Vec<RationalFunction>, Error> {
+        self.report
+            .invariant_factors
+            .iter()
+            .map(|e| self.read(e))
+            .collect()
+    }
+
+    /// D as exact values.
+    ///
+    /// ```
+    /// use lambdamat::{Problem, SmithOptions};
+    /// let p = Problem::from_source("var x\nmatrix A = [x, 1; 0, x]", "m.lmx")?;
+    /// let d = p.smith(&SmithOptions::default())?.exact_d()?;
+    /// assert!(d[0][1].numerator().is_empty()); // zero has no terms
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
+    pub fn exact_d(&self) -> Result<Vec<Vec<RationalFunction>>, Error> {
+        self.exact(&self.report.d)
+    }
+
+    /// U and V as exact values (`None` in the determinantal-divisor mode).
+    /// With [`SmithForm::exact_a`] and [`SmithForm::exact_d`] they let a
+    /// caller check `U·A·V = D` in its own arithmetic.
+    ///
+    /// ```
+    /// use lambdamat::{Problem, SmithOptions};
+    /// use num_rational::BigRational as Q;
+    /// let p = Problem::from_source("var x\nmatrix A = [x, 1; 0, x]", "m.lmx")?;
+    /// let s = p.smith(&SmithOptions::default())?;
+    /// let (u, v) = s.exact_uv()?.expect("U and V are computed");
+    /// let (a, d) = (s.exact_a()?, s.exact_d()?);
+    /// // U·A·V = D at x = 5, entry by entry.
+    /// let at = |f: &lambdamat::RationalFunction| f.eval(&[Q::from_integer(5.into())]).unwrap();
+    /// for i in 0..2 {
+    ///     for j in 0..2 {
+    ///         let mut uav = Q::from_integer(0.into());
+    ///         for k in 0..2 {
+    ///             for l in 0..2 {
+    ///                 uav += at(&u[i][k]) * at(&a[k][l]) * at(&v[l][j]);
+    ///             }
+    ///         }
+    ///         assert_eq!(uav, at(&d[i][j]));
+    ///     }
+    /// }
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
+    #[allow(clippy::type_complexity)]
+    pub fn exact_uv(
+        &self,
+    ) -> Result<Option<(Vec<Vec<RationalFunction>>, Vec<Vec<RationalFunction>>)>, Error> {
+        match (&self.report.u, &self.report.v) {
+            (Some(u), Some(v)) => Ok(Some((self.exact(u)?, self.exact(v)?))),
+            _ => Ok(None),
+        }
+    }
+
+    /// The input matrix A as exact values.
+    ///
+    /// ```
+    /// use lambdamat::{Problem, SmithOptions};
+    /// let p = Problem::from_source("var x\nmatrix A = [x/2]", "m.lmx")?;
+    /// let a = p.smith(&SmithOptions::default())?.exact_a()?;
+    /// assert_eq!(a[0][0].numerator()[0].1, num_rational::BigRational::new(1.into(), 2.into()));
+    /// # Ok::<(), lambdamat::Error>(())
+    /// ```
+    pub fn exact_a(&self) -> Result<Vec<Vec<RationalFunction>>, Error> {
+        self.exact(&self.report.a)
     }
 
     /// The matrix's name (`A` for an operator system's λ-matrix).

@@ -90,6 +90,6 @@ pub fn cli_main() -> i32 {
 }
 
 pub use api::{
-    Error, ErrorKind, Field, Location, Method, Problem, Reduction, SmithForm, SmithOptions,
-    Solution, SolveOptions,
+    Error, ErrorKind, Field, Location, Method, Problem, RationalFunction, Reduction, SmithForm,
+    SmithOptions, Solution, SolveOptions,
 };

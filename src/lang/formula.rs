@@ -15,11 +15,12 @@ use super::error::{ErrorKind, LangError};
 use super::parser::parse_formula;
 use super::validate::MAX_EXPONENT;
 use crate::algebra::mpoly::MPoly;
+#[cfg(any(test, feature = "internals"))]
 use crate::algebra::ordered::NcExpr;
 use crate::algebra::ratfunc::{RatFunc, RatFuncField};
 use crate::algebra::rational::Q;
 use crate::algebra::ring::{Field, Ring};
-use num_traits::{One, Signed, ToPrimitive, Zero};
+use num_traits::{One, Signed, ToPrimitive};
 
 /// The file name shown in a formula's errors.
 const SOURCE: &str = "<formula>";
@@ -77,8 +78,10 @@ impl Target for Commutative {
     }
 }
 
+#[cfg(any(test, feature = "internals"))]
 struct Ordered;
 
+#[cfg(any(test, feature = "internals"))]
 impl Target for Ordered {
     type V = NcExpr;
     fn num(&self, q: &Q) -> NcExpr {
@@ -102,7 +105,7 @@ impl Target for Ordered {
     fn div(&self, a: &NcExpr, b: &NcExpr) -> Result<NcExpr, ErrorKind> {
         // `a/b` does not say on which side b^-1 stands: only constants.
         match b.as_constant() {
-            Some(c) if c.is_zero() => Err(ErrorKind::DivisionByZero),
+            Some(c) if num_traits::Zero::is_zero(&c) => Err(ErrorKind::DivisionByZero),
             Some(c) => Ok(a.mul(&NcExpr::constant(c.recip()))),
             None => Err(ErrorKind::NonPolynomial),
         }
@@ -225,6 +228,7 @@ pub fn parse_ratfunc(src: &str, symbols: &[String]) -> Result<RatFunc, LangError
 }
 
 /// Reads a polynomial in `symbols`; a non-constant denominator is an error.
+#[cfg(any(test, feature = "internals"))]
 pub fn parse_poly(src: &str, symbols: &[String]) -> Result<MPoly, LangErrors> {
     let f = parse_ratfunc(src, symbols)?;
     if f.is_polynomial() {
@@ -245,6 +249,7 @@ pub fn parse_poly(src: &str, symbols: &[String]) -> Result<MPoly, LangErrors> {
 
 /// Reads a non-commutative rational expression in `symbols` (products keep
 /// their order, `s^(-1)` is an inverse).
+#[cfg(any(test, feature = "internals"))]
 pub fn parse_ncexpr(src: &str, symbols: &[String]) -> Result<NcExpr, LangErrors> {
     run(&Ordered, src, symbols)
 }

@@ -70,7 +70,6 @@
 pub mod ast;
 pub mod diagnostics;
 pub mod error;
-#[cfg(any(test, feature = "internals"))]
 pub mod formula;
 pub mod keywords;
 pub mod lower;

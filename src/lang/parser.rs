@@ -79,7 +79,6 @@ pub fn parse_file(src: &str) -> Result<File, LangError> {
 
 /// Parses one expression on its own (the `formula` rule): the syntax of a
 /// printed formula, before any meaning is given to its names.
-#[cfg(any(test, feature = "internals"))]
 pub fn parse_formula(src: &str) -> Result<Expr, LangError> {
     check_nesting(src)?;
     let mut pairs = match LmxParser::parse(Rule::formula, src) {
