@@ -322,6 +322,57 @@ fn logarithmic_and_second_singular_terms_are_refused_at_their_place() {
     }
 }
 
+/// Two weights or logarithms of one unknown at one point are refused at
+/// the second one's line and column (exit 2), whatever side it names: a
+/// weight holds on both sides of its point, and two of them would multiply
+/// where a sum is meant. The one power with the exponents added solves.
+#[test]
+fn a_second_weight_or_logarithm_at_one_point_is_refused_at_its_place() {
+    for (first, second, col, what) in [
+        (
+            "(1 - x)^(-1/2)",
+            "singular p at 1 ~ (1 - x)^(1/2)",
+            19,
+            "a weight",
+        ),
+        (
+            "ln(1 - x)",
+            "singular p at 1 ~ log(1 - x)/2",
+            19,
+            "a logarithm",
+        ),
+        (
+            "(1 - x)^(-1/2)",
+            "singular p at 1 ~ ln(1 - x)",
+            19,
+            "a weight",
+        ),
+        (
+            "ln(1 - x)",
+            "singular p at 1- ~ 1/sqrt(1 - x)",
+            20,
+            "a logarithm",
+        ),
+    ] {
+        // `punch` puts its declaration on line 4 and the extra one on line 5.
+        let out = run(&punch(first, &format!("{second}\n")));
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{second}: {err}");
+        assert!(
+            err.contains(&format!("`p` already has {what} at this point"))
+                && err.contains("sums of several singular terms are not supported yet"),
+            "{second}: {err}"
+        );
+        assert!(err.contains(&format!(":5:{col}]")), "{second}: {err}");
+    }
+    // Weights of one unknown at two points are two declarations: the
+    // punch's load P = 4/3 with a plain weight at the other end.
+    let f = lmx_file(&punch("(1 - x)^(-1/2)", "singular p at 0 ~ x^0\n"));
+    let j = json(&["solve", f.path().to_str().expect("utf-8")]);
+    let p = j["outputs"]["P"].as_f64().expect("P");
+    assert!((p - 4.0 / 3.0).abs() < 1e-9, "P = {p}");
+}
+
 /// `reduce` shows a side condition in the unknowns of each subinterval's
 /// model: on the stick zone of the Cattaneo–Mindlin force file the shear
 /// `q` itself, on the slip zone `q = mu*p` substituted (never `?(x)`).

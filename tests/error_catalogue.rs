@@ -50,6 +50,7 @@ const CASES: &[(&str, &str, &[&str])] = &[
         "side_condition_split",
         &["solve", "{}"],
     ),
+    ("singular_twice", "singular_twice", &["solve", "{}"]),
     (
         "condition_not_a_functional",
         "condition_not_a_functional",

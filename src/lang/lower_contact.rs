@@ -1,8 +1,11 @@
 //! Validated split-domain statements → [`Contact`]: intervals, relations,
 //! scalars, real parameters, singular declarations and conditions, with
 //! names mapped to unknown indices and value slots. It trusts the
-//! validator and never panics (anything unexpected is an internal error);
-//! it must not check user errors itself.
+//! validator and never panics (anything unexpected is an internal error).
+//! The one user error it checks is the one that needs the lowered points:
+//! a second singular declaration of one unknown at one point that the
+//! solver cannot combine (two exact terms at one side, or two weights or
+//! logarithms), refused at the second one.
 use num_traits::ToPrimitive;
 
 use super::ast::{BinOp, Expr, ExprKind, File, Ident, Interval, Stmt};
@@ -155,6 +158,9 @@ pub fn lower_contact(file: &File, scope: &Scope) -> Result<Contact, LangError> {
         unknown_domains: vec![None; scope.unknowns.len()],
         ..Contact::default()
     };
+    // The weights and logarithms declared so far: unknown, point, the
+    // declaration's body and what it is.
+    let mut behaviours: Vec<(usize, RExpr, super::ast::Span, &str)> = Vec::new();
     for st in &file.statements {
         match &st.kind {
             Stmt::Param { name, value } => {
@@ -331,7 +337,35 @@ pub fn lower_contact(file: &File, scope: &Scope) -> Result<Contact, LangError> {
                         body.span,
                         "a second term",
                     )
-                    .with_help("write the behaviour as one term, e.g. `singular p at a- ~ B*(x + 2*(a - x))/sqrt(a^2 - x^2)`; powers that are weights (`(a - x)^(-1/4)`) may be declared several times and multiply"));
+                    .with_help("write the behaviour as one term, e.g. `singular p at a- ~ B*(x + 2*(a - x))/sqrt(a^2 - x^2)`"));
+                }
+                // A weight is |x − P|^e on both sides of its point whatever
+                // side is written, and a logarithm takes no weight out: two
+                // of them at one point would multiply (or one would be lost)
+                // where the user means a sum.
+                let what = match kind {
+                    SingularKind::Weight { .. } => Some("weight"),
+                    SingularKind::Log => Some("logarithm"),
+                    SingularKind::Term { .. } => None,
+                };
+                if let Some(what) = what {
+                    if let Some((_, _, first, first_what)) = behaviours
+                        .iter()
+                        .find(|(v, p, _, _)| *v == u && *p == at)
+                    {
+                        return Err(LangError::new(
+                            ErrorKind::Unsupported,
+                            format!(
+                                "`{}` already has a {first_what} at this point: the behaviour of one unknown at one point is written as one declaration, and sums of several singular terms are not supported yet",
+                                scope.unknowns.get(u).map_or("this unknown", String::as_str)
+                            ),
+                            body.span,
+                            format!("a second {what}"),
+                        )
+                        .with_related(*first, format!("the {first_what} declared first"))
+                        .with_help("write one declaration per unknown and point: a product of powers of one point is one power with the exponents added (`(1 - x)^(-1/2)` times `(1 - x)^(1/4)` is `singular p at 1 ~ (1 - x)^(-1/4)`); a weight holds on both sides of its point whichever side is written, and a logarithm times a power is not supported"));
+                    }
+                    behaviours.push((u, at.clone(), body.span, what));
                 }
                 c.singulars.push(Singular {
                     unknown: u,
