@@ -57,3 +57,56 @@ pub use split_input::SplitInput;
 pub use split_solve::{SplitOptions, SplitReport, SplitSolution};
 #[cfg(feature = "internals")]
 pub use split_solve::{solve_split, solve_split_fields, solve_split_input, solve_split_input_fields};
+
+/// One factor of a weight as reports print it, for a point `at` and an
+/// exponent `e`: the distance to the point is written as the user would
+/// (`x`, `x + 2`, `x - 1/2` as `x - 0.5`), as `|…|` on a split domain where
+/// the weight holds on both sides of its point, else oriented so that it is
+/// positive on the interval: `x^(0.5)`, `(x + 2)^(-0.5)`, `(1 - x)^(-0.5)`.
+pub fn weight_factor_text(at: f64, e: f64, side: WeightSide) -> String {
+    let shifted = if at == 0.0 {
+        "x".to_string()
+    } else if at < 0.0 {
+        format!("x + {}", -at)
+    } else {
+        format!("x - {at}")
+    };
+    match side {
+        WeightSide::Both if at == 0.0 => format!("|x|^({e})"),
+        WeightSide::Both => format!("|{shifted}|^({e})"),
+        WeightSide::Above if at == 0.0 => format!("x^({e})"),
+        WeightSide::Above => format!("({shifted})^({e})"),
+        WeightSide::Below if at == 0.0 => format!("(-x)^({e})"),
+        WeightSide::Below if at < 0.0 => format!("(-{} - x)^({e})", -at),
+        WeightSide::Below => format!("({at} - x)^({e})"),
+    }
+}
+
+/// Where a weight factor's unknown lies relative to its point.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum WeightSide {
+    /// On both sides (a split domain): the factor is `|x - at|^e`.
+    Both,
+    /// Above the point (`at` is the interval's left end).
+    Above,
+    /// Below the point (`at` is the interval's right end).
+    Below,
+}
+
+#[cfg(test)]
+mod weight_text_tests {
+    use super::{WeightSide::*, weight_factor_text as w};
+
+    #[test]
+    fn weight_factors_read_as_written() {
+        assert_eq!(w(0.0, 0.5, Above), "x^(0.5)");
+        assert_eq!(w(-2.0, -0.5, Above), "(x + 2)^(-0.5)");
+        assert_eq!(w(0.25, -0.5, Above), "(x - 0.25)^(-0.5)");
+        assert_eq!(w(1.0, -0.5, Below), "(1 - x)^(-0.5)");
+        assert_eq!(w(-1.0, 0.5, Below), "(-1 - x)^(0.5)");
+        assert_eq!(w(0.0, 0.5, Below), "(-x)^(0.5)");
+        assert_eq!(w(0.0, -0.25, Both), "|x|^(-0.25)");
+        assert_eq!(w(-1.0, -0.5, Both), "|x + 1|^(-0.5)");
+        assert_eq!(w(1.0, -0.5, Both), "|x - 1|^(-0.5)");
+    }
+}

@@ -618,7 +618,7 @@ fn in_class(e: PlanError, weight: &str, more: &str) -> PlanError {
     }
 }
 
-/// A weight as the report prints it, e.g. `(x - 0)^(0.5)*(4 - x)^(-0.5)`
+/// A weight as the report prints it, e.g. `x^(0.5)*(4 - x)^(-0.5)`
 /// or `1`.
 fn weight_text(fs: &[Factor], hi: f64) -> String {
     match fs {
@@ -626,11 +626,12 @@ fn weight_text(fs: &[Factor], hi: f64) -> String {
         fs => fs
             .iter()
             .map(|f| {
-                if f.at >= hi {
-                    format!("({} - x)^({})", f.at, f.exponent)
+                let side = if f.at >= hi {
+                    super::WeightSide::Below
                 } else {
-                    format!("(x - {})^({})", f.at, f.exponent)
-                }
+                    super::WeightSide::Above
+                };
+                super::weight_factor_text(f.at, f.exponent, side)
             })
             .collect::<Vec<_>>()
             .join("*"),

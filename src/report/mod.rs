@@ -419,6 +419,7 @@ fn split_fields(sol: &SplitSolution, grid: usize) -> Result<BTreeMap<String, Fie
 /// The behaviour of unknown `u` in a split-domain discretisation: its
 /// basis weight and its exact singular terms.
 fn split_weight(sol: &SplitSolution, u: usize) -> String {
+    use crate::plan::{WeightSide, weight_factor_text};
     let d = &sol.discrete;
     let mut parts = Vec::new();
     let w = d.bases.get(u).and_then(Option::as_ref).map_or_else(
@@ -429,7 +430,7 @@ fn split_weight(sol: &SplitSolution, u: usize) -> String {
             } else {
                 b.weight
                     .iter()
-                    .map(|f| format!("|x - {}|^({})", f.at, f.exponent))
+                    .map(|f| weight_factor_text(f.at, f.exponent, WeightSide::Both))
                     .collect::<Vec<_>>()
                     .join("*")
             }
@@ -438,8 +439,9 @@ fn split_weight(sol: &SplitSolution, u: usize) -> String {
     parts.push(w);
     for t in d.terms.iter().filter(|t| t.unknown == u) {
         parts.push(format!(
-            "singular term |x - {}|^(-{}) at {}",
-            t.at, t.beta, t.at
+            "singular term {} at {}",
+            weight_factor_text(t.at, -t.beta, WeightSide::Both),
+            t.at
         ));
     }
     parts.join(" + ")
