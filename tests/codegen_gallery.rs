@@ -56,6 +56,10 @@ mod sphere_load_solver;
 #[rustfmt::skip]
 #[path = "generated/sphere_load_range_solver.rs"]
 mod sphere_load_range_solver;
+#[allow(dead_code)]
+#[rustfmt::skip]
+#[path = "data/codegen_log_end_solver.rs"]
+mod codegen_log_end_solver;
 
 fn same_bits(what: &str, a: &[Estimate], b: &[Estimate]) {
     assert_eq!(a.len(), b.len(), "{what}");
@@ -101,23 +105,30 @@ fn assert_identical(a: &SplitReport, b: &SplitReport) {
 /// The generated solver for `name` is up to date and solves bit for bit
 /// as `solve` does (or refuses with the same message).
 fn check(name: &str, input: SplitInput) -> bool {
-    let file = format!("examples/contact/{name}.lmx");
-    let out = lambdamat().args(["codegen", &file]).output().expect("runs");
+    check_file(
+        &format!("examples/contact/{name}.lmx"),
+        &format!("tests/generated/{name}_solver.rs"),
+        input,
+    )
+}
+
+/// [`check`] for the source `file` and its checked-in solver `solver`.
+fn check_file(file: &str, solver: &str, input: SplitInput) -> bool {
+    let name = file;
+    let out = lambdamat().args(["codegen", file]).output().expect("runs");
     assert!(
         out.status.success(),
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
-    let golden =
-        std::fs::read_to_string(format!("tests/generated/{name}_solver.rs")).expect("golden");
+    let golden = std::fs::read_to_string(solver).expect("golden");
     assert_eq!(
         String::from_utf8(out.stdout).expect("utf-8"),
         golden,
-        "tests/generated/{name}_solver.rs is stale: regenerate it with \
-         `lambdamat codegen {file} -o tests/generated/{name}_solver.rs`"
+        "{solver} is stale: regenerate it with `lambdamat codegen {file} -o {solver}`"
     );
-    let text = std::fs::read_to_string(&file).expect("source");
-    let prog = parse_program(&text, &file).expect("parses");
+    let text = std::fs::read_to_string(file).expect("source");
+    let prog = parse_program(&text, file).expect("parses");
     let opts = SplitOptions::default();
     match (solve_split_input(input, &opts), solve_split(&prog, &opts)) {
         (Ok(g), Ok(h)) => {
@@ -179,6 +190,26 @@ fn every_gallery_file_generates_a_solver_identical_to_solve() {
     // Every file gives a report (converged or not), so every comparison
     // is of reports, not of refusals.
     assert_eq!(reports.iter().filter(|&&r| r).count(), 9);
+}
+
+/// A logarithmic end (`singular p at 0 ~ ln(x)`, the cone's tip) is
+/// generated, compiled and solves bit for bit as `solve` does.
+#[test]
+fn a_logarithmic_end_generates_a_solver_identical_to_solve() {
+    let input = codegen_log_end_solver::input().expect("generated input is consistent");
+    assert!(
+        input
+            .contact
+            .singulars
+            .iter()
+            .any(|s| matches!(s.kind, lambdamat::plan::split_input::SplitKind::Log)),
+        "the generated input declares the logarithmic end"
+    );
+    assert!(check_file(
+        "tests/data/codegen_log_end.lmx",
+        "tests/data/codegen_log_end_solver.rs",
+        input,
+    ));
 }
 
 /// Every checked-in generated solver names lambdamat only through

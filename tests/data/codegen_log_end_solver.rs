@@ -1,0 +1,220 @@
+//! A solver for `tests/data/codegen_log_end.lmx`, written by lambdamat 0.1.0 (`lambdamat codegen`).
+//! Do not edit: regenerate with `lambdamat codegen tests/data/codegen_log_end.lmx -o FILE.rs`.
+//!
+//! A split-domain (contact) problem. Kernels, right sides and output
+//! weights are Rust functions of `x` (and `t`); interval ends, relation
+//! factors, singular points, exponents and terms, condition values and
+//! real parameters are Rust functions of the slot values `v` (the unknown
+//! scalars, then the real parameters) and `x`. `input()` collects them and
+//! `main()` solves through lambdamat's split-domain solver
+//! (`lambdamat::standalone::split_solver_main`): the scalars' root solve,
+//! refinement to the tolerance, and the error estimates. Parameters are
+//! those of the regenerating command (`--set` there).
+//! Slots: a.
+//!
+//! Derived equations per subinterval (`lambdamat reduce`; a model where a
+//! relation is substituted: the solver keeps the subintervals coupled):
+//! - on [0, a):
+//!   ordered elimination: `k1 p = g1`
+//!   commutative eliminant: `k1 p = [1 - pi/2*x]`
+//! - on [a, 2] with p = 0*p substituted:
+//!   the file has no equations, so there is nothing to reduce
+//!
+//! The problem (parameters substituted):
+//!
+//! ```text
+//! param delta = 1
+//! scalar a in (0, 2)
+//! operator k1 = int(x..2) t/sqrt(t^2 - x^2) dt
+//! unknown p on [0, 2]
+//! equation k1 p = 1 - pi/2*x on [0, a)
+//! relation p = 0 on [a, 2]
+//! inequality 0 <= p on [0, a)
+//! singular p at (0) ~ ln(abs(x - (0)))
+//! singular p at (a)- ~ B*(x/sqrt(a^2 - (x^2)))
+//! condition B = 0
+//! output P = 2*pi*int(0..2) x*p(x) dx
+//! ```
+
+// Literals are printed to read back bit for bit; some may look like
+// named constants without being them.
+#![allow(clippy::approx_constant)]
+
+use std::sync::Arc;
+
+use lambdamat::standalone::Limits::Upper;
+use lambdamat::standalone::Singularity::AbelSqrt;
+use lambdamat::standalone::{
+    CompiledEquation, CompiledOutput, CompiledSystem, Operator, OutputTerm, PlanError, RFunc,
+    RealFn, Scalar, SplitCondition, SplitContact, SplitInequality, SplitInput, SplitInterval,
+    SplitKind, SplitLinTerm, SplitRelation, SplitSingular, real_pow, words,
+};
+
+/// Operator `k1`, kernel `t/sqrt(t^2 - x^2)`: its smooth factor a(x, t) with kernel = a(x, t)/√|t² - x²|.
+fn kernel_k1(_x: f64, t: f64) -> f64 {
+    t
+}
+
+/// Right side of equation 1: `1 - pi/2*x`.
+fn rhs_1(x: f64) -> f64 {
+    1.0 - std::f64::consts::FRAC_PI_2 * x
+}
+
+/// Weight of output `P`: `x`.
+fn weight_p(x: f64) -> f64 {
+    x
+}
+
+/// The compiled system, ready for `lambdamat::standalone::solver_main`.
+pub fn system() -> Result<CompiledSystem, PlanError> {
+    let mut op_k1 = Operator::zero();
+    op_k1 = op_k1 + Operator::integral(Upper { b: 2.0 }, AbelSqrt, kernel_k1);
+    let lhs_1 = vec![words(&[(&[0], "1")])?];
+    let equation_1 = CompiledEquation {
+        lhs: lhs_1,
+        rhs: Arc::new(rhs_1),
+        rhs_text: "1 - pi/2*x".into(),
+    };
+    let output_1_term_1 = OutputTerm::Integral {
+        coeff: std::f64::consts::TAU,
+        lower: 0.0,
+        upper: 2.0,
+        weight: Arc::new(weight_p),
+        unknown: 0,
+    };
+    let output_1 = CompiledOutput {
+        name: "P".into(),
+        terms: vec![output_1_term_1],
+    };
+    let sys = CompiledSystem {
+        symbols: vec!["k1".into()],
+        operators: vec![Some(op_k1)],
+        unknowns: vec!["p".into()],
+        equations: vec![equation_1],
+        outputs: vec![output_1],
+        conditions: Vec::new(),
+        target: 0,
+        principal: None,
+        derived_pivots: Some(Vec::new()),
+        domain: (0.0, 2.0),
+        interior: Vec::new(),
+        features: Vec::new(),
+    };
+    sys.check()?;
+    Ok(sys)
+}
+
+/// A constant: `0`.
+fn const_0(_v: &[f64], _x: f64) -> f64 {
+    0.0
+}
+
+/// A constant: `2`.
+fn const_2(_v: &[f64], _x: f64) -> f64 {
+    2.0
+}
+
+/// Slot value: `a`.
+fn slot_a(v: &[f64], _x: f64) -> f64 {
+    v[0]
+}
+
+/// A constant: `1`.
+fn const_1(_v: &[f64], _x: f64) -> f64 {
+    1.0
+}
+
+/// Singular declaration 2, singular term: `x/sqrt(a^2 - (x^2))`.
+fn singular_2_term(v: &[f64], x: f64) -> f64 {
+    x / RFunc::Sqrt.apply(real_pow(v[0], 2.0) - real_pow(x, 2.0))
+}
+
+/// The split-domain problem, ready for `lambdamat::standalone::split_solver_main`.
+pub fn input() -> Result<SplitInput, PlanError> {
+    let contact = SplitContact {
+        scalars: vec![Scalar {
+            name: "a".into(),
+            range: (0.0, 2.0),
+        }],
+        reals: Vec::new(),
+        unknown_domains: vec![
+            Some(SplitInterval {
+                lo: RealFn::new(const_0),
+                hi: RealFn::new(const_2),
+                lo_closed: true,
+                hi_closed: true,
+            }),
+        ],
+        equation_domains: vec![
+            Some(SplitInterval {
+                lo: RealFn::new(const_0),
+                hi: RealFn::new(slot_a),
+                lo_closed: true,
+                hi_closed: false,
+            }),
+        ],
+        rhs: Vec::new(),
+        relations: vec![SplitRelation {
+            unknown: 0,
+            coeff: RealFn::new(const_0),
+            other: 0,
+            domain: SplitInterval {
+                lo: RealFn::new(slot_a),
+                hi: RealFn::new(const_2),
+                lo_closed: true,
+                hi_closed: true,
+            },
+        }],
+        inequalities: vec![SplitInequality {
+            abs: false,
+            lhs: vec![SplitLinTerm {
+                coeff: RealFn::new(const_0),
+                unknown: None,
+            }],
+            rhs: vec![SplitLinTerm {
+                coeff: RealFn::new(const_1),
+                unknown: Some(0),
+            }],
+            domain: SplitInterval {
+                lo: RealFn::new(const_0),
+                hi: RealFn::new(slot_a),
+                lo_closed: true,
+                hi_closed: false,
+            },
+            text: "0 <= p".into(),
+        }],
+        singulars: vec![
+            SplitSingular {
+                unknown: 0,
+                at: RealFn::new(const_0),
+                side: 0,
+                kind: SplitKind::Log,
+            },
+            SplitSingular {
+                unknown: 0,
+                at: RealFn::new(slot_a),
+                side: -1,
+                kind: SplitKind::Term {
+                    coefficient: 0,
+                    func: RealFn::new(singular_2_term),
+                },
+            },
+        ],
+        coefficients: vec!["B".into()],
+        conditions: vec![SplitCondition {
+            coefficient: 0,
+            value: RealFn::new(const_0),
+        }],
+        estimates: vec![None],
+        ends: Vec::new(),
+    };
+    let sys = system()?;
+    Ok(SplitInput { sys, contact })
+}
+
+/// Solves the problem and prints the report of `lambdamat solve`; takes
+/// `[--tol T] [--max-level N] [--json]` (see `--help`). It needs lambdamat without
+/// its command line: `lambdamat = { path = "…", default-features = false }`.
+pub fn main() {
+    std::process::exit(lambdamat::standalone::split_solver_main(input));
+}
