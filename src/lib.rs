@@ -93,3 +93,8 @@ pub use api::{
     Error, ErrorKind, Field, Location, Method, Problem, RationalFunction, Reduction, SmithForm,
     SmithOptions, Solution, SolveOptions,
 };
+
+/// The README's Rust blocks, run as doc tests (`cargo test --doc`).
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;
