@@ -552,16 +552,7 @@ impl Problem {
     /// # Ok::<(), lambdamat::Error>(())
     /// ```
     pub fn solve(&self, opts: &SolveOptions) -> Result<Solution, Error> {
-        let settings = crate::report::SolveSettings {
-            unknown: opts.unknown.clone(),
-            tol: opts.tol,
-            max_level: opts.max_level.unwrap_or(DEFAULT_MAX_LEVEL),
-            method: opts.method,
-            max_memory: opts.max_memory,
-            field_tol: opts.field_tol,
-            ..crate::report::SolveSettings::default()
-        };
-        settings.check()?;
+        let settings = opts.settings()?;
         let problem;
         let me = if opts.set.is_empty() {
             self
@@ -663,6 +654,37 @@ pub struct SolveOptions {
     /// `Some(f64::INFINITY)` (`--field-tol inf`): the unknowns are
     /// reported with their estimates but do not enter convergence.
     pub field_tol: Option<f64>,
+}
+
+impl SolveOptions {
+    /// Checks the options before any work, as the command line checks its
+    /// flags: a finite tolerance > 0, a level the numerics support (at
+    /// most 14), a field tolerance > 0. A failure is invalid input.
+    ///
+    /// ```
+    /// use lambdamat::SolveOptions;
+    /// assert!(SolveOptions::default().check().is_ok());
+    /// let bad = SolveOptions { tol: f64::NAN, ..SolveOptions::default() };
+    /// assert_eq!(bad.check().unwrap_err().exit_code(), 2);
+    /// ```
+    pub fn check(&self) -> Result<(), Error> {
+        self.settings().map(|_| ())
+    }
+
+    /// The report's settings for these options, checked.
+    fn settings(&self) -> Result<crate::report::SolveSettings, Error> {
+        let settings = crate::report::SolveSettings {
+            unknown: self.unknown.clone(),
+            tol: self.tol,
+            max_level: self.max_level.unwrap_or(DEFAULT_MAX_LEVEL),
+            method: self.method,
+            max_memory: self.max_memory,
+            field_tol: self.field_tol,
+            ..crate::report::SolveSettings::default()
+        };
+        settings.check()?;
+        Ok(settings)
+    }
 }
 
 impl Default for SolveOptions {

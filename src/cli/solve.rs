@@ -15,47 +15,40 @@ use super::smith::load_problem;
 use super::{SolveArgs, SolveFlags};
 use crate::api::SolveOptions;
 use crate::plan::Method;
-use crate::report::{Report, SolveSettings};
+use crate::report::Report;
 
 /// `lambdamat solve FILE …`.
 pub fn solve_command(a: &SolveArgs, w: &mut dyn Write) -> Result<(), CliError> {
-    let s = settings(&a.flags)?;
+    let opts = options(&a.flags, a.unknown.clone())?;
     let problem = load_problem(&a.file)?;
     check_outputs(&a.flags, &[a.file.as_path()])?;
-    let opts = SolveOptions {
-        tol: s.tol,
-        max_level: Some(s.max_level),
-        method: s.method,
-        max_memory: s.max_memory,
-        unknown: a.unknown.clone(),
-        field_tol: s.field_tol,
-        ..SolveOptions::default()
-    };
     let r = problem
         .solve(&opts)
         .map_err(crate::api::Error::into_cli)?;
     print(&r, &a.flags, &[a.file.as_path()], w)
 }
 
-/// The settings the flags ask for, checked before any work: a finite
-/// positive tolerance, a refinement level the numerics support, a method.
-pub fn settings(flags: &SolveFlags) -> Result<SolveSettings, CliError> {
+/// The library's options for the flags, checked before any work
+/// ([`SolveOptions::check`]: a finite positive tolerance, a refinement
+/// level the numerics support) and the method's name read.
+pub fn options(flags: &SolveFlags, unknown: Option<String>) -> Result<SolveOptions, CliError> {
     let method = flags
         .method
         .as_deref()
         .map(str::parse::<Method>)
         .transpose()
         .map_err(CliError::Invalid)?;
-    let s = SolveSettings {
+    let opts = SolveOptions {
         tol: flags.tol,
-        max_level: flags.max_level,
+        max_level: Some(flags.max_level),
         method,
         max_memory: flags.max_memory,
+        unknown,
         field_tol: flags.field_tol,
-        ..SolveSettings::default()
+        ..SolveOptions::default()
     };
-    s.check()?;
-    Ok(s)
+    opts.check().map_err(crate::api::Error::into_cli)?;
+    Ok(opts)
 }
 
 /// `--csv` and `--plot` must not overwrite an input.
