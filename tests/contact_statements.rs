@@ -585,18 +585,47 @@ fn a_logarithmic_end_is_declared_in_any_spelling() {
     assert!(bits.windows(2).all(|w| w[0] == w[1]), "{bits:?}");
 }
 
-/// An unknown on an interval that ends at an unknown scalar is refused at
-/// the scalar (exit 2), saying how to write it on a fixed interval.
+/// An unknown on an interval that ends at an unknown scalar lives on the
+/// scalar's range and is zero beyond the scalar: `unknown p on [0, a]`
+/// with an equation written without a domain solves bit for bit as the
+/// shipped file with `[0, 2]`, `relation p = 0 on [a, 2]` and the equation
+/// `on [0, a)`. A scalar whose range has no finite end there is still
+/// refused at the scalar (exit 2), saying how to write it.
 #[test]
-fn an_unknown_interval_ending_at_a_scalar_is_an_input_error() {
+fn an_unknown_interval_ending_at_a_scalar_is_zero_beyond_it() {
     let sphere =
         std::fs::read_to_string("examples/contact/sphere_indentation.lmx").expect("source");
-    let line = sphere
+    let at_scalar = sphere
+        .replace("unknown p on [0, 2]", "unknown p on [0, a]")
+        .replace(
+            "equation k1 p = delta - x^2 on [0, a)",
+            "equation k1 p = delta - x^2",
+        )
         .lines()
-        .position(|l| l.starts_with("unknown p on [0, 2]"))
+        .filter(|l| !l.starts_with("relation p = 0"))
+        .collect::<Vec<_>>()
+        .join("\n");
+    assert!(
+        !at_scalar.contains("relation p") && at_scalar.contains("equation k1 p = delta - x^2\n")
+    );
+    let f = lmx_file(&at_scalar);
+    let ours = json(&["solve", f.path().to_str().expect("utf-8")]);
+    let shipped = json(&["solve", "examples/contact/sphere_indentation.lmx"]);
+    for key in ["scalars", "outputs", "error_estimates", "levels"] {
+        assert_eq!(ours[key], shipped[key], "{key}");
+    }
+    assert!(ours["converged"].as_bool().expect("bool"));
+    // a = 1/√2 for delta = 1/2 (δ = a²).
+    let a = ours["scalars"]["a"].as_f64().expect("a");
+    assert!((a - 0.5f64.sqrt()).abs() <= 1e-9, "{a}");
+
+    let unbounded = at_scalar.replace("scalar a in (0, 2)", "scalar a in (0, inf)");
+    let line = unbounded
+        .lines()
+        .position(|l| l.starts_with("unknown p on [0, a]"))
         .expect("the unknown's declaration")
         + 1;
-    let out = run(&sphere.replace("unknown p on [0, 2]", "unknown p on [0, a]"));
+    let out = run(&unbounded);
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(2), "{err}");
     assert!(

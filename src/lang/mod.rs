@@ -77,6 +77,7 @@ pub mod lower_contact;
 pub mod parser;
 pub mod pretty;
 pub mod scope;
+mod scalar_ends;
 pub mod validate;
 pub mod validate_contact;
 pub mod validate_system;
@@ -260,6 +261,7 @@ fn parse_program_here(
             };
         }
     }
+    scalar_ends::rewrite(&mut file);
     let checked = validate::validate(&file).map_err(|errs| LangErrors::new(filename, src, errs))?;
     lower::lower(&file, &checked).map_err(|e| LangErrors::new(filename, src, vec![e]))
 }
