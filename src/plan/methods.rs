@@ -347,23 +347,29 @@ pub(super) fn ordered(
         left.retain(|&x| x != r);
         let later = &order[step + 1..];
         let ctx = || PlanError::numeric(format!("ordered elimination of {}", names[col]));
-        let y: Vec<DMatrix<f64>> = later
-            .iter()
-            .map(|&c| lu.solve_matrix(&b[r][c]))
-            .collect::<Result<_, _>>()
-            .map_err(ctx())?;
-        let yg = lu.solve(&g[r]).map_err(ctx())?;
         // A zero block contributes nothing to the update, and in a sparse
         // system (a chain, say) most blocks are zero: skipping them keeps
-        // the elimination from costing a dense product per pair of blocks.
-        let y_zero: Vec<bool> = y.iter().map(|m| m.iter().all(|&v| v == 0.0)).collect();
+        // the elimination from costing a solve and a dense product per pair
+        // of blocks. `None` stands for a zero block of `y`.
+        let y: Vec<Option<DMatrix<f64>>> = later
+            .iter()
+            .map(|&c| {
+                if is_zero(&b[r][c]) {
+                    return Ok(None);
+                }
+                let yc = lu.solve_matrix(&b[r][c])?;
+                Ok(if is_zero(&yc) { None } else { Some(yc) })
+            })
+            .collect::<Result<_, NumericError>>()
+            .map_err(ctx())?;
+        let yg = lu.solve(&g[r]).map_err(ctx())?;
         for &i in &left {
-            if b[i][col].iter().all(|&v| v == 0.0) {
+            if is_zero(&b[i][col]) {
                 continue;
             }
             let bic = b[i][col].clone();
-            for ((&c, yc), &zero) in later.iter().zip(&y).zip(&y_zero) {
-                if !zero {
+            for (&c, yc) in later.iter().zip(&y) {
+                if let Some(yc) = yc {
                     b[i][c] -= &bic * yc;
                 }
             }
@@ -475,4 +481,9 @@ pub fn defect_on(
         Err(NumericError::InvalidArgument(_)) => Ok(None),
         Err(e) => Err(PlanError::numeric("commutator defect")(e)),
     }
+}
+
+/// Whether every entry of `m` is zero.
+fn is_zero(m: &DMatrix<f64>) -> bool {
+    m.iter().all(|&v| v == 0.0)
 }
