@@ -2,14 +2,15 @@
 //! Do not edit: regenerate with `lambdamat codegen examples/mms.lmx -o FILE.rs`.
 //!
 //! Kernels, multipliers, right sides and output weights are the Rust
-//! functions below; `system()` collects them and `main()` solves through
-//! lambdamat's numeric layer (`lambdamat::standalone::solver_main`): assembly,
-//! refinement to the tolerance, and the error estimate.
+//! functions below; `system()` collects them, `input()` makes them a
+//! problem without breakpoints, and `main()` solves it through
+//! lambdamat's solver (`lambdamat::standalone::split_solver_main`):
+//! assembly, refinement to the tolerance, and the error estimates.
 //! Unknowns on [0, 1]; eliminations solve for `p`.
 //!
 //! Derived equations for `p` (`lambdamat reduce`):
 //!
-//! - ordered elimination, exact (`--method ordered`, the default; gj is
+//! - ordered elimination, exact (`--method ordered`; gj is
 //!   the right side of equation j):
 //!   `(k1 - k2 k4^-1 k3) p = g1 - k2 k4^-1 g2`
 //!   pivots: q from equation 2 (pivot k4)
@@ -42,7 +43,8 @@ use std::sync::Arc;
 use lambdamat::standalone::Limits::{Fixed, Lower, Upper};
 use lambdamat::standalone::Singularity::{AbelSqrt, Smooth};
 use lambdamat::standalone::{
-    CompiledEquation, CompiledOutput, CompiledSystem, Operator, OutputTerm, PlanError, words,
+    CompiledEquation, CompiledOutput, CompiledSystem, Operator, OutputTerm, PlanError,
+    SplitContact, SplitInput, words,
 };
 
 /// Operator `k1`, kernel `t/sqrt(t^2 - x^2)`: its smooth factor a(x, t) with kernel = a(x, t)/√|t² - x²|.
@@ -154,10 +156,30 @@ pub fn system() -> Result<CompiledSystem, PlanError> {
     Ok(sys)
 }
 
-/// Solves the system and prints the report of `lambdamat solve`; takes
+/// The split-domain problem, ready for `lambdamat::standalone::split_solver_main`.
+pub fn input() -> Result<SplitInput, PlanError> {
+    let contact = SplitContact {
+        scalars: Vec::new(),
+        reals: Vec::new(),
+        unknown_domains: vec![None, None],
+        equation_domains: Vec::new(),
+        rhs: Vec::new(),
+        relations: Vec::new(),
+        inequalities: Vec::new(),
+        singulars: Vec::new(),
+        coefficients: Vec::new(),
+        conditions: Vec::new(),
+        estimates: Vec::new(),
+        ends: Vec::new(),
+    };
+    let sys = system()?;
+    Ok(SplitInput { sys, contact })
+}
+
+/// Solves the problem and prints the report of `lambdamat solve`; takes
 /// `[--method coupled|ordered|commutative] [--tol T] [--max-level N] [--json]`
 /// `[--csv FILE]` (see `--help`). It needs lambdamat without its command line:
 /// `lambdamat = { path = "…", default-features = false }`.
 pub fn main() {
-    std::process::exit(lambdamat::standalone::solver_main(system));
+    std::process::exit(lambdamat::standalone::split_solver_main(input));
 }

@@ -33,7 +33,7 @@ use crate::error::CliError;
 pub use crate::hertz::front::Given;
 use crate::lang::Directive;
 pub use crate::plan::Method;
-use crate::plan::{CompiledSystem, PlanError, SplitInput};
+use crate::plan::{PlanError, SplitInput};
 use crate::system::Program;
 
 mod exact;
@@ -517,20 +517,18 @@ impl Problem {
         let prog = &self.program;
         let code =
             crate::codegen::solver_source(prog, target, &from).map_err(|e| self.located(e))?;
-        if prog.contact.is_split() {
-            // The split solver's input checks (intervals, scalars against
-            // conditions, operators) run when its problem is made.
-            let input = SplitInput::from_program(prog).map_err(|e| self.located(e))?;
-            crate::plan::split::SplitProblem::from_input(input).map_err(|e| self.located(e))?;
-            return Ok(code);
-        }
-        let sys = CompiledSystem::from_program(prog, target).map_err(|e| self.located(e))?;
-        let quick = crate::plan::SolveOptions {
-            max_level: 2,
+        // The solver's input checks (intervals, scalars against
+        // conditions, operators) run when its problem is made; those of the
+        // numerics (right sides finite at the nodes, …) on a short solve.
+        let input = SplitInput::for_target(prog, target).map_err(|e| self.located(e))?;
+        crate::plan::split::SplitProblem::from_input(input).map_err(|e| self.located(e))?;
+        let quick = crate::report::SolveSettings {
             tol: 1.0,
-            ..crate::plan::SolveOptions::default()
+            max_level: 1,
+            unknown: target.map(str::to_string),
+            ..crate::report::SolveSettings::default()
         };
-        if let Err(e) = crate::plan::solve_system(&sys, &quick)
+        if let Err(e) = crate::report::solve(prog, &quick)
             && e.is_input_error()
         {
             return Err(self.located(e));

@@ -239,7 +239,7 @@ fn unconverged_is_ok_and_failures_are_errors() {
     // A memory budget no level fits: the size it would need (exit 3).
     let e = p
         .solve(&SolveOptions {
-            max_memory: Some(1024),
+            max_memory: Some(64),
             ..SolveOptions::default()
         })
         .expect_err("over the budget");

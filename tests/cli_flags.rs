@@ -82,7 +82,7 @@ fn set_is_refused_by_hertz_and_its_subcommands_naming_the_parameter() {
 fn a_closed_standard_output_keeps_the_exit_code_of_the_result() {
     // Not converged (4): the report is lost, the status and message are not.
     let out = bin()
-        .args(["solve", "examples/hertz_stick.lmx"])
+        .args(["solve", "examples/mms.lmx", "--max-level", "1"])
         .stdout(closed_pipe())
         .stderr(Stdio::piped())
         .output()
@@ -109,7 +109,7 @@ fn a_closed_standard_output_keeps_the_exit_code_of_the_result() {
 fn a_closed_standard_error_never_turns_an_exit_code_into_a_panic() {
     for (args, want) in [
         (&["solve", "no/such/file.lmx"][..], 2),
-        (&["solve", "examples/hertz_stick.lmx"], 4),
+        (&["solve", "examples/mms.lmx", "--max-level", "1"], 4),
         (
             &[
                 "hertz",

@@ -3,15 +3,17 @@
 //! example program, and `tests/data/codegen_terms_solver.rs`, which uses
 //! every kind of operator term). This file regenerates them and demands
 //! identical text, compiles them as modules of this test, runs them, and
-//! compares their answers with the in-process solve of the same `.lmx` to
-//! 1e-12 for every method. It also checks the exact manufactured answer
+//! compares their reports with the in-process solve of the same `.lmx`
+//! bit for bit for every method. It also checks the exact manufactured answer
 //! and the command's errors.
 
 mod common;
 
 use common::cli::{lambdamat, lmx_file};
 use lambdamat::lang::parse_program;
-use lambdamat::plan::{CompiledSystem, Method, SolveOptions, SolveReport, solve_system};
+use lambdamat::plan::{CompiledSystem, Method, PlanError, SplitInput};
+use lambdamat::report::{SolveSettings, solve, solve_split};
+use lambdamat::system::Program;
 
 #[allow(dead_code)]
 #[path = "../examples/mms_solver.rs"]
@@ -70,106 +72,83 @@ fn generated_solvers_are_up_to_date() {
     );
 }
 
-fn in_process(source: &str) -> CompiledSystem {
+fn program(source: &str) -> Program {
     let text = std::fs::read_to_string(source).expect("source");
-    let prog = parse_program(&text, source).expect("parses");
-    CompiledSystem::from_program(&prog, None).expect("compiles")
+    parse_program(&text, source).expect("parses")
 }
 
-/// Largest difference between two reports, relative to the size of each
-/// compared quantity (at least 1).
-fn distance(a: &SolveReport, b: &SolveReport) -> f64 {
-    assert_eq!(a.level, b.level, "same refinement level");
-    assert_eq!(a.unknowns.len(), b.unknowns.len());
-    let mut d: f64 = 0.0;
-    for (ua, ub) in a.unknowns.iter().zip(&b.unknowns) {
-        assert_eq!((&ua.name, &ua.x, &ua.weight), (&ub.name, &ub.x, &ub.weight));
-        for (x, y) in ua.values.iter().zip(&ub.values) {
-            d = d.max((x - y).abs() / y.abs().max(1.0));
-        }
-    }
-    for ((na, va), (nb, vb)) in a.outputs.iter().zip(&b.outputs) {
-        assert_eq!(na, nb);
-        assert_eq!(va.is_some(), vb.is_some(), "output {na}");
-        if let (Some(x), Some(y)) = (va, vb) {
-            d = d.max((x - y).abs() / y.abs().max(1.0));
-        }
-    }
-    let (ea, eb) = (a.error_estimate, b.error_estimate);
-    d = d.max((ea - eb).abs() / eb.abs().max(1.0));
-    for (da, db) in a.commutator_defects.iter().zip(&b.commutator_defects) {
-        assert_eq!(da.pair, db.pair);
-        for (x, y) in [
-            (da.defect, db.defect),
-            (da.defect_on_solution, db.defect_on_solution),
-        ] {
-            assert_eq!(x.is_some(), y.is_some());
-            if let (Some(x), Some(y)) = (x, y) {
-                d = d.max((x - y).abs() / y.abs().max(1.0));
-            }
-        }
-    }
-    d
+fn in_process(source: &str) -> CompiledSystem {
+    SplitInput::from_program(&program(source))
+        .expect("compiles")
+        .sys
 }
 
-fn compare(source: &str, generated: &CompiledSystem) {
-    let here = in_process(source);
-    assert_eq!(generated.target, here.target);
-    assert_eq!(generated.domain, here.domain);
-    assert_eq!(generated.interior, here.interior);
-    assert_eq!(generated.conditions.len(), here.conditions.len());
+/// The generated solver's solve and the in-process one for every method
+/// print the same report, bit for bit (JSON numbers are printed to read
+/// back exactly), or are refused with the same message.
+fn compare(source: &str, generated: fn() -> Result<SplitInput, PlanError>) {
+    let prog = program(source);
+    let (g, here) = (generated().expect("consistent"), in_process(source));
+    assert_eq!(g.sys.target, here.target);
+    assert_eq!(g.sys.domain, here.domain);
+    assert_eq!(g.sys.interior, here.interior);
+    assert_eq!(g.sys.conditions.len(), here.conditions.len());
+    let mut solved = 0;
     for method in [Method::Coupled, Method::Ordered, Method::Commutative] {
-        if method == Method::Commutative && !here.conditions.is_empty() {
-            // The single-equation model takes no side conditions.
-            assert!(
-                solve_system(
-                    generated,
-                    &SolveOptions {
-                        method,
-                        ..SolveOptions::default()
-                    }
-                )
-                .is_err()
-            );
-            continue;
-        }
-        let opts = SolveOptions {
-            method,
-            ..SolveOptions::default()
+        let s = SolveSettings {
+            method: Some(method),
+            ..SolveSettings::default()
         };
-        let a = solve_system(generated, &opts).expect("generated solver solves");
-        let b = solve_system(&here, &opts).expect("in-process solve");
-        let d = distance(&a, &b);
-        println!("{source} {method}: generated vs in-process {d:e}");
-        assert!(
-            d <= 1e-12,
-            "{source} {method}: generated vs in-process {d:e}"
-        );
+        let a = solve_split(generated().expect("consistent"), &s);
+        let b = solve(&prog, &s);
+        match (a, b) {
+            (Ok(a), Ok(b)) => {
+                assert_eq!(
+                    a.to_json().to_string(),
+                    b.to_json().to_string(),
+                    "{source} {method}: generated vs in-process"
+                );
+                solved += 1;
+            }
+            (Err(a), Err(b)) => {
+                assert_eq!(a.to_string(), b.to_string(), "{source} {method}");
+                // A method that cannot apply says why (exit 2).
+                assert!(a.is_input_error(), "{source} {method}: {a}");
+            }
+            (a, b) => panic!(
+                "{source} {method}: generated {:?} vs in-process {:?}",
+                a.map(|r| r.converged),
+                b.map(|r| r.converged)
+            ),
+        }
     }
+    assert!(solved >= 1, "{source}: no method solved");
 }
 
 #[test]
 fn generated_mms_solver_matches_the_in_process_solve() {
-    let sys = mms_solver::system().expect("generated system is consistent");
-    compare("examples/mms.lmx", &sys);
+    compare("examples/mms.lmx", mms_solver::input);
     // And it solves the manufactured problem: p = 1, q = x.
-    let r = solve_system(&sys, &SolveOptions::default()).expect("solves");
+    let r = solve_split(
+        mms_solver::input().expect("consistent"),
+        &SolveSettings::default(),
+    )
+    .expect("solves");
     assert!(r.converged);
-    for u in &r.unknowns {
-        let exact = |x: f64| if u.name == "p" { 1.0 } else { x };
+    for (name, u) in &r.unknowns {
+        let exact = |x: f64| if name == "p" { 1.0 } else { x };
         let err =
             u.x.iter()
                 .zip(&u.values)
                 .map(|(&x, v)| (v - exact(x)).abs())
                 .fold(0.0, f64::max);
-        assert!(err <= 1e-10, "{}: max error {err:e}", u.name);
+        assert!(err <= u.error_estimate, "{name}: max error {err:e}");
     }
 }
 
 #[test]
 fn generated_solver_with_every_term_kind_matches() {
-    let sys = terms_solver::system().expect("generated system is consistent");
-    compare("tests/data/codegen_terms.lmx", &sys);
+    compare("tests/data/codegen_terms.lmx", terms_solver::input);
 }
 
 /// The pivots (equation, unknown), 0-based, of `reduce --json`'s steps.
@@ -189,16 +168,14 @@ fn reduce_pivots(source: &str, unknowns: &[String]) -> Vec<(usize, usize)> {
 
 #[test]
 fn generated_solvers_embed_the_derivation_reduce_prints() {
-    for (source, sys) in [
+    for (source, input) in [
         (
             "examples/mms.lmx",
-            mms_solver::system().expect("consistent"),
+            mms_solver::input as fn() -> Result<SplitInput, PlanError>,
         ),
-        (
-            "tests/data/codegen_terms.lmx",
-            terms_solver::system().expect("consistent"),
-        ),
+        ("tests/data/codegen_terms.lmx", terms_solver::input),
     ] {
+        let sys = input().expect("consistent").sys;
         let here = in_process(source);
         assert_eq!(
             here.derived_pivots, None,
@@ -209,11 +186,15 @@ fn generated_solvers_embed_the_derivation_reduce_prints() {
         assert_eq!(embedded, derived, "{source}");
         assert_eq!(embedded, reduce_pivots(source, &sys.unknowns), "{source}");
         // A solver whose embedded derivation is not the one this lambdamat
-        // derives refuses to run rather than run something else.
-        let mut stale = sys.clone();
-        stale.derived_pivots = Some(vec![(0, 1 - sys.target)]);
-        let opts = SolveOptions::default();
-        let err = solve_system(&stale, &opts).expect_err("refused");
+        // derives refuses to run the ordered elimination rather than run
+        // something else.
+        let mut stale = input().expect("consistent");
+        stale.sys.derived_pivots = Some(vec![(0, 1 - sys.target)]);
+        let s = SolveSettings {
+            method: Some(Method::Ordered),
+            ..SolveSettings::default()
+        };
+        let err = solve_split(stale, &s).expect_err("refused");
         assert!(err.to_string().contains("regenerate it"), "{err}");
     }
     // The 20-unknown system: the generated text embeds the steps' pivots.
@@ -241,19 +222,26 @@ fn generated_solvers_embed_the_derivation_reduce_prints() {
 
 #[test]
 fn generated_solver_with_every_function_matches() {
-    let sys = functions_solver::system().expect("generated system is consistent");
-    compare("tests/data/codegen_functions.lmx", &sys);
+    compare("tests/data/codegen_functions.lmx", functions_solver::input);
 }
 
 #[test]
 fn generated_solver_with_a_side_condition_matches() {
-    let sys = condition_solver::system().expect("generated system is consistent");
-    compare("tests/data/codegen_condition.lmx", &sys);
+    compare("tests/data/codegen_condition.lmx", condition_solver::input);
     // f(1/2) = (1/2 + 2/π)/√(3/4).
-    let r = solve_system(&sys, &SolveOptions::default()).expect("solves");
-    let v = r.outputs[0].1.expect("V");
+    let r = solve_split(
+        condition_solver::input().expect("consistent"),
+        &SolveSettings::default(),
+    )
+    .expect("solves");
+    let v = r.outputs["V"];
     let exact = (0.5 + 2.0 / std::f64::consts::PI) / 0.75f64.sqrt();
-    assert!(r.converged && (v - exact).abs() < 1e-10, "{v} vs {exact}");
+    assert!(r.converged, "V = {v}");
+    assert!(
+        (v - exact).abs() <= r.error_estimates["V"],
+        "{v} vs {exact}: estimate {:e}",
+        r.error_estimates["V"]
+    );
 }
 
 #[test]

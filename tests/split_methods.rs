@@ -140,7 +140,7 @@ fn the_cli_runs_ordered_on_a_split_file_and_says_so() {
             assert_eq!(v["method"], method);
             assert_eq!(
                 v["pivots"],
-                serde_json::json!([{"equation": 2, "unknown": 2}, {"equation": 1, "unknown": 1}])
+                serde_json::json!([{"equation": 2, "unknown": "q"}, {"equation": 1, "unknown": "p"}])
             );
         }
     }

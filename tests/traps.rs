@@ -217,7 +217,7 @@ fn max_memory_stops_the_ladder_or_names_the_size_needed() {
     let file = "tests/data/traps/budget_stop.lmx".to_string();
     let args = |v: &[&str]| v.iter().map(|s| s.to_string()).collect::<Vec<_>>();
     let (code, out, err) = run(&[
-        args(&["solve", "--json", "--tol", "1e-15", "--max-memory", "100K"]),
+        args(&["solve", "--json", "--tol", "1e-15", "--max-memory", "600K"]),
         vec![file.clone()],
     ]
     .concat());

@@ -158,13 +158,13 @@ pub struct SolveArgs {
 /// solvers `lambdamat codegen` writes.
 #[derive(Args, Debug, Clone)]
 pub struct SolveFlags {
-    /// coupled (block system), ordered (exact elimination; the default on one interval) or commutative (the seed's single equation, a model). A split-domain file is solved as one coupled collocation system: `coupled` or nothing; the others are refused (exit 2).
+    /// coupled (one collocation system of every equation; the default), ordered (exact block elimination in the pivot order `lambdamat reduce` prints) or commutative (the seed's single equation, a model). A method that cannot apply to the file (side conditions for ordered and commutative; relations, exact singular terms or det(A) = 0 for commutative) is refused with the reason (exit 2).
     #[arg(long, value_parser = ["coupled", "ordered", "commutative"])]
     pub method: Option<String>,
     /// Refine until every error estimate (absolute, from successive levels) is within tol·max(1, |value|): absolute tolerance tol for values up to 1, relative above (finite, > 0).
     #[arg(long, default_value = "1e-10", allow_hyphen_values = true)]
     pub tol: f64,
-    /// Split-domain files: refine also until every unknown's largest pointwise estimate on the output grid is within field-tol·max(1, size), its size being its largest |u/weight| there (> 0; default: the larger of --tol and 1e-6). `--field-tol inf`: the unknowns are reported with their estimates but do not decide convergence. Points where the behaviour is not resolved pointwise (ends graded by the end check, points a `singular` declaration grades toward, pieces narrower than 1e-4 of the interval) are left out of the grid, each with its reason.
+    /// Refine also until every unknown's largest pointwise estimate on the output grid is within field-tol·max(1, size), its size being its largest |u/weight| there (> 0; default: the larger of --tol and 1e-6). `--field-tol inf`: the unknowns are reported with their estimates but do not decide convergence. Points where the behaviour is not resolved pointwise (ends graded by the end check, points a `singular` declaration grades toward, pieces narrower than 1e-4 of the interval) are left out of the grid, each with its reason.
     #[arg(long, allow_hyphen_values = true)]
     pub field_tol: Option<f64>,
     /// Highest refinement level tried (levels are numbered from 0; at most 14).

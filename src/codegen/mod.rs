@@ -44,23 +44,7 @@ pub fn solver_source(
     target: Option<&str>,
     from: &Provenance,
 ) -> Result<String, PlanError> {
-    if prog.contact.is_split() {
-        return split::split_solver_source(prog, from);
-    }
-    let (sys, code) = system_code(prog, target)?;
-    let mut out = String::new();
-    header(&mut out, prog, &sys, from);
-    out.push_str(&imports(&code));
-    out.push_str(&code);
-    out.push_str(
-        "\n/// Solves the system and prints the report of `lambdamat solve`; takes\n\
-         /// `[--method coupled|ordered|commutative] [--tol T] [--max-level N] [--json]`\n\
-         /// `[--csv FILE]` (see `--help`). It needs lambdamat without its command line:\n\
-         /// `lambdamat = { path = \"…\", default-features = false }`.\n\
-         pub fn main() {\n    \
-         std::process::exit(lambdamat::standalone::solver_main(system));\n}\n",
-    );
-    Ok(out)
+    split::split_solver_source(prog, target, from)
 }
 
 /// The compiled system of `prog` and the Rust code that builds it: one
@@ -232,15 +216,12 @@ pub(crate) fn provenance_lines(out: &mut String, from: &Provenance) {
     let _ = writeln!(out, "//! Do not edit: regenerate with `{}`.", from.command);
 }
 
-fn header(out: &mut String, prog: &Program, sys: &CompiledSystem, from: &Provenance) {
-    provenance_lines(out, from);
-    out.push_str(
-        "//!\n\
-         //! Kernels, multipliers, right sides and output weights are the Rust\n\
-         //! functions below; `system()` collects them and `main()` solves through\n\
-         //! lambdamat's numeric layer (`lambdamat::standalone::solver_main`): assembly,\n\
-         //! refinement to the tolerance, and the error estimate.\n",
-    );
+/// The derivation of a file on one interval, for the reader of its
+/// generated solver: the unknowns' interval, the target, the ordered
+/// elimination with its pivots and the commutative eliminant, as
+/// `lambdamat reduce` prints them (`--method ordered` and `commutative`
+/// run exactly these pivots: `system()` embeds them).
+pub(crate) fn one_interval_derivation(out: &mut String, prog: &Program, sys: &CompiledSystem) {
     let _ = writeln!(
         out,
         "//! Unknowns on [{}, {}]; eliminations solve for `{}`.",
@@ -263,7 +244,7 @@ fn header(out: &mut String, prog: &Program, sys: &CompiledSystem, from: &Provena
             Ok(o) => {
                 let _ = writeln!(
                     out,
-                    "//! - ordered elimination, exact (`--method ordered`, the default; gj is\n//!   the right side of equation j):\n//!   `{}`\n//!   pivots: {}",
+                    "//! - ordered elimination, exact (`--method ordered`; gj is\n//!   the right side of equation j):\n//!   `{}`\n//!   pivots: {}",
                     o.text,
                     if o.pivots.is_empty() {
                         "none (one equation)".to_string()
@@ -281,7 +262,7 @@ fn header(out: &mut String, prog: &Program, sys: &CompiledSystem, from: &Provena
                         .collect();
                     let _ = writeln!(
                         out,
-                        "//! - ordered elimination (`--method ordered`, the default), in steps\n//!   with named intermediates ({e}; `lambdamat reduce` prints the\n//!   steps):\n//!   pivots: {}\n//!   result, equation {}: `{}`",
+                        "//! - ordered elimination (`--method ordered`), in steps\n//!   with named intermediates ({e}; `lambdamat reduce` prints the\n//!   steps):\n//!   pivots: {}\n//!   result, equation {}: `{}`",
                         pivots.join("; "),
                         st.equation,
                         st.result.text
@@ -318,11 +299,10 @@ fn header(out: &mut String, prog: &Program, sys: &CompiledSystem, from: &Provena
     if !sys.conditions.is_empty() {
         let _ = writeln!(
             out,
-            "//! - with its {} side condition(s) the system is solved as one least-squares\n//!   system of equations and conditions (every method but the commutative\n//!   model, which refuses them); the eliminations above are not used.",
+            "//! - with its {} side condition(s) the system is solved as one least-squares\n//!   system of equations and conditions (`--method coupled`; the eliminations\n//!   refuse them).",
             sys.conditions.len()
         );
     }
-    source_block(out, prog, "system");
 }
 
 /// The header's closing part, shared by both generators: `prog`

@@ -18,14 +18,18 @@ use num_traits::ToPrimitive;
 
 use super::rust::literal;
 use super::{Names, Provenance, imports, struct_lit, vec_expr};
-use crate::plan::PlanError;
+use crate::plan::{CompiledSystem, PlanError};
 use crate::plan::split_input::{numeric_site, plain};
 use crate::system::Program;
 use crate::system::contact::{Contact, EndSite, Interval, RBin, RExpr, RFunc, SingularKind};
 
 /// Rust source of a solver for the split-domain file `prog`.
-pub fn split_solver_source(prog: &Program, from: &Provenance) -> Result<String, PlanError> {
-    let (_, system) = super::system_code(&plain(prog), None)?;
+pub fn split_solver_source(
+    prog: &Program,
+    target: Option<&str>,
+    from: &Provenance,
+) -> Result<String, PlanError> {
+    let (sys, system) = super::system_code(&plain(prog), target)?;
     let mut fns = Fns::new(&prog.contact);
     let sites = prog
         .contact
@@ -43,21 +47,35 @@ pub fn split_solver_source(prog: &Program, from: &Provenance) -> Result<String, 
     let _ = writeln!(code, "    let contact = {};", indent(&contact, 4));
     code.push_str("    let sys = system()?;\n    Ok(SplitInput { sys, contact })\n}\n");
     let mut out = String::new();
-    header(&mut out, prog, from);
+    header(&mut out, prog, &sys, from);
     out.push_str(&imports(&code));
     out.push_str(&code);
     out.push_str(
         "\n/// Solves the problem and prints the report of `lambdamat solve`; takes\n\
-         /// `[--tol T] [--max-level N] [--json]` (see `--help`). It needs lambdamat without\n\
-         /// its command line: `lambdamat = { path = \"…\", default-features = false }`.\n\
+         /// `[--method coupled|ordered|commutative] [--tol T] [--max-level N] [--json]`\n\
+         /// `[--csv FILE]` (see `--help`). It needs lambdamat without its command line:\n\
+         /// `lambdamat = { path = \"…\", default-features = false }`.\n\
          pub fn main() {\n    \
          std::process::exit(lambdamat::standalone::split_solver_main(input));\n}\n",
     );
     Ok(out)
 }
 
-fn header(out: &mut String, prog: &Program, from: &Provenance) {
+fn header(out: &mut String, prog: &Program, sys: &CompiledSystem, from: &Provenance) {
     super::provenance_lines(out, from);
+    if !prog.contact.is_split() {
+        out.push_str(
+            "//!\n\
+             //! Kernels, multipliers, right sides and output weights are the Rust\n\
+             //! functions below; `system()` collects them, `input()` makes them a\n\
+             //! problem without breakpoints, and `main()` solves it through\n\
+             //! lambdamat's solver (`lambdamat::standalone::split_solver_main`):\n\
+             //! assembly, refinement to the tolerance, and the error estimates.\n",
+        );
+        super::one_interval_derivation(out, prog, sys);
+        super::source_block(out, prog, "system");
+        return;
+    }
     out.push_str(
         "//!\n\
          //! A split-domain (contact) problem. Kernels, right sides and output\n\

@@ -43,8 +43,7 @@ const PEAK_PANELS: f64 = 1.0;
 /// hundred rounding units wide.
 const FEATURE_FLOOR: f64 = 1e-11;
 
-/// Defects above this are reported as warnings.
-pub const DEFECT_WARNING: f64 = 1e-8;
+pub use super::split_methods::DEFECT_WARNING;
 
 /// What to solve and how accurately.
 #[derive(Debug, Clone, Copy)]

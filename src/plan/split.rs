@@ -155,6 +155,17 @@ pub struct SplitProblem {
     cache: std::sync::Mutex<std::collections::HashMap<Vec<u64>, Arc<DMatrix<f64>>>>,
     /// The memory budget in bytes ([`crate::numeric::budget`]).
     pub budget: u64,
+    /// Set by the automatic end weights (`split_weights.rs`) when another
+    /// trial space had a null direction: the answer is one of several.
+    pub(super) weight_note: Option<String>,
+    /// The automatic end weights chosen, as the report prints them (for
+    /// a refusal met in their trial space).
+    pub(super) weight_text: Option<String>,
+    /// The refusal to give instead of an answer that does not reach its
+    /// tolerance when another trial space had a null direction
+    /// (`split_weights.rs`): the chosen space then only approximates
+    /// what the other represents.
+    pub(super) null_refusal: Option<PlanError>,
     /// The method other than `coupled` every discretisation runs
     /// (`split_methods.rs`); `None`: `coupled`.
     pub(super) method: Option<super::split_methods::MethodPlan>,
@@ -565,6 +576,9 @@ impl SplitProblem {
             probe: None,
             cache: Default::default(),
             budget: crate::numeric::budget::default_budget(),
+            weight_note: None,
+            weight_text: None,
+            null_refusal: None,
             method: None,
             scalar_jacobian: Default::default(),
         })
@@ -941,7 +955,21 @@ impl SplitProblem {
                 continue;
             }
             for (i, &x) in xs.iter().enumerate() {
-                rhs[r0 + i] = self.rhs_at(e, &vars, x);
+                let v = self.rhs_at(e, &vars, x);
+                // A right side without scalars is the file's alone: not
+                // finite at a node is an input error (one with a scalar may
+                // be probed at a value the root solve then rejects).
+                if !v.is_finite() && self.contact.rhs.get(e).is_none_or(Option::is_none) {
+                    return Err(PlanError::RightSide {
+                        equation: e,
+                        reason: format!(
+                            "right side of equation {} = {} is not finite at x = {x}",
+                            e + 1,
+                            self.sys.equations[e].rhs_text
+                        ),
+                    });
+                }
+                rhs[r0 + i] = v;
             }
             for j in 0..nu {
                 let op = ops[e][j].as_ref();
@@ -1346,6 +1374,33 @@ impl SplitProblem {
                 self.sys.unknowns[j], self.sys.unknowns[other], self.sys.unknowns[other]
             ))),
         }
+    }
+
+    /// The adjoint rounding bound of output `o` on `d`: `|A⁻ᵀl|ᵀ·slack`
+    /// with `l` its functional's row ([`Rounding`]), the first-order
+    /// change of the output under the rounding of the solve and of the
+    /// assembled entries, amplified as the system amplifies it in that
+    /// direction (a near null direction of the discretisation shows here
+    /// while level differences may miss it). `None` without the level's
+    /// factors (a least-squares or method solve) or a finite bound.
+    pub(super) fn output_rounding(&self, d: &Discrete, o: usize) -> Option<f64> {
+        let rounding = d.rounding.as_deref()?;
+        let terms = self.moved_terms(
+            &self.sys.outputs[o].terms,
+            |s| match s {
+                EndSite::Output { output, term } if output == o => Some(term),
+                _ => None,
+            },
+            &d.vars,
+        );
+        let (row, _) = d.layout().functional(&terms).ok()?;
+        let z = rounding.lu.solve_transpose(&row);
+        let b: f64 = z
+            .iter()
+            .zip(rounding.slack.iter())
+            .map(|(z, s)| z.abs() * s)
+            .sum();
+        b.is_finite().then_some(b)
     }
 
     /// The value of output `o` for a discrete solution: its functional's

@@ -539,6 +539,7 @@ pub fn answer_at_end(
             sizes: Vec::new(),
             left_out: Vec::new(),
             floors: Vec::new(),
+            output_floors: Vec::new(),
         };
         // Each output's own level estimate.
         let noise: Vec<f64> = (0..n_out)

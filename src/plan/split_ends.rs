@@ -315,6 +315,7 @@ pub(super) fn check(
             sizes: Vec::new(),
             left_out: Vec::new(),
             floors: Vec::new(),
+            output_floors: Vec::new(),
         }];
         let (x, slope, d) = find_scalar(problem, lvl, &warm, opts.tol)?;
         (vec![x], slope, d)
@@ -331,6 +332,7 @@ pub(super) fn check(
         sizes: Vec::new(),
         left_out: Vec::new(),
         floors: Vec::new(),
+        output_floors: Vec::new(),
     };
     Ok(Verdict::Climb {
         level: Box::new(level),

@@ -324,12 +324,18 @@ impl SplitInput {
     /// Compiles `prog` (a file with split-domain declarations): its
     /// operator system as if it had none, and its declarations.
     pub fn from_program(prog: &Program) -> Result<SplitInput, PlanError> {
+        SplitInput::for_target(prog, None)
+    }
+
+    /// [`SplitInput::from_program`] with the eliminations' target unknown
+    /// named (`None`: the file's `solve for`, else the first unknown).
+    pub fn for_target(prog: &Program, target: Option<&str>) -> Result<SplitInput, PlanError> {
         let mut contact = SplitContact::from_contact(&prog.contact);
         for e in &mut contact.ends {
             e.site = numeric_site(prog, e.site)?;
         }
         Ok(SplitInput {
-            sys: CompiledSystem::from_program(&plain(prog), None)?,
+            sys: CompiledSystem::from_program(&plain(prog), target)?,
             contact,
         })
     }

@@ -33,6 +33,9 @@ use crate::numeric::solve::DEFAULT_MAX_COND;
 use crate::numeric::{Assembler, NumericError, Operator, PanelBasis};
 use crate::system::NcPoly;
 
+/// Commutator defects above this are reported as warnings.
+pub const DEFECT_WARNING: f64 = 1e-8;
+
 /// A method other than `coupled`, ready to run on every discretisation of
 /// one problem: the method, the derivation it executes, and the record of
 /// its last solve.

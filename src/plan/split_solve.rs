@@ -245,6 +245,10 @@ pub(super) struct Level {
     /// Per unknown, its rounding floor when the adjoint bound replaced
     /// `32·ε·κ·max(1, size)` ([`adjoint_floors`]; empty otherwise).
     pub(super) floors: Vec<Option<f64>>,
+    /// Per output, the adjoint rounding bound of its functional
+    /// ([`SplitProblem::output_rounding`]; `None` where the level's
+    /// factors were not kept).
+    pub(super) output_floors: Vec<Option<f64>>,
 }
 
 /// Tolerance of the root iterations: a twentieth of the requested
@@ -374,8 +378,17 @@ fn solve_split_ladder(
             Err(PlanError::RootAtEnd(r)) if levels.is_empty() => {
                 return super::split_end::answer_at_end(problem, r, opts);
             }
-            // Over the memory budget: the last level that fitted, marked.
-            Err(PlanError::OverBudget(e)) if previous.is_some() && !levels.is_empty() => {
+            // Over the memory budget, or too ill-conditioned to solve: the
+            // last level solved, marked (not converged).
+            Err(e)
+                if previous.is_some()
+                    && !levels.is_empty()
+                    && (matches!(e, PlanError::OverBudget(_)) || is_ill_conditioned(&e)) =>
+            {
+                let why = match &e {
+                    PlanError::OverBudget(_) => "the last within the memory budget",
+                    _ => "the last whose system was well-conditioned",
+                };
                 let this = levels.pop().expect("checked");
                 let d = previous.take().expect("checked");
                 let rt = if ns > 0 {
@@ -390,15 +403,22 @@ fn solve_split_ladder(
                         .max(d.consistency)
                 };
                 let mut report = report(&problem, &d, &levels, &this, est, false, opts, k, rt);
-                report.stopped = Some(format!(
-                    "stopped after {k} levels, the last within the memory budget: {e}"
-                ));
+                report.stopped = Some(format!("stopped after {k} levels, {why}: {e}"));
+                if let Some(e) = without_a_digit(&mut problem, &report) {
+                    return Err(e);
+                }
                 return Ok(SplitSolution {
                     report,
                     problem,
                     discrete: d,
                     previous: None,
                     shifted: None,
+                });
+            }
+            Err(e) if is_null_direction(&e) => {
+                return Err(match &problem.weight_text {
+                    Some(w) => super::split_weights::in_class(e, w, ""),
+                    None => e,
                 });
             }
             Err(e) => return Err(e),
@@ -408,6 +428,9 @@ fn solve_split_ladder(
             .collect::<Result<Vec<f64>, PlanError>>()?;
         let coefficients = (0..problem.contact.coefficients.len())
             .map(|c| problem.coefficient(&d, c).unwrap_or(f64::NAN))
+            .collect();
+        let output_floors = (0..problem.sys.outputs.len())
+            .map(|o| problem.output_rounding(&d, o))
             .collect();
         let mut this = Level {
             dim: SplitProblem::size(&d),
@@ -421,6 +444,7 @@ fn solve_split_ladder(
             sizes: Vec::new(),
             left_out: Vec::new(),
             floors: Vec::new(),
+            output_floors,
         };
         let rt = if ns > 0 {
             2.0 * root_tolerance(opts.tol)
@@ -498,6 +522,9 @@ fn solve_split_ladder(
                 k + 1,
                 rt,
             );
+            if let Some(e) = without_a_digit(&mut problem, &report) {
+                return Err(e);
+            }
             return Ok(SplitSolution {
                 report,
                 problem,
@@ -510,6 +537,51 @@ fn solve_split_ladder(
         previous = Some(d);
     }
     Err(PlanError::Invalid("empty level ladder".into()))
+}
+
+/// The refusal of an answer that did not reach its tolerance in a trial
+/// space chosen beside one with a null direction
+/// ([`SplitProblem::null_refusal`]), when no output, scalar or
+/// coefficient it reports has three significant digits (an estimate below
+/// a thousandth of its value's size; or there is none of them at all):
+/// the chosen space then only drifts toward what the other represents
+/// (`tests/data/traps/null_log_system_none.lmx`: no solution,
+/// `int f = -1.1e8 ± 1.1e8`). An answer with digits
+/// (`null_log_system.lmx`: `-6.2831856 ± 1.6e-5`) is kept, marked.
+fn without_a_digit(problem: &mut SplitProblem, r: &SplitReport) -> Option<PlanError> {
+    if r.converged || problem.null_refusal.is_none() {
+        return None;
+    }
+    let mut all = r.scalars.iter().chain(&r.outputs).chain(&r.coefficients).peekable();
+    let none = all.peek().is_none();
+    let digitless = none || all.any(|q| !q.value.is_finite() || q.error.is_nan() || q.error >= 1e-3 * q.value.abs());
+    if digitless {
+        problem.null_refusal.take()
+    } else {
+        None
+    }
+}
+
+/// Whether `e` is the solver's discrete null-direction refusal.
+fn is_null_direction(e: &PlanError) -> bool {
+    matches!(
+        e,
+        PlanError::Numeric {
+            source: crate::numeric::NumericError::NullSpace { .. },
+            ..
+        }
+    )
+}
+
+/// Whether `e` is the solver's refusal of an ill-conditioned level.
+fn is_ill_conditioned(e: &PlanError) -> bool {
+    matches!(
+        e,
+        PlanError::Numeric {
+            source: crate::numeric::NumericError::IllConditioned { .. },
+            ..
+        }
+    )
 }
 
 /// The error estimate of one quantity on the newest level, from its
@@ -681,11 +753,20 @@ fn estimate_of_guarded(
 /// no such term (only the 32 ulps of [`level_estimate`]), and the
 /// gallery's estimates (all integrals) are unchanged.
 pub(super) fn point_rounding(problem: &SplitProblem, this: &Level, o: usize) -> f64 {
+    let adjoint = this.output_floors.get(o).copied().flatten();
     let weight = point_weight(problem, o);
     if weight == 0.0 {
-        return 0.0;
+        // An integral sums many panels' rounding, which largely cancels,
+        // unless the system amplifies it in the integral's own direction
+        // (a near null direction): the adjoint bound says which.
+        return adjoint.unwrap_or(0.0);
     }
-    rounding_floor(this.cond) * weight.max(this.outputs[o].abs())
+    let normwise = rounding_floor(this.cond) * weight.max(this.outputs[o].abs());
+    // The sharper of the two bounds of a point value's rounding: the
+    // adjoint one overstates it beside an end where the operator weighs
+    // the unknown by a vanishing factor (measured on the flat punch:
+    // 9.9e-9 at `p(1e-9)`, whose error is 1.2e-10).
+    adjoint.map_or(normwise, |a| a.min(normwise))
 }
 
 /// The sum of `|coeff|` over output `o`'s point values `coeff·u(c)`
@@ -1090,7 +1171,7 @@ pub(super) fn report(
         end_answer: None,
         end_check: problem.end_check().cloned(),
         stopped: None,
-        uniqueness: None,
+        uniqueness: problem.weight_note.clone(),
     };
     // A coefficient a condition fixes to a value that depends on the
     // scalars (JKR: `B = -C/sqrt(a)`) moves with them: its estimate adds

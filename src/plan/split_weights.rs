@@ -93,6 +93,8 @@ pub(super) fn choose(problem: &mut SplitProblem) -> Result<(), PlanError> {
     let mut tried: Vec<Vec<Ends>> = Vec::new();
     let mut best: Option<(f64, Vec<Ends>)> = None;
     let mut per: Vec<Option<(f64, Ends)>> = vec![None; nu];
+    // The first trial space met with a null direction, and its numbers.
+    let mut null: Option<(Vec<Ends>, String, PlanError)> = None;
     for (l, h) in pairs {
         let w: Vec<Ends> = open
             .iter()
@@ -102,8 +104,14 @@ pub(super) fn choose(problem: &mut SplitProblem) -> Result<(), PlanError> {
             continue;
         }
         tried.push(w.clone());
-        let Ok((dists, score)) = trial(problem, &w, &open, base) else {
-            continue;
+        let (dists, score) = match trial(problem, &w, &open, base) {
+            Ok(t) => t,
+            Err(e) => {
+                if let Some(numbers) = null_numbers(&e) {
+                    null.get_or_insert((w.clone(), numbers, e));
+                }
+                continue;
+            }
         };
         for (u, d) in dists.iter().enumerate() {
             if let Some(d) = *d
@@ -117,7 +125,10 @@ pub(super) fn choose(problem: &mut SplitProblem) -> Result<(), PlanError> {
         }
     }
     let Some(mut best) = best else {
-        return Ok(());
+        return match null {
+            Some((w, _, e)) => Err(in_class(e, &weights_text(problem, &w, &open), "")),
+            None => Ok(()),
+        };
     };
     let combo: Vec<Ends> = per
         .iter()
@@ -130,6 +141,21 @@ pub(super) fn choose(problem: &mut SplitProblem) -> Result<(), PlanError> {
     {
         best = (score, combo);
     }
+    let here = weights_text(problem, &best.1, &open);
+    if let Some((w, numbers, e)) = null {
+        let other = weights_text(problem, &w, &open);
+        problem.weight_note = Some(format!(
+            "the solution is not unique across trial spaces: in the trial space of weight {other} the discretised operator has a null direction ({numbers}), so in that class the problem has more than one solution or none; the answer is the one in the class of the weight {here} shown, where the operator is invertible; a side condition (`condition …`) can select another"
+        ));
+        problem.null_refusal = Some(in_class(
+            e,
+            &other,
+            &format!(
+                " (in the trial space of weight {here} the refinement did not reach the tolerance)"
+            ),
+        ));
+    }
+    problem.weight_text = Some(here);
     let base = problem.contact.singulars.len();
     install(problem, &best.1, &open);
     // The plain weights installed (in `install`'s order) are graded only
@@ -148,6 +174,70 @@ pub(super) fn choose(problem: &mut SplitProblem) -> Result<(), PlanError> {
     }
     problem.set_plain_ends(plain);
     Ok(())
+}
+
+/// A null-direction refusal `e` naming the trial space it was met in
+/// (`weight`) and, after it, `more`; other errors unchanged.
+pub(super) fn in_class(e: PlanError, weight: &str, more: &str) -> PlanError {
+    match e {
+        PlanError::Numeric { context, source } => PlanError::Numeric {
+            context: format!("{context}, in the trial space of weight {weight}{more}"),
+            source,
+        },
+        e => e,
+    }
+}
+
+/// The singular values of a null-direction refusal `e` in words; `None`
+/// for any other error.
+fn null_numbers(e: &PlanError) -> Option<String> {
+    match e {
+        PlanError::Numeric {
+            source: crate::numeric::NumericError::NullSpace { smallest, next, .. },
+            ..
+        } => Some(format!(
+            "smallest singular value {smallest:.1e} of the largest, the next {next:.1e}"
+        )),
+        _ => None,
+    }
+}
+
+/// The weights `w` at the ends `open` marks as the report prints them:
+/// one text when every unknown has the same, else `name: text` per
+/// unknown.
+fn weights_text(problem: &SplitProblem, w: &[Ends], open: &[(bool, bool)]) -> String {
+    use super::{WeightSide, weight_factor_text};
+    let (a, b) = problem.domain;
+    let texts: Vec<String> = w
+        .iter()
+        .zip(open)
+        .map(|(&(l, h), &(ol, oh))| {
+            let mut fs = Vec::new();
+            if ol && l != 0.0 {
+                fs.push(weight_factor_text(a, l, WeightSide::Above));
+            }
+            if oh && h != 0.0 {
+                fs.push(weight_factor_text(b, h, WeightSide::Below));
+            }
+            if fs.is_empty() {
+                "1".to_string()
+            } else {
+                fs.join("*")
+            }
+        })
+        .collect();
+    if texts.windows(2).all(|p| p[0] == p[1]) {
+        texts.into_iter().next().unwrap_or_else(|| "1".to_string())
+    } else {
+        problem
+            .sys
+            .unknowns
+            .iter()
+            .zip(&texts)
+            .map(|(n, t)| format!("{n}: {t}"))
+            .collect::<Vec<_>>()
+            .join("; ")
+    }
 }
 
 /// Declares the weights `w` (per unknown, the exponents at the two ends)

@@ -17,12 +17,9 @@
 //! **The tolerance rule** (`--tol`, both tracks): a solve has converged
 //! when every estimate that drives refinement is within `tol·max(1,
 //! |value|)`, i.e. absolute tolerance `tol` for quantities of size up to 1
-//! and relative tolerance `tol` above (SciPy's `atol = rtol = tol`). On a
-//! file on one interval these are the outputs and the unknowns on the grid
-//! (an unknown's size is its largest `|u/weight|`); on a split-domain file
-//! the scalars, outputs and singular coefficients (its unknowns are
-//! reported with pointwise estimates bounded as the ladder's are, but do
-//! not drive it yet).
+//! and relative tolerance `tol` above (SciPy's `atol = rtol = tol`): the
+//! scalars, outputs and singular coefficients, and each unknown's
+//! pointwise estimates to the field tolerance (`--field-tol`).
 //!
 //! * [`text`]: the text report;
 //! * [`svg`]: the plot of the unknowns.
@@ -116,27 +113,26 @@ pub struct Report {
     pub error_estimates: BTreeMap<String, f64>,
     /// Warnings (printed on standard error by the CLI).
     pub warnings: Vec<String>,
-    /// Track-specific values: `dim`, `cond`, `commutator_defects`,
-    /// `pivots`, `model`, `target`, `domain` (one interval);
-    /// `dim`, `cond`, `singular_exponents`, `end_answer`, `end_check`,
-    /// `notes` (split domain: lines the text report shows after the
-    /// numbers, e.g. that the scalar is bounded at an end of its range).
+    /// The solver's diagnostics: `dim`, `cond`, `target`, `unique`,
+    /// `singular_exponents`, `end_answer`, `end_check`, `notes` (lines
+    /// the text report shows after the numbers, e.g. that the scalar is
+    /// bounded at an end of its range); with `--method ordered` or
+    /// `commutative` also `pivots`, and for the commutative model `model`
+    /// and `commutator_defects`.
     pub extra: Map<String, Value>,
 }
 
 /// How to solve.
 #[derive(Debug, Clone)]
 pub struct SolveSettings {
-    /// The unknown the eliminations solve for (one-interval files; default:
-    /// the file's `solve for`, else the first unknown).
+    /// The unknown the eliminations solve for (default: the file's `solve
+    /// for`, else the first unknown).
     pub unknown: Option<String>,
     /// The tolerance (see the module's rule).
     pub tol: f64,
-    /// The highest refinement level tried (the ladder's numbering: levels
-    /// 1, 2, … on one interval, 0, 1, … on a split domain).
+    /// The highest refinement level tried (levels are numbered from 0).
     pub max_level: usize,
-    /// The method; `None` is the file's default (`ordered` on one
-    /// interval, the split solver on a split domain).
+    /// The method; `None` is `coupled`.
     pub method: Option<Method>,
     /// Points of the output grid.
     pub grid: usize,
@@ -196,14 +192,7 @@ impl SolveSettings {
 /// Solves `prog` as `s` asks: the one entry for every file.
 pub fn solve(prog: &Program, s: &SolveSettings) -> Result<Report, PlanError> {
     s.check()?;
-    if prog.contact.is_split() {
-        solve_split(SplitInput::from_program(prog)?, s)
-    } else {
-        solve_compiled(
-            &CompiledSystem::from_program(prog, s.unknown.as_deref())?,
-            s,
-        )
-    }
+    solve_split(SplitInput::for_target(prog, s.unknown.as_deref())?, s)
 }
 
 /// Solves a compiled one-interval system (built from a program, or by a
@@ -349,6 +338,15 @@ pub fn from_split(sol: &SplitSolution, grid: usize) -> Result<Report, PlanError>
     if let Some(m) = sol.problem.method_record() {
         warnings.extend(m.warnings);
         if r.method == Method::Commutative.name() {
+            for ([a, b], d) in &m.commuted {
+                if let Some(v) = d
+                    && *v > crate::plan::split_methods::DEFECT_WARNING
+                {
+                    warnings.push(format!(
+                        "{a} and {b} do not commute: ‖{a}{b} f - {b}{a} f‖/‖{a}{b} f‖ = {v:.3e} for f = 1 + x; an elimination that commutes them is a model, not the system"
+                    ));
+                }
+            }
             extra.insert("model".into(), json!(true));
             extra.insert(
                 "commutator_defects".into(),
@@ -366,10 +364,17 @@ pub fn from_split(sol: &SplitSolution, grid: usize) -> Result<Report, PlanError>
             "pivots".into(),
             m.pivots
                 .iter()
-                .map(|(e, u)| json!({"equation": e, "unknown": u}))
+                .map(|&(e, u)| {
+                    let name = u.checked_sub(1).and_then(|u| sol.problem.sys.unknowns.get(u));
+                    json!({"equation": e, "unknown": name})
+                })
                 .collect(),
         );
     }
+    extra.insert(
+        "target".into(),
+        json!(sol.problem.sys.unknowns.get(sol.problem.sys.target)),
+    );
     extra.insert("unique".into(), json!(r.uniqueness.is_none()));
     let mut notes = text::split_notes(r);
     notes.extend(text::log_end_notes(sol));
@@ -428,9 +433,23 @@ fn split_weight(sol: &SplitSolution, u: usize) -> String {
             if b.weight.is_empty() {
                 "1".to_string()
             } else {
+                // A factor at an end of the unknown's support is printed
+                // one-sided (`x^(0.5)`, `(1 - x)^(-0.5)`), one inside it
+                // with an absolute value.
+                let lo = b.panels.first().map_or(f64::NEG_INFINITY, |p| p.a);
+                let hi = b.panels.last().map_or(f64::INFINITY, |p| p.b);
                 b.weight
                     .iter()
-                    .map(|f| weight_factor_text(f.at, f.exponent, WeightSide::Both))
+                    .map(|f| {
+                        let side = if f.at >= hi {
+                            WeightSide::Below
+                        } else if f.at <= lo {
+                            WeightSide::Above
+                        } else {
+                            WeightSide::Both
+                        };
+                        weight_factor_text(f.at, f.exponent, side)
+                    })
                     .collect::<Vec<_>>()
                     .join("*")
             }

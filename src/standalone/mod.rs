@@ -49,7 +49,7 @@ pub const MAX_LEVEL: usize = crate::report::MAX_LEVEL;
 /// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct Flags {
-    /// `--method`: coupled, ordered (default) or commutative.
+    /// `--method`: coupled (default), ordered or commutative.
     pub method: Option<String>,
     /// `--tol` (default 1e-10).
     pub tol: f64,
@@ -83,7 +83,7 @@ pub const USAGE: &str = "A solver written by `lambdamat codegen`: solves its sys
 Usage: SOLVER [--method coupled|ordered|commutative] [--tol T] [--max-level N] [--json] [--csv FILE]
 
 Options:
-      --method M       coupled (block system), ordered (exact elimination, default) or commutative (a model)
+      --method M       coupled (one collocation system, default), ordered (exact elimination) or commutative (a model)
       --tol T          refine until the error estimate is below T (finite, > 0) [default: 1e-10]
       --max-level N    highest refinement level tried, numbered from 0 (1 to 14) [default: 8]
       --json           print one JSON object instead of text

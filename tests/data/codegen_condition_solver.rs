@@ -2,14 +2,15 @@
 //! Do not edit: regenerate with `lambdamat codegen tests/data/codegen_condition.lmx -o FILE.rs`.
 //!
 //! Kernels, multipliers, right sides and output weights are the Rust
-//! functions below; `system()` collects them and `main()` solves through
-//! lambdamat's numeric layer (`lambdamat::standalone::solver_main`): assembly,
-//! refinement to the tolerance, and the error estimate.
+//! functions below; `system()` collects them, `input()` makes them a
+//! problem without breakpoints, and `main()` solves it through
+//! lambdamat's solver (`lambdamat::standalone::split_solver_main`):
+//! assembly, refinement to the tolerance, and the error estimates.
 //! Unknowns on [-1, 1]; eliminations solve for `f`.
 //!
 //! Derived equations for `f` (`lambdamat reduce`):
 //!
-//! - ordered elimination, exact (`--method ordered`, the default; gj is
+//! - ordered elimination, exact (`--method ordered`; gj is
 //!   the right side of equation j):
 //!   `h f = g1`
 //!   pivots: none (one equation)
@@ -17,8 +18,8 @@
 //!   `h f = [1]`
 //!   commuted pairs: none
 //! - with its 1 side condition(s) the system is solved as one least-squares
-//!   system of equations and conditions (every method but the commutative
-//!   model, which refuses them); the eliminations above are not used.
+//!   system of equations and conditions (`--method coupled`; the eliminations
+//!   refuse them).
 //!
 //! The system (parameters substituted):
 //!
@@ -39,7 +40,7 @@ use std::sync::Arc;
 use lambdamat::standalone::Limits::Fixed;
 use lambdamat::standalone::{
     CompiledCondition, CompiledEquation, CompiledOutput, CompiledSystem, Operator, OutputTerm,
-    PlanError, words,
+    PlanError, RealFn, SplitContact, SplitInput, SplitInterval, words,
 };
 
 /// Operator `h`, kernel `1/pi*(1/(t - x))`: its smooth factor a(x, t) with kernel = a(x, t)/(t - x).
@@ -118,10 +119,45 @@ pub fn system() -> Result<CompiledSystem, PlanError> {
     Ok(sys)
 }
 
-/// Solves the system and prints the report of `lambdamat solve`; takes
+/// A constant: `-1`.
+fn const_minus_1(_v: &[f64], _x: f64) -> f64 {
+    -1.0
+}
+
+/// A constant: `1`.
+fn const_1(_v: &[f64], _x: f64) -> f64 {
+    1.0
+}
+
+/// The split-domain problem, ready for `lambdamat::standalone::split_solver_main`.
+pub fn input() -> Result<SplitInput, PlanError> {
+    let contact = SplitContact {
+        scalars: Vec::new(),
+        reals: Vec::new(),
+        unknown_domains: vec![Some(SplitInterval {
+            lo: RealFn::new(const_minus_1),
+            hi: RealFn::new(const_1),
+            lo_closed: true,
+            hi_closed: true,
+        })],
+        equation_domains: Vec::new(),
+        rhs: Vec::new(),
+        relations: Vec::new(),
+        inequalities: Vec::new(),
+        singulars: Vec::new(),
+        coefficients: Vec::new(),
+        conditions: Vec::new(),
+        estimates: Vec::new(),
+        ends: Vec::new(),
+    };
+    let sys = system()?;
+    Ok(SplitInput { sys, contact })
+}
+
+/// Solves the problem and prints the report of `lambdamat solve`; takes
 /// `[--method coupled|ordered|commutative] [--tol T] [--max-level N] [--json]`
 /// `[--csv FILE]` (see `--help`). It needs lambdamat without its command line:
 /// `lambdamat = { path = "…", default-features = false }`.
 pub fn main() {
-    std::process::exit(lambdamat::standalone::solver_main(system));
+    std::process::exit(lambdamat::standalone::split_solver_main(input));
 }

@@ -204,8 +204,9 @@ pub fn input() -> Result<SplitInput, PlanError> {
 }
 
 /// Solves the problem and prints the report of `lambdamat solve`; takes
-/// `[--tol T] [--max-level N] [--json]` (see `--help`). It needs lambdamat without
-/// its command line: `lambdamat = { path = "…", default-features = false }`.
+/// `[--method coupled|ordered|commutative] [--tol T] [--max-level N] [--json]`
+/// `[--csv FILE]` (see `--help`). It needs lambdamat without its command line:
+/// `lambdamat = { path = "…", default-features = false }`.
 pub fn main() {
     std::process::exit(lambdamat::standalone::split_solver_main(input));
 }
