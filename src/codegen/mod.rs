@@ -392,11 +392,12 @@ fn imports(code: &str) -> String {
                 if line.len() < 100 {
                     let _ = writeln!(out, "{line}");
                 } else {
-                    // rustfmt fills lines of at most 100 columns.
+                    // rustfmt fills the rows of a nested import list to
+                    // at most 99 columns.
                     let _ = writeln!(out, "use {path}::{{");
                     let mut row = String::from("   ");
                     for n in many {
-                        if row.len() + 1 + n.len() + 1 > 100 {
+                        if row.len() + 1 + n.len() + 1 > 99 {
                             let _ = writeln!(out, "{row}");
                             row = String::from("   ");
                         }

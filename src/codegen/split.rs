@@ -493,7 +493,7 @@ fn lit(name: &str, fields: &[(&str, String)]) -> String {
 /// item per line.
 fn list(items: &[String]) -> String {
     match items {
-        [one] if one.contains('\n') && !one.starts_with("Some(") => format!("vec![{one}]"),
+        [one] if one.contains('\n') => format!("vec![{one}]"),
         _ if items.iter().any(|i| i.contains('\n')) => {
             let mut s = "vec![\n".to_string();
             for it in items {

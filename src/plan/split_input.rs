@@ -377,7 +377,14 @@ pub fn numeric_site(prog: &Program, site: EndSite) -> Result<EndSite, PlanError>
 /// as `system()`).
 pub fn plain(prog: &Program) -> Program {
     let mut p = prog.clone();
+    let c = &prog.contact;
     p.contact = Contact::default();
+    // A declared interval without scalars is the operator system's own
+    // (`unknown f on [0, 2]` when no limit reaches 2).
+    if c.scalars.is_empty() {
+        p.contact.unknown_domains = c.unknown_domains.clone();
+        p.contact.reals = c.reals.clone();
+    }
     p
 }
 

@@ -117,22 +117,18 @@ pub fn input() -> Result<SplitInput, PlanError> {
     let contact = SplitContact {
         scalars: Vec::new(),
         reals: Vec::new(),
-        unknown_domains: vec![
-            Some(SplitInterval {
-                lo: RealFn::new(const_0),
-                hi: RealFn::new(const_1),
-                lo_closed: true,
-                hi_closed: true,
-            }),
-        ],
-        equation_domains: vec![
-            Some(SplitInterval {
-                lo: RealFn::new(const_0),
-                hi: RealFn::new(const_1),
-                lo_closed: true,
-                hi_closed: true,
-            }),
-        ],
+        unknown_domains: vec![Some(SplitInterval {
+            lo: RealFn::new(const_0),
+            hi: RealFn::new(const_1),
+            lo_closed: true,
+            hi_closed: true,
+        })],
+        equation_domains: vec![Some(SplitInterval {
+            lo: RealFn::new(const_0),
+            hi: RealFn::new(const_1),
+            lo_closed: true,
+            hi_closed: true,
+        })],
         rhs: Vec::new(),
         relations: Vec::new(),
         inequalities: vec![SplitInequality {

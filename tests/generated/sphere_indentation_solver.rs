@@ -136,22 +136,18 @@ pub fn input() -> Result<SplitInput, PlanError> {
             range: (0.0, 2.0),
         }],
         reals: Vec::new(),
-        unknown_domains: vec![
-            Some(SplitInterval {
-                lo: RealFn::new(const_0),
-                hi: RealFn::new(const_2),
-                lo_closed: true,
-                hi_closed: true,
-            }),
-        ],
-        equation_domains: vec![
-            Some(SplitInterval {
-                lo: RealFn::new(const_0),
-                hi: RealFn::new(slot_a),
-                lo_closed: true,
-                hi_closed: false,
-            }),
-        ],
+        unknown_domains: vec![Some(SplitInterval {
+            lo: RealFn::new(const_0),
+            hi: RealFn::new(const_2),
+            lo_closed: true,
+            hi_closed: true,
+        })],
+        equation_domains: vec![Some(SplitInterval {
+            lo: RealFn::new(const_0),
+            hi: RealFn::new(slot_a),
+            lo_closed: true,
+            hi_closed: false,
+        })],
         rhs: Vec::new(),
         relations: vec![SplitRelation {
             unknown: 0,
