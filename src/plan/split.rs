@@ -254,6 +254,13 @@ pub(super) struct Rounding {
 }
 
 impl Rounding {
+    /// `|A⁻ᵀl|ᵀ·slack` for the functional row `l`; `None` if not finite.
+    pub(super) fn bound(&self, l: &DVector<f64>) -> Option<f64> {
+        let z = self.lu.solve_transpose(l);
+        let b: f64 = z.iter().zip(self.slack.iter()).map(|(z, s)| z.abs() * s).sum();
+        b.is_finite().then_some(b)
+    }
+
     fn new(a: &DMatrix<f64>, b: &DVector<f64>, y: &DVector<f64>, lu: CheckedLu) -> Rounding {
         let eta = crate::numeric::solve::ROUNDING_GROWTH * f64::EPSILON;
         let r = b - a * y;
@@ -1385,37 +1392,28 @@ impl SplitProblem {
     /// factors (a least-squares or method solve) or a finite bound.
     pub(super) fn output_rounding(&self, d: &Discrete, o: usize) -> Option<f64> {
         let rounding = d.rounding.as_deref()?;
-        let terms = self.moved_terms(
-            &self.sys.outputs[o].terms,
-            |s| match s {
-                EndSite::Output { output, term } if output == o => Some(term),
-                _ => None,
-            },
-            &d.vars,
-        );
-        let (row, _) = d.layout().functional(&terms).ok()?;
-        let z = rounding.lu.solve_transpose(&row);
-        let b: f64 = z
-            .iter()
-            .zip(rounding.slack.iter())
-            .map(|(z, s)| z.abs() * s)
-            .sum();
-        b.is_finite().then_some(b)
+        let (row, _) = d.layout().functional(&self.output_terms(d, o)).ok()?;
+        rounding.bound(&row)
     }
 
     /// The value of output `o` for a discrete solution: its functional's
     /// row (`Layout::functional`) applied to the coefficients.
     pub fn output(&self, d: &Discrete, o: usize) -> Result<f64, PlanError> {
-        let terms = self.moved_terms(
+        let (row, constant) = d.layout().functional(&self.output_terms(d, o))?;
+        Ok(constant + row.dot(&d.solution))
+    }
+
+    /// The terms of output `o` at the slot values of `d` (the ends that
+    /// move with the scalars moved).
+    fn output_terms(&self, d: &Discrete, o: usize) -> std::borrow::Cow<'_, [OutputTerm]> {
+        self.moved_terms(
             &self.sys.outputs[o].terms,
             |s| match s {
                 EndSite::Output { output, term } if output == o => Some(term),
                 _ => None,
             },
             &d.vars,
-        );
-        let (row, constant) = d.layout().functional(&terms)?;
-        Ok(constant + row.dot(&d.solution))
+        )
     }
 
     /// The right side of equation `e` at `x` for slot values `vars`: the

@@ -901,16 +901,7 @@ fn adjoint_floors(
                     unknown: u,
                 };
                 let (row, _) = layout.functional(&[term]).ok()?;
-                let z = rounding.lu.solve_transpose(&row);
-                let b: f64 = z
-                    .iter()
-                    .zip(rounding.slack.iter())
-                    .map(|(z, s)| z.abs() * s)
-                    .sum();
-                if !b.is_finite() {
-                    return None;
-                }
-                worst = worst.max(b);
+                worst = worst.max(rounding.bound(&row)?);
             }
             Some(worst)
         })
