@@ -583,16 +583,8 @@ struct Chosen {
     null: Option<(String, PlanError)>,
 }
 
-/// Whether `e` is the solver's discrete null-direction refusal.
-fn is_null_direction(e: &PlanError) -> bool {
-    matches!(
-        e,
-        PlanError::Numeric {
-            source: crate::numeric::NumericError::NullSpace { .. },
-            ..
-        }
-    )
-}
+use super::split_solve::is_null_direction;
+use super::split_weights::in_class;
 
 /// The singular values of a null-direction refusal, in words.
 fn null_numbers(e: &PlanError) -> String {
@@ -605,17 +597,6 @@ fn null_numbers(e: &PlanError) -> String {
     }
 }
 
-/// A null-direction refusal `e` naming the trial space it was met in
-/// (`weight`) and, after it, `more`.
-fn in_class(e: PlanError, weight: &str, more: &str) -> PlanError {
-    match e {
-        PlanError::Numeric { context, source } => PlanError::Numeric {
-            context: format!("{context}, in the trial space of weight {weight}{more}"),
-            source,
-        },
-        e => e,
-    }
-}
 
 /// A weight as the report prints it, e.g. `x^(0.5)*(4 - x)^(-0.5)`
 /// or `1`.

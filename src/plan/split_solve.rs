@@ -563,7 +563,7 @@ fn without_a_digit(problem: &mut SplitProblem, r: &SplitReport) -> Option<PlanEr
 }
 
 /// Whether `e` is the solver's discrete null-direction refusal.
-fn is_null_direction(e: &PlanError) -> bool {
+pub(super) fn is_null_direction(e: &PlanError) -> bool {
     matches!(
         e,
         PlanError::Numeric {
