@@ -1,13 +1,14 @@
 //! Timings of `lambdamat solve` through the language path (parse excluded):
 //! the manufactured coupled system at tol 1e-10 by each method, and the
-//! punch at tol 1e-12; and the solvers written by `lambdamat codegen`
-//! (kernels as Rust functions) against the same systems compiled to
-//! closures in process; `reduce` and `codegen` on a 20-unknown system.
+//! punch at tol 1e-12, all through `report::solve` (the one solver); and
+//! the problems written by `lambdamat codegen` (kernels as Rust functions)
+//! against the same files compiled to closures in process; `reduce` and `codegen` on a 20-unknown system.
 //! `cargo bench --bench solve` (about 40 s).
 use std::time::Duration;
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use lambdamat::plan::{CompiledSystem, Method, SolveOptions, solve_program, solve_system};
+use lambdamat::plan::{Method, SplitInput};
+use lambdamat::report::{SolveSettings, solve as solve_file, solve_split};
 
 #[allow(dead_code)]
 #[path = "../examples/mms_solver.rs"]
@@ -27,20 +28,20 @@ fn solve(c: &mut Criterion) {
         .warm_up_time(Duration::from_secs(1))
         .measurement_time(Duration::from_secs(3));
     for method in [Method::Coupled, Method::Ordered, Method::Commutative] {
-        let opts = SolveOptions {
-            method,
-            ..SolveOptions::default()
+        let settings = SolveSettings {
+            method: Some(method),
+            ..SolveSettings::default()
         };
         g.bench_function(format!("mms {method} tol=1e-10"), |b| {
-            b.iter(|| solve_program(&mms, &opts))
+            b.iter(|| solve_file(&mms, &settings))
         });
     }
-    let opts = SolveOptions {
+    let settings = SolveSettings {
         tol: 1e-12,
-        ..SolveOptions::default()
+        ..SolveSettings::default()
     };
-    g.bench_function("punch ordered tol=1e-12", |b| {
-        b.iter(|| solve_program(&punch, &opts))
+    g.bench_function("punch coupled tol=1e-12", |b| {
+        b.iter(|| solve_file(&punch, &settings))
     });
     g.finish();
 }
@@ -49,36 +50,34 @@ fn solve(c: &mut Criterion) {
 /// the same refinement ladder (the answers are bit for bit equal; see
 /// `tests/codegen.rs`).
 fn generated(c: &mut Criterion) {
-    let compiled = |src: &str, name: &str| {
-        let p = lambdamat::lang::parse_program(src, name).expect("parses");
-        CompiledSystem::from_program(&p, None).expect("compiles")
-    };
-    let cases = [
+    let parsed = |src: &str, name: &str| lambdamat::lang::parse_program(src, name).expect("parses");
+    type Input = fn() -> Result<SplitInput, lambdamat::plan::PlanError>;
+    let cases: [(&str, _, Input); 2] = [
         (
             "mms",
-            compiled(include_str!("../examples/mms.lmx"), "mms.lmx"),
-            mms_solver::system().expect("generated"),
+            parsed(include_str!("../examples/mms.lmx"), "mms.lmx"),
+            mms_solver::input,
         ),
         (
             "codegen_terms",
-            compiled(
+            parsed(
                 include_str!("../tests/data/codegen_terms.lmx"),
                 "codegen_terms.lmx",
             ),
-            terms_solver::system().expect("generated"),
+            terms_solver::input,
         ),
     ];
     let mut g = c.benchmark_group("codegen");
     g.sample_size(10)
         .warm_up_time(Duration::from_secs(1))
         .measurement_time(Duration::from_secs(3));
-    let opts = SolveOptions::default();
+    let settings = SolveSettings::default();
     for (name, closures, generated) in &cases {
         g.bench_function(format!("{name} closures"), |b| {
-            b.iter(|| solve_system(closures, &opts))
+            b.iter(|| solve_file(closures, &settings))
         });
         g.bench_function(format!("{name} generated"), |b| {
-            b.iter(|| solve_system(generated, &opts))
+            b.iter(|| solve_split(generated().expect("generated"), &settings))
         });
     }
     g.finish();

@@ -23,7 +23,7 @@ use std::time::{Duration, Instant};
 
 use lambdamat::codegen::{Provenance, solver_source};
 use lambdamat::lang::{Program, parse_program};
-use lambdamat::plan::{SolveOptions, solve_program};
+use lambdamat::report::{SolveSettings, solve};
 
 /// The seed corpus: every example and test input of the language.
 const CORPUS: &[&str] = &[
@@ -236,12 +236,12 @@ fn pipeline(p: &Program) {
         command: "fuzz".into(),
     };
     let _ = solver_source(p, None, &from);
-    let opts = SolveOptions {
+    let settings = SolveSettings {
         max_level: 2,
         tol: 1e-3,
-        ..SolveOptions::default()
+        ..SolveSettings::default()
     };
-    let _ = solve_program(p, &opts);
+    let _ = solve(p, &settings);
 }
 
 /// What one fuzz run found.

@@ -4,7 +4,8 @@
 //! pivots on the unknowns' own equations) and the coupled solve must both
 //! recover it; the commutative model must at least be computed from the
 //! algebra's det/adj (det here is `k1 k4 - k2 k3`).
-use lambdamat::plan::{Method, SolveOptions, solve_program};
+use lambdamat::plan::Method;
+use lambdamat::report::{SolveSettings, solve};
 
 const SRC: &str = "param gamma = 1/3
 operator k1 = int(x..1) t/sqrt(t^2 - x^2) dt
@@ -24,31 +25,48 @@ fn three_unknowns_ordered_and_coupled() {
     let prog = lambdamat::lang::parse_program(SRC, "three.lmx").expect("parses");
     let exact: [fn(f64) -> f64; 3] = [|_| 1.0, |x| x, |x| x * x];
     for method in [Method::Ordered, Method::Coupled] {
-        let opts = SolveOptions {
-            method,
-            ..SolveOptions::default()
+        let settings = SolveSettings {
+            method: Some(method),
+            ..SolveSettings::default()
         };
-        let r = solve_program(&prog, &opts).expect("solves");
+        let r = solve(&prog, &settings).expect("solves");
+        assert!(r.converged, "{method}: {:?}", r.error_estimates);
         assert_eq!(r.unknowns.len(), 3);
-        for (u, f) in r.unknowns.iter().zip(exact) {
+        for ((name, u), f) in r.unknowns.iter().zip(exact) {
             let e =
                 u.x.iter()
                     .zip(&u.values)
                     .map(|(x, v)| (v - f(*x)).abs())
                     .fold(0.0, f64::max);
-            eprintln!("{method}: {} max error {e:.1e}", u.name);
-            assert!(e <= 1e-10, "{method}: {} error {e:e}", u.name);
+            eprintln!("{method}: {name} max error {e:.1e}");
+            assert!(e <= 1e-10, "{method}: {name} error {e:e}");
+            assert!(
+                e <= u.error_estimate.max(1e-14),
+                "{method}: {name} estimate"
+            );
         }
-        let big_r = r.outputs[0].1.expect("R");
+        let big_r = r.outputs["R"];
         assert!((big_r - 1.0 / 3.0).abs() <= 1e-10, "R = {big_r}");
     }
-    let opts = SolveOptions {
-        method: Method::Commutative,
+    let settings = SolveSettings {
+        method: Some(Method::Commutative),
         max_level: 3,
-        ..SolveOptions::default()
+        ..SolveSettings::default()
     };
-    let m = solve_program(&prog, &opts).expect("the model is computed");
-    assert!(m.model);
-    assert_eq!(m.unknowns.len(), 1);
-    assert!(m.commutator_defects.iter().any(|d| d.pair == ["k2", "k4"]));
+    let m = solve(&prog, &settings).expect("the model is computed");
+    assert_eq!(m.extra["model"], true);
+    let defects = m.extra["commutator_defects"].as_array().expect("defects");
+    assert!(
+        defects
+            .iter()
+            .any(|d| d["pair"] == serde_json::json!(["k2", "k4"])),
+        "{defects:?}"
+    );
+    assert!(
+        m.warnings
+            .iter()
+            .any(|w| w.contains("k2 and k4 do not commute")),
+        "{:?}",
+        m.warnings
+    );
 }

@@ -5,7 +5,8 @@
 //! converge. Seeds are fixed so every run sees the same cases.
 
 use lambdamat::lang::parse_program;
-use lambdamat::plan::{Method, SolveOptions, solve_program};
+use lambdamat::plan::Method;
+use lambdamat::report::{Report, SolveSettings, solve};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngSeed, TestRunner};
 use std::cell::Cell;
@@ -41,10 +42,9 @@ fn system() -> impl Strategy<Value = String> {
     })
 }
 
-fn values(r: &lambdamat::plan::SolveReport, name: &str) -> Vec<f64> {
+fn values(r: &Report, name: &str) -> Vec<f64> {
     r.unknowns
-        .iter()
-        .find(|u| u.name == name)
+        .get(name)
         .map(|u| u.values.clone())
         .unwrap_or_default()
 }
@@ -60,17 +60,17 @@ fn coupled_and_ordered_agree_on_random_operator_systems() {
     runner
         .run(&system(), |src| {
             let prog = parse_program(&src, "random.lmx").expect("valid system");
-            let solve = |method| {
-                solve_program(
+            let run = |method| {
+                solve(
                     &prog,
-                    &SolveOptions {
-                        method,
+                    &SolveSettings {
+                        method: Some(method),
                         max_level: 5,
-                        ..SolveOptions::default()
+                        ..SolveSettings::default()
                     },
                 )
             };
-            let (Ok(c), Ok(o)) = (solve(Method::Coupled), solve(Method::Ordered)) else {
+            let (Ok(c), Ok(o)) = (run(Method::Coupled), run(Method::Ordered)) else {
                 return Ok(());
             };
             if !(c.converged && o.converged) {

@@ -1,9 +1,11 @@
 //! Code generation (`lambdamat codegen`): a standalone Rust module that
 //! solves one language system. Kernels, multipliers, right sides and
 //! output weights become plain Rust functions; `system()` puts them into a
-//! [`CompiledSystem`], and `main()` solves it through
-//! [`crate::plan::solve_system`] (the library's assembly, refinement and
-//! solves) and prints the same report as `lambdamat solve`.
+//! [`CompiledSystem`] (the operator system), `input()` adds the file's
+//! breakpoints, scalars, relations and singular terms, and `main()` solves
+//! it through `lambdamat::standalone::split_solver_main` (the library's
+//! one solver: assembly, refinement and solves) and prints the same report
+//! as `lambdamat solve`.
 //!
 //! The generated code and the in-process solver are built from the same
 //! decisions ([`plan_operator`]'s term plans, the compiled system's
@@ -492,7 +494,7 @@ fn system_fn(
     rhs_fns: &[String],
     (output_terms, condition_terms): (&[Vec<String>], &[Vec<String>]),
 ) {
-    out.push_str("\n/// The compiled system, ready for `lambdamat::standalone::solver_main`.\n");
+    out.push_str("\n/// The operator system, which `input()` completes.\n");
     out.push_str("pub fn system() -> Result<CompiledSystem, PlanError> {\n");
     out.push_str(setup);
     let mut eq_vars = Vec::new();

@@ -130,23 +130,6 @@ impl PanelBasis {
         })
     }
 
-    /// A basis whose node count grows linearly with the mesh layer:
-    /// `min(n_min + slope·level, n_max)` nodes on a panel of layer `level`.
-    pub fn hp(
-        mesh: &Mesh,
-        n_min: usize,
-        slope: f64,
-        n_max: usize,
-        weight: Vec<Factor>,
-    ) -> Result<PanelBasis, NumericError> {
-        let counts: Vec<usize> = mesh
-            .levels
-            .iter()
-            .map(|&l| ((n_min as f64 + slope * l as f64).round() as usize).clamp(1, n_max.max(1)))
-            .collect();
-        PanelBasis::new(mesh, &counts, weight)
-    }
-
     /// Number of coefficients.
     pub fn dim(&self) -> usize {
         self.dim

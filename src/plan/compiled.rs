@@ -1,9 +1,10 @@
-//! A system ready for the numerics: operators as [`Operator`]s with their
-//! kernels compiled, right sides and output weights as closures, the
-//! ordered operators of the equations as exact [`NcPoly`]s (products in
-//! the order written), the target
-//! unknown and the unknowns' interval. It is what [`super::solve_system`]
-//! solves, and it can be built two ways: from a parsed [`Program`]
+//! The operator system of a file, ready for the numerics: operators as
+//! [`Operator`]s with their kernels compiled, right sides and output
+//! weights as closures, the ordered operators of the equations as exact
+//! [`NcPoly`]s (products in the order written), the target unknown and the
+//! unknowns' interval. It is the plain part of a
+//! [`super::SplitInput`] (which adds breakpoints, scalars, relations and
+//! singular terms), and it can be built two ways: from a parsed [`Program`]
 //! ([`CompiledSystem::from_program`], kernels compiled to closures) or by
 //! code that `lambdamat codegen` wrote (kernels as Rust functions). This
 //! file owns that data, its construction from a program and its
@@ -99,7 +100,7 @@ pub struct CompiledOutput {
     pub terms: Vec<OutputTerm>,
 }
 
-/// A system ready for `super::solve_system`.
+/// The operator system of a file (the plain part of a [`super::SplitInput`]).
 #[derive(Clone)]
 pub struct CompiledSystem {
     /// Operator symbol names (the letters of the `NcPoly` words).

@@ -21,7 +21,7 @@
 //! with `x` is the diagonal peak `operators.rs` classifies, not one of
 //! these. The ladder grades its mesh toward every feature deeply enough
 //! that the first level's panels there are no wider than the feature
-//! (`refine.rs`).
+//! (`split.rs`).
 use crate::system::expr::{Expr, Func};
 
 /// Features narrower than this fraction of the interval are graded

@@ -1,8 +1,9 @@
 //! Solving a system written in the language: the bridge from the lowered
 //! [`crate::system::Program`] to the numeric layer. It owns compiling kernel
 //! expressions to closures, mapping operator definitions to
-//! [`crate::numeric::Operator`]s, discretising operator polynomials on one
-//! mesh, the three solution methods and the refinement ladder. It must not
+//! [`crate::numeric::Operator`]s, discretising operator polynomials on a
+//! mesh split at the file's breakpoints, the three solution methods and the
+//! refinement ladder: one solver for every file. It must not
 //! parse, must not do quadrature itself (that is [`crate::numeric`]'s job)
 //! and must not print anything (that is [`crate::cli`]'s job).
 //!
@@ -11,10 +12,10 @@
 //! * [`compiled`]: the compiled system (what the solver solves; built from a
 //!   program or by code `lambdamat codegen` wrote);
 //! * [`operators`]: operator definitions → numeric operators;
-//! * [`discrete`]: one discretisation level (mesh, bases, matrices);
-//! * [`methods`]: coupled, ordered and commutative solves, commutator defects;
-//! * [`refine`]: the refinement ladder, error estimates and outputs;
-//! * [`split`]: one discretisation of a split-domain (contact) problem;
+//! * [`method`]: the methods a user chooses and the ordered block
+//!   elimination they share;
+//! * [`split`]: one discretisation level of a problem (a file on one
+//!   interval is a split problem with no breakpoints and no scalars);
 //! * [`split_input`]: its input (built from a program or by generated code);
 //! * [`split_solve`]: its scalar root solve and refinement ladder;
 //! * [`split_methods`]: its `ordered` (and `commutative`) methods;
@@ -30,12 +31,10 @@
 
 pub mod compile;
 pub mod compiled;
-pub mod discrete;
 pub mod error;
 pub mod features;
-pub mod methods;
+pub mod method;
 pub mod operators;
-pub mod refine;
 pub mod split;
 pub mod split_end;
 pub mod split_ends;
@@ -49,10 +48,7 @@ pub mod uniqueness;
 
 pub use compiled::CompiledSystem;
 pub use error::PlanError;
-pub use methods::Method;
-pub use refine::{SolveOptions, SolveReport, solve_system};
-#[cfg(feature = "internals")]
-pub use refine::solve_program;
+pub use method::Method;
 pub use split_input::SplitInput;
 pub use split_solve::{SplitOptions, SplitReport, SplitSolution};
 #[cfg(feature = "internals")]

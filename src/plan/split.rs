@@ -11,8 +11,7 @@
 //! subinterval (in written order), and one extra collocation point per
 //! singular term at the point's side (the one-sided limit of the paired
 //! equation there). Products of operators are applied in written order
-//! through an unweighted intermediate basis on the whole mesh (as on one
-//! interval, `discrete.rs`); each side condition (`condition int(..) f =
+//! through an unweighted intermediate basis on the whole mesh; each side condition (`condition int(..) f =
 //! C`, a point value) is one more functional row, and with such rows the
 //! system is solved by least squares. Owns this discretisation; root
 //! finding and the refinement ladder are `split_solve.rs`'s.
@@ -405,8 +404,7 @@ impl SplitProblem {
     /// the level's intermediate basis `mid` (unweighted, on the whole
     /// mesh): the innermost symbol's values at `mid`'s nodes are its
     /// coefficients there, every further symbol maps them to its values at
-    /// the same nodes, and the outermost is collocated at `xs`, as the
-    /// one-interval products are (`discrete.rs`). With `cached`, the
+    /// the same nodes, and the outermost is collocated at `xs`. With `cached`, the
     /// blocks are remembered ([`SplitProblem::block`]).
     pub(super) fn products(
         &self,

@@ -1,7 +1,7 @@
 //! The solution methods of the split-domain discretisation (`split.rs`)
 //! other than `coupled`: `ordered` (exact block elimination toward the
 //! target unknown in the pivot order of the system's [`Derivation`], the
-//! recipe of [`super::methods`] executed on the split system's blocks) and
+//! recipe of [`super::method`] executed on the split system's blocks) and
 //! `commutative` (on files without relations or exact singular terms: the
 //! derivation's eliminant `D_i u_i = Σ_j c_j g_j` evaluated with the split
 //! operator matrices, the seed's single-equation model, with the other
@@ -16,7 +16,7 @@
 //! holds; a file where it is not, or whose side conditions add rows to no
 //! block, is refused with the feature named. Owns the applicability checks
 //! and these two recipes; the assembly is `split.rs`'s, the elimination
-//! itself `methods.rs`'s and `numeric::elimination`'s; it executes the
+//! itself `method.rs`'s and `numeric::elimination`'s; it executes the
 //! derivation and never re-derives.
 use std::sync::Mutex;
 
@@ -24,7 +24,7 @@ use nalgebra::{DMatrix, DVector};
 use serde::Serialize;
 
 use super::error::PlanError;
-use super::methods::{Method, ordered as ordered_blocks};
+use super::method::{Method, ordered as ordered_blocks};
 use super::split::SplitProblem;
 use super::split_input::SplitKind;
 use crate::algebra::derivation::Derivation;
@@ -303,8 +303,8 @@ fn equation_of_unknown(
 impl MethodPlan {
     /// The commutative model on the split system: the target `i` solves
     /// the derivation's eliminant `D_i u_i = Σ_j c_j g_j` (`D_i` in written
-    /// order, `c_j`'s monomials in symbol-table order, as `methods.rs`
-    /// applies it) collocated at its nodes, products through its basis
+    /// order, `c_j`'s monomials in symbol-table order, as `reduce`
+    /// prints it) collocated at its nodes, products through its basis
     /// without weight; the other unknowns then solve the equations the
     /// ordered elimination pivots on, with `u_i` given (so every unknown
     /// is the model's, consistent with its `u_i`). Records the commuted

@@ -34,7 +34,7 @@
 use serde::Serialize;
 
 use super::error::{EndReason, PlanError, RangeEnd, RootAtEnd};
-use super::methods::Method;
+use super::method::Method;
 use super::split::{Discrete, SplitLevel, SplitProblem};
 use super::split_fields::{LeftOut, LevelFields};
 use super::split_input::SplitInput;
@@ -935,8 +935,8 @@ fn shifted_level(
 
 /// The safety factor on an unknown's last level difference given the
 /// history of its differences `h` (oldest first, the last one `this`
-/// level's), the one-interval track's rule with a stall guard: the
-/// differences falling geometrically with ratio `ρ`, the remaining error
+/// level's), with a stall guard: the differences falling geometrically
+/// with ratio `ρ`, the remaining error
 /// is about `d·ρ/(1 − ρ)`. `ρ` is the larger of the last two ratios, so a
 /// ratio that is not clearly contracting is not trusted on one sighting.
 /// While at most [`UNCONFIRMED_DIFFERENCES`] differences exist the factor

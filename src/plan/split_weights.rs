@@ -3,8 +3,7 @@
 //! `singular` declaration names is chosen among plain piecewise
 //! polynomials and polynomials times `(x - a)^α (b - x)^β`, with α and β
 //! from `{0, -1/2, 1/2}` and, for every kernel `|x - t|^(-γ)` of the file,
-//! the Abel exponent `γ - 1` (the trial spaces of the one-interval ladder,
-//! `refine.rs`). The choice is a weight per unknown made from the
+//! the Abel exponent `γ - 1`. The choice is a weight per unknown made from the
 //! equations and the unknowns only, never from the requested outputs:
 //! every candidate (one weight for every unknown) is solved on levels 0
 //! and 1, each unknown `u` is compared on a grid as `u/weight` relative to
@@ -14,8 +13,7 @@
 //! residual) is smallest is kept, the plain one on a tie. A chosen weight
 //! is installed as the declaration `singular u at end ~ |x - end|^e`
 //! would be, the plain one (`e = 0`) included: the mesh is graded toward
-//! every end so chosen, as the one-interval ladder grades toward both
-//! ends (toward a plain one with few layers, which the end check may
+//! every end so chosen (toward a plain one with few layers, which the end check may
 //! deepen: `split.rs`'s `PLAIN_END_LAYERS`), and the report names the
 //! weight. Problems with unknown scalars or relations are left as
 //! declared (their ends are the end check's, `split_ends.rs`). Owns this

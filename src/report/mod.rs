@@ -4,9 +4,8 @@
 //! [`Report::to_json`], [`Report::write_text`], [`Report::csv`] and
 //! [`Report::svg`] are the only places a solve's answer is formatted
 //! (`lambdamat solve`, `run`, `hertz` and the solvers `lambdamat codegen`
-//! writes all print through them). It owns the conversion of the solvers'
-//! own reports ([`crate::plan::SolveReport`], [`crate::plan::SplitReport`])
-//! into this shape and the sampling of a split-domain solution's unknowns
+//! writes all print through them). It owns the conversion of the solver's
+//! own report ([`crate::plan::SplitReport`]) into this shape and the sampling of a split-domain solution's unknowns
 //! on the output grid; it does no discretisation itself.
 //!
 //! **Estimates are absolute.** Every quantity (output, scalar, singular
@@ -14,7 +13,7 @@
 //! of `|computed − exact|` in its own units; an unknown's
 //! `error_estimate` is its largest pointwise estimate on the grid.
 //!
-//! **The tolerance rule** (`--tol`, both tracks): a solve has converged
+//! **The tolerance rule** (`--tol`): a solve has converged
 //! when every estimate that drives refinement is within `tol·max(1,
 //! |value|)`, i.e. absolute tolerance `tol` for quantities of size up to 1
 //! and relative tolerance `tol` above (SciPy's `atol = rtol = tol`): the
@@ -40,10 +39,7 @@ use serde::Serialize;
 use serde_json::{Map, Value, json};
 
 use crate::plan::split_fields::LevelFields;
-use crate::plan::{
-    CompiledSystem, Method, PlanError, SolveOptions, SolveReport, SplitInput, SplitOptions,
-    SplitSolution, solve_system,
-};
+use crate::plan::{Method, PlanError, SplitInput, SplitOptions, SplitSolution};
 use crate::system::Program;
 
 /// Points of the output grid on which unknowns are reported.
@@ -195,21 +191,6 @@ pub fn solve(prog: &Program, s: &SolveSettings) -> Result<Report, PlanError> {
     solve_split(SplitInput::for_target(prog, s.unknown.as_deref())?, s)
 }
 
-/// Solves a compiled one-interval system (built from a program, or by a
-/// solver `lambdamat codegen` wrote).
-pub fn solve_compiled(sys: &CompiledSystem, s: &SolveSettings) -> Result<Report, PlanError> {
-    s.check()?;
-    let opts = SolveOptions {
-        method: s.method.unwrap_or(Method::Ordered),
-        tol: s.tol,
-        max_level: s.max_level,
-        grid: s.grid,
-        max_memory: s.max_memory,
-        ..SolveOptions::default()
-    };
-    Ok(from_one_interval(&solve_system(sys, &opts)?, s.tol))
-}
-
 /// Solves a split-domain problem (built from a program, or by a solver
 /// `lambdamat codegen` wrote).
 pub fn solve_split(input: SplitInput, s: &SolveSettings) -> Result<Report, PlanError> {
@@ -244,67 +225,6 @@ pub fn solve_split_solution(
     let sol = crate::plan::split_solve::solve_split_within(input, &opts, s.max_memory)?;
     let r = from_split(&sol, s.grid)?;
     Ok((r, sol))
-}
-
-/// The report of a one-interval solve.
-pub fn from_one_interval(r: &SolveReport, tol: f64) -> Report {
-    let mut unknowns = BTreeMap::new();
-    let mut error_estimates = BTreeMap::new();
-    let mut warnings = r.warnings.clone();
-    warnings.extend(r.uniqueness.clone());
-    for u in &r.unknowns {
-        error_estimates.insert(u.name.clone(), u.error_estimate);
-        unknowns.insert(
-            u.name.clone(),
-            Field {
-                x: u.x.clone(),
-                values: u.values.clone(),
-                weight: u.weight.clone(),
-                error_estimate: u.error_estimate,
-            },
-        );
-    }
-    let mut outputs = BTreeMap::new();
-    for ((name, v), e) in r.outputs.iter().zip(&r.output_errors) {
-        match (v, e) {
-            (Some(v), Some(e)) => {
-                outputs.insert(name.clone(), *v);
-                error_estimates.insert(name.clone(), *e);
-            }
-            _ => warnings.push(format!(
-                "output {name}: needs an unknown the {} method does not compute",
-                r.method
-            )),
-        }
-    }
-    let mut extra = Map::new();
-    extra.insert("unique".into(), json!(r.uniqueness.is_none()));
-    extra.insert("model".into(), json!(r.model));
-    extra.insert("target".into(), json!(r.target));
-    extra.insert("dim".into(), json!(r.dim));
-    extra.insert("cond".into(), finite(r.cond));
-    extra.insert("domain".into(), json!([r.domain.0, r.domain.1]));
-    extra.insert("commutator_defects".into(), json!(r.commutator_defects));
-    extra.insert(
-        "pivots".into(),
-        r.pivots
-            .iter()
-            .map(|(e, u)| json!({"equation": e, "unknown": u}))
-            .collect(),
-    );
-    Report {
-        method: r.method.clone(),
-        converged: r.converged,
-        levels: r.level,
-        tol,
-        unknowns,
-        outputs,
-        scalars: BTreeMap::new(),
-        coefficients: BTreeMap::new(),
-        error_estimates,
-        warnings,
-        extra,
-    }
 }
 
 /// A JSON number, or null when not finite.

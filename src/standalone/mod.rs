@@ -306,7 +306,7 @@ fn run_main(body: impl FnOnce(&Flags, &mut Stdout) -> Result<(), Failure>) -> i3
 }
 
 /// Solves with `solve` as `flags` ask and prints the [`Report`] (text or
-/// JSON, and the CSV table): the body both generated mains share.
+/// JSON, and the CSV table): the body of a generated main.
 fn solve_and_print(
     flags: &Flags,
     out: &mut Stdout,
@@ -355,24 +355,9 @@ fn solve_and_print(
     }
 }
 
-/// The `main` of a solver `lambdamat codegen` wrote for a file on one
-/// interval: returns the exit code. A generated solver's whole `main`:
-///
-/// ```no_run
-/// use lambdamat::standalone::{CompiledSystem, PlanError, solver_main};
-/// fn system() -> Result<CompiledSystem, PlanError> {
-///     todo!("written by `lambdamat codegen`")
-/// }
-/// std::process::exit(solver_main(system));
-/// ```
-pub fn solver_main(system: fn() -> Result<CompiledSystem, PlanError>) -> i32 {
-    run_main(|flags, out| {
-        solve_and_print(flags, out, |s| crate::report::solve_compiled(&system()?, s))
-    })
-}
-
-/// The `main` of a solver `lambdamat codegen` wrote for a split-domain
-/// file: returns the exit code.
+/// The `main` of a solver `lambdamat codegen` wrote (for any file: one on
+/// one interval is a split problem with no breakpoints and no scalars):
+/// returns the exit code. A generated solver's whole `main`:
 ///
 /// ```no_run
 /// use lambdamat::standalone::{PlanError, SplitInput, split_solver_main};

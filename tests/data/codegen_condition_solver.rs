@@ -58,7 +58,7 @@ fn condition_weight_1_1(_x: f64) -> f64 {
     1.0
 }
 
-/// The compiled system, ready for `lambdamat::standalone::solver_main`.
+/// The operator system, which `input()` completes.
 pub fn system() -> Result<CompiledSystem, PlanError> {
     let mut op_h = Operator::zero();
     let limits = Fixed { a: -1.0, b: 1.0 };

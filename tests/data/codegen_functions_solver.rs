@@ -80,7 +80,7 @@ fn weight_p_3(_x: f64) -> f64 {
     1.0
 }
 
-/// The compiled system, ready for `lambdamat::standalone::solver_main`.
+/// The operator system, which `input()` completes.
 pub fn system() -> Result<CompiledSystem, PlanError> {
     let mut op_k = Operator::zero();
     op_k = op_k + Operator::identity();

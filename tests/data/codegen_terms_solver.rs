@@ -87,7 +87,7 @@ fn weight_v(x: f64) -> f64 {
     f64::powi(x, 2)
 }
 
-/// The compiled system, ready for `lambdamat::standalone::solver_main`.
+/// The operator system, which `input()` completes.
 pub fn system() -> Result<CompiledSystem, PlanError> {
     let mut op_m = Operator::zero();
     op_m = op_m + Operator::identity().scaled(3.0);

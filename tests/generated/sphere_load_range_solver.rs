@@ -78,7 +78,7 @@ fn condition_weight_1(x: f64) -> f64 {
     std::f64::consts::TAU * x
 }
 
-/// The compiled system, ready for `lambdamat::standalone::solver_main`.
+/// The operator system, which `input()` completes.
 pub fn system() -> Result<CompiledSystem, PlanError> {
     let mut op_k1 = Operator::zero();
     op_k1 = op_k1 + Operator::integral(Upper { b: 2.0 }, AbelSqrt, kernel_k1);
