@@ -10,7 +10,7 @@
 //! their estimates; otherwise a refusal (exit 2 or 3); never anything
 //! else. The checks of values must have run on at least half the cases.
 use proptest::prelude::*;
-use proptest::test_runner::{Config, TestRunner};
+use proptest::test_runner::{Config, RngSeed, TestRunner};
 use serde_json::Value;
 use std::cell::Cell;
 use std::process::Command;
@@ -42,6 +42,8 @@ fn random_narrow_peaks_are_answered_within_their_estimates_or_refused() {
     let mut runner = TestRunner::new(Config {
         cases: 200,
         failure_persistence: None,
+        // Fixed, so that every run sees the same cases.
+        rng_seed: RngSeed::Fixed(0x5eed_0030),
         ..Config::default()
     });
     // ε = 1/q and c = m/1000 (the language takes exact numbers).

@@ -228,17 +228,56 @@ pub fn block_matrix(rows: &[Vec<&DMatrix<f64>>]) -> Result<DMatrix<f64>, Numeric
     Ok(out)
 }
 
+/// The factors of a least-squares solve (the SVD `a·D = U Σ Vᵀ` of the
+/// column-scaled matrix), for adjoint rounding bounds of functionals of
+/// its solution.
+pub struct LeastSquares {
+    u: DMatrix<f64>,
+    sigma: DVector<f64>,
+    v_t: DMatrix<f64>,
+    scale: Vec<f64>,
+}
+
+impl LeastSquares {
+    /// `Vᵀ·D·l`, the functional `l` in the right singular basis.
+    fn right(&self, l: &DVector<f64>) -> DVector<f64> {
+        let dl = DVector::from_iterator(l.len(), l.iter().zip(&self.scale).map(|(v, s)| v * s));
+        &self.v_t * dl
+    }
+
+    /// `(a⁺)ᵀ·l = U Σ⁻¹ Vᵀ D l`: how the functional `lᵀx` of the solution
+    /// moves with the right side (`δ(lᵀx) = ((a⁺)ᵀl)ᵀ·δb`).
+    pub fn adjoint(&self, l: &DVector<f64>) -> DVector<f64> {
+        let mut w = self.right(l);
+        for (w, s) in w.iter_mut().zip(self.sigma.iter()) {
+            *w /= s;
+        }
+        &self.u * w
+    }
+
+    /// `(aᵀa)⁻¹·l = D V Σ⁻² Vᵀ D l`: how `lᵀx` moves with the matrix
+    /// through the residual (`δ(lᵀx) ∋ ((aᵀa)⁻¹l)ᵀ·δaᵀ·r`).
+    pub fn normal_inverse(&self, l: &DVector<f64>) -> DVector<f64> {
+        let mut w = self.right(l);
+        for (w, s) in w.iter_mut().zip(self.sigma.iter()) {
+            *w /= s * s;
+        }
+        let x = self.v_t.transpose() * w;
+        DVector::from_iterator(x.len(), x.iter().zip(&self.scale).map(|(v, s)| v * s))
+    }
+}
+
 /// A least-squares solution of `a·x ≈ b` (more rows than columns): the
 /// solution, the 2-norm condition number of `a·D` (`D` scales columns to
-/// unit max-norm) and the relative residual `‖a·x - b‖∞ / ‖b‖∞` (zero
-/// when `b = 0`), which is rounding-small exactly when the rows are
-/// consistent. Errors if `a` is rank-deficient or worse conditioned than
-/// `max_cond`.
+/// unit max-norm), the relative residual `‖a·x - b‖∞ / ‖b‖∞` (zero when
+/// `b = 0`), which is rounding-small exactly when the rows are consistent,
+/// and the factors ([`LeastSquares`]). Errors if `a` is rank-deficient or
+/// worse conditioned than `max_cond`.
 pub fn least_squares(
     a: &DMatrix<f64>,
     b: &DVector<f64>,
     max_cond: f64,
-) -> Result<(DVector<f64>, f64, f64), NumericError> {
+) -> Result<(DVector<f64>, f64, f64, LeastSquares), NumericError> {
     let (m, n) = a.shape();
     if m < n || b.len() != m {
         return Err(NumericError::Dimension(format!(
@@ -290,7 +329,18 @@ pub fn least_squares(
     } else {
         0.0
     };
-    Ok((x, cond, residual))
+    let (Some(u), Some(v_t)) = (svd.u, svd.v_t) else {
+        return Err(NumericError::InvalidArgument(
+            "least squares: the SVD has no singular vectors".into(),
+        ));
+    };
+    let factors = LeastSquares {
+        u,
+        sigma: svd.singular_values,
+        v_t,
+        scale,
+    };
+    Ok((x, cond, residual, factors))
 }
 
 /// The smallest error estimate reported: below it, distances between
@@ -400,7 +450,7 @@ mod tests {
         // x + y = 3, x - y = 1, 2x = 4: consistent, x = 2, y = 1.
         let a = DMatrix::from_row_slice(3, 2, &[1.0, 1.0, 1.0, -1.0, 2.0, 0.0]);
         let b = DVector::from_vec(vec![3.0, 1.0, 4.0]);
-        let (x, cond, res) = least_squares(&a, &b, 1e12).unwrap();
+        let (x, cond, res, _) = least_squares(&a, &b, 1e12).unwrap();
         assert!(
             (x[0] - 2.0).abs() < 1e-15 && (x[1] - 1.0).abs() < 1e-15,
             "{x}"
@@ -409,11 +459,35 @@ mod tests {
         assert!(res < 1e-15);
         // 2x = 5 instead: inconsistent, and the residual says so.
         let b = DVector::from_vec(vec![3.0, 1.0, 5.0]);
-        let (_, _, res) = least_squares(&a, &b, 1e12).unwrap();
+        let (_, _, res, _) = least_squares(&a, &b, 1e12).unwrap();
         assert!(res > 0.05, "{res}");
         // Rank-deficient and mis-shaped systems are errors.
         let a = DMatrix::from_row_slice(3, 2, &[1.0, 2.0, 2.0, 4.0, 3.0, 6.0]);
         assert!(least_squares(&a, &b, 1e12).is_err());
         assert!(least_squares(&DMatrix::zeros(1, 2), &DVector::zeros(1), 1e12).is_err());
+    }
+
+    #[test]
+    fn least_squares_factors_give_the_pseudo_inverse() {
+        // Columns of very different sizes, so the column scaling matters.
+        let a = DMatrix::from_row_slice(
+            4,
+            3,
+            &[
+                1.0, 200.0, 0.5, 2.0, -100.0, 0.25, 0.0, 300.0, -1.0, 3.0, 0.0, 2.0,
+            ],
+        );
+        let b = DVector::from_vec(vec![1.0, -2.0, 0.5, 3.0]);
+        let (_, _, _, f) = least_squares(&a, &b, 1e12).unwrap();
+        let ata = a.transpose() * &a;
+        let ata_inv = ata.clone().try_inverse().unwrap();
+        let pinv = &ata_inv * a.transpose();
+        let l = DVector::from_vec(vec![0.3, -1.0, 2.0]);
+        let adj = f.adjoint(&l);
+        let want = pinv.transpose() * &l;
+        assert!((&adj - &want).amax() <= 1e-12 * want.amax(), "{adj} {want}");
+        let ni = f.normal_inverse(&l);
+        let want = &ata_inv * &l;
+        assert!((&ni - &want).amax() <= 1e-10 * want.amax(), "{ni} {want}");
     }
 }

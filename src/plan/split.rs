@@ -29,7 +29,7 @@ use super::error::PlanError;
 use super::split_input::{SplitContact, SplitInput, SplitInterval, SplitKind};
 use crate::system::contact::EndSite;
 use crate::numeric::operator::Term as NTerm;
-use crate::numeric::solve::{CheckedLu, DEFAULT_MAX_COND, least_squares};
+use crate::numeric::solve::{CheckedLu, DEFAULT_MAX_COND, LeastSquares, least_squares};
 use crate::numeric::{
     Assembler, Factor, Grading, Limits, Mesh, Operator, PanelBasis, Side, Singularity,
 };
@@ -243,29 +243,61 @@ pub struct Discrete {
 }
 
 /// What the adjoint rounding bound of a linear functional `l` of the
-/// solution `y` of `A y = b` needs: the factors of `A` and the slack
-/// `|r| + 32·ε·(|A||y| + |b|)` (`r = b − A y` as computed), so that
+/// solution `y` needs. For a square `A y = b`: the factors of `A` and the
+/// slack `|r| + 32·ε·(|A||y| + |b|)` (`r = b − A y` as computed), so that
 /// `|A⁻ᵀl|ᵀ·slack` bounds the change of `lᵀy` from the rounding of the
-/// solve and of the assembled entries.
+/// solve and of the assembled entries. For least squares (side
+/// conditions), `|A⁺ᵀl|ᵀ·32·ε·(|A||y| + |b|)` plus the residual's
+/// coupling `|(AᵀA)⁻¹l|ᵀ·32·ε·|A|ᵀ|r|` (first order in the perturbation
+/// of `A` and `b`; `r`, the discrete equations' inconsistency, is not
+/// rounding-small there).
 pub(super) struct Rounding {
-    pub(super) lu: CheckedLu,
-    pub(super) slack: DVector<f64>,
+    factors: Factors,
+    slack: DVector<f64>,
+    /// Least squares only: `32·ε·|A|ᵀ|r|`.
+    normal_slack: Option<DVector<f64>>,
+}
+
+/// The factors a [`Rounding`] solves with.
+enum Factors {
+    Square(CheckedLu),
+    LeastSquares(LeastSquares),
 }
 
 impl Rounding {
-    /// `|A⁻ᵀl|ᵀ·slack` for the functional row `l`; `None` if not finite.
+    /// The bound for the functional row `l`; `None` if not finite.
     pub(super) fn bound(&self, l: &DVector<f64>) -> Option<f64> {
-        let z = self.lu.solve_transpose(l);
-        let b: f64 = z.iter().zip(self.slack.iter()).map(|(z, s)| z.abs() * s).sum();
+        let dot = |z: &DVector<f64>, s: &DVector<f64>| -> f64 {
+            z.iter().zip(s.iter()).map(|(z, s)| z.abs() * s).sum()
+        };
+        let b = match &self.factors {
+            Factors::Square(lu) => dot(&lu.solve_transpose(l), &self.slack),
+            Factors::LeastSquares(ls) => {
+                let normal = self
+                    .normal_slack
+                    .as_ref()
+                    .map_or(0.0, |ns| dot(&ls.normal_inverse(l), ns));
+                dot(&ls.adjoint(l), &self.slack) + normal
+            }
+        };
         b.is_finite().then_some(b)
     }
 
-    fn new(a: &DMatrix<f64>, b: &DVector<f64>, y: &DVector<f64>, lu: CheckedLu) -> Rounding {
+    /// `|r|·with_residual + η(|A||y| + |b|)` and `r = b − A y`.
+    fn slack(
+        a: &DMatrix<f64>,
+        b: &DVector<f64>,
+        y: &DVector<f64>,
+        with_residual: bool,
+    ) -> (DVector<f64>, DVector<f64>) {
         let eta = crate::numeric::solve::ROUNDING_GROWTH * f64::EPSILON;
         let r = b - a * y;
+        let keep = if with_residual { 1.0 } else { 0.0 };
         let mut slack = DVector::from_iterator(
             b.len(),
-            r.iter().zip(b.iter()).map(|(r, b)| r.abs() + eta * b.abs()),
+            r.iter()
+                .zip(b.iter())
+                .map(|(r, b)| keep * r.abs() + eta * b.abs()),
         );
         for (j, yj) in y.iter().enumerate() {
             let yj = eta * yj.abs();
@@ -275,7 +307,41 @@ impl Rounding {
                 }
             }
         }
-        Rounding { lu, slack }
+        (slack, r)
+    }
+
+    fn new(a: &DMatrix<f64>, b: &DVector<f64>, y: &DVector<f64>, lu: CheckedLu) -> Rounding {
+        let (slack, _) = Rounding::slack(a, b, y, true);
+        Rounding {
+            factors: Factors::Square(lu),
+            slack,
+            normal_slack: None,
+        }
+    }
+
+    fn least_squares(
+        a: &DMatrix<f64>,
+        b: &DVector<f64>,
+        y: &DVector<f64>,
+        ls: LeastSquares,
+    ) -> Rounding {
+        let (slack, r) = Rounding::slack(a, b, y, false);
+        let eta = crate::numeric::solve::ROUNDING_GROWTH * f64::EPSILON;
+        let normal = DVector::from_iterator(
+            a.ncols(),
+            a.column_iter().map(|c| {
+                eta * c
+                    .iter()
+                    .zip(r.iter())
+                    .map(|(aij, ri)| aij.abs() * ri.abs())
+                    .sum::<f64>()
+            }),
+        );
+        Rounding {
+            factors: Factors::LeastSquares(ls),
+            slack,
+            normal_slack: Some(normal),
+        }
     }
 }
 
@@ -1177,8 +1243,10 @@ impl SplitProblem {
                 big.row_mut(nrows + i).copy_from(&row.transpose());
                 b[nrows + i] = cond.value - constant;
             }
-            least_squares(&big, &b, DEFAULT_MAX_COND)
-                .map_err(num("the equations with side conditions (least squares)"))?
+            let (y, cond, residual, ls) = least_squares(&big, &b, DEFAULT_MAX_COND)
+                .map_err(num("the equations with side conditions (least squares)"))?;
+            rounding = Some(Box::new(Rounding::least_squares(&big, &b, &y, ls)));
+            (y, cond, residual)
         };
         let residuals = c
             .conditions
