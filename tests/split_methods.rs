@@ -13,6 +13,7 @@ use std::process::Command;
 
 use lambdamat::lang::parse_program;
 use lambdamat::plan::split_fields::LevelFields;
+use lambdamat::plan::split_methods::Commuted;
 use lambdamat::plan::{Method, PlanError, SplitOptions, SplitSolution, solve_split_fields};
 
 fn solve(path: &str, method: Method) -> SplitSolution {
@@ -218,9 +219,6 @@ fn methods_the_split_solver_cannot_run_are_refused_with_the_reason() {
     ));
 }
 
-/// A commuted symbol pair and its measured defect.
-type Commuted = ([String; 2], Option<f64>);
-
 /// Solves `path` by `coupled` and `commutative` through the split solver:
 /// the largest difference of an output or of an unknown on the grid
 /// relative to the estimates, and the commuted pairs with their defects.
@@ -276,7 +274,11 @@ fn the_commutative_model_agrees_with_coupled_where_its_operators_commute() {
     );
     let (diff, est, commuted) = commutative_vs_coupled(f.path().to_str().expect("path"));
     assert_eq!(commuted.len(), 1, "{commuted:?}");
-    assert!(commuted[0].1.is_some_and(|d| d < 1e-12), "{commuted:?}");
+    assert!(
+        commuted[0].defect.is_some_and(|d| d < 1e-12)
+            && commuted[0].on_solution.is_some_and(|d| d < 1e-12),
+        "{commuted:?}"
+    );
     assert!(diff <= est, "{diff:e} > {est:e}");
     // A split file with one unknown (a singular weight, a breakpoint-free
     // punch): the eliminant is the equation itself.
@@ -306,7 +308,9 @@ fn the_commutative_model_differs_from_coupled_where_its_operators_do_not() {
     eprintln!("commuted {commuted:?}");
     assert!(!commuted.is_empty());
     assert!(
-        commuted.iter().all(|(_, d)| d.is_some_and(|d| d > 1e-3)),
+        commuted
+            .iter()
+            .all(|c| c.defect.is_some_and(|d| d > 1e-3) && c.on_solution.is_some_and(|d| d > 1e-3)),
         "{commuted:?}"
     );
 }

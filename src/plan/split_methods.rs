@@ -54,9 +54,22 @@ pub struct MethodRecord {
     /// Where the method departed from the derivation, named.
     pub warnings: Vec<String>,
     /// For the commutative model: the symbol pairs it commuted, each with
-    /// its measured defect `‖KaKb f - KbKa f‖/‖KaKb f‖` for `f = 1 + x`
-    /// (max norm at the nodes; `None` if `KaKb f` vanishes).
-    pub commuted: Vec<([String; 2], Option<f64>)>,
+    /// its measured defects.
+    pub commuted: Vec<Commuted>,
+}
+
+/// A pair of symbols the commutative model commuted, with its measured
+/// defect `‖KaKb f - KbKa f‖/‖KaKb f‖` (max norm at the target's nodes;
+/// `None` if `KaKb f` vanishes) for `f = 1 + x` and for `f` the model's
+/// solution for the target.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Commuted {
+    /// The two symbols.
+    pub pair: [String; 2],
+    /// The defect for `f = 1 + x`.
+    pub defect: Option<f64>,
+    /// The defect for the model's solution.
+    pub on_solution: Option<f64>,
 }
 
 /// The assembled split system with the ownership of its rows and columns
@@ -422,8 +435,14 @@ impl MethodPlan {
                 x[col] = v[q];
             }
         }
-        // The commuted pairs and their defects on f = 1 + x.
+        // The commuted pairs and their defects on f = 1 + x and on the
+        // model's solution (its values at the nodes, the coefficients of
+        // the unweighted `mid`).
         let f = DVector::from_vec(mid.interpolate(|t| 1.0 + t));
+        let on_solution = DVector::from_iterator(
+            nodes.len(),
+            nodes.iter().zip(coefs[i].iter().flatten()).map(|(&t, v)| basis.weight_at(t) * v),
+        );
         let mut commuted = Vec::new();
         for p in der.commuted_pairs() {
             let ka = mid_asm
@@ -432,12 +451,16 @@ impl MethodPlan {
             let kb = mid_asm
                 .matrix_on(op(p.b)?, &nodes, mid.support())
                 .map_err(ctx())?;
-            let d = match commutator_defect_on(&ka, &kb, &ka, &kb, &mid, &f) {
-                Ok(v) => Some(v),
-                Err(NumericError::InvalidArgument(_)) => None,
-                Err(e) => return Err(PlanError::numeric("commutator defect")(e)),
+            let defect = |f: &DVector<f64>| match commutator_defect_on(&ka, &kb, &ka, &kb, &mid, f) {
+                Ok(v) => Ok(v.is_finite().then_some(v)),
+                Err(NumericError::InvalidArgument(_)) => Ok(None),
+                Err(e) => Err(PlanError::numeric("commutator defect")(e)),
             };
-            commuted.push(([sys.symbols[p.a].clone(), sys.symbols[p.b].clone()], d));
+            commuted.push(Commuted {
+                pair: [sys.symbols[p.a].clone(), sys.symbols[p.b].clone()],
+                defect: defect(&f)?,
+                on_solution: defect(&on_solution)?,
+            });
         }
         if let Ok(mut last) = self.last.lock() {
             *last = MethodRecord {

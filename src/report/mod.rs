@@ -258,9 +258,10 @@ pub fn from_split(sol: &SplitSolution, grid: usize) -> Result<Report, PlanError>
     if let Some(m) = sol.problem.method_record() {
         warnings.extend(m.warnings);
         if r.method == Method::Commutative.name() {
-            for ([a, b], d) in &m.commuted {
-                if let Some(v) = d
-                    && *v > crate::plan::split_methods::DEFECT_WARNING
+            for c in &m.commuted {
+                let [a, b] = &c.pair;
+                if let Some(v) = c.defect
+                    && v > crate::plan::split_methods::DEFECT_WARNING
                 {
                     warnings.push(format!(
                         "{a} and {b} do not commute: ‖{a}{b} f - {b}{a} f‖/‖{a}{b} f‖ = {v:.3e} for f = 1 + x; an elimination that commutes them is a model, not the system"
@@ -272,7 +273,9 @@ pub fn from_split(sol: &SplitSolution, grid: usize) -> Result<Report, PlanError>
                 "commutator_defects".into(),
                 m.commuted
                     .iter()
-                    .map(|(pair, d)| json!({"pair": pair, "defect": d, "defect_on_solution": null}))
+                    .map(|c| {
+                        json!({"pair": c.pair, "defect": c.defect, "defect_on_solution": c.on_solution})
+                    })
                     .collect(),
             );
             warnings.push(format!(

@@ -108,8 +108,8 @@ impl Report {
         self.estimate(name).map_or("?".to_string(), show_estimate)
     }
 
-    /// The commutator defects of a one-interval solve, when an elimination
-    /// commuted operators.
+    /// The commutator defects of the commutative model, on `1 + x` and on
+    /// its solution.
     fn write_defects(&self, w: &mut dyn Write) -> std::io::Result<()> {
         let Some(list) = self
             .extra
@@ -126,7 +126,7 @@ impl Report {
             .unwrap_or("target");
         writeln!(
             w,
-            "commutator defects ‖KaKb f - KbKa f‖/‖KaKb f‖ (f = 1 + x; f = the system's {target}):"
+            "commutator defects ‖KaKb f - KbKa f‖/‖KaKb f‖ (f = 1 + x; f = the model's {target}):"
         )?;
         let show = |v: Option<&Value>| {
             v.and_then(Value::as_f64)
