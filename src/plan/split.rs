@@ -11,9 +11,10 @@
 //! subinterval (in written order), and one extra collocation point per
 //! singular term at the point's side (the one-sided limit of the paired
 //! equation there). Products of operators are applied in written order
-//! through an unweighted intermediate basis on the whole mesh; each side condition (`condition int(..) f =
-//! C`, a point value) is one more functional row, and with such rows the
-//! system is solved by least squares. Owns this discretisation; root
+//! through an unweighted intermediate basis on the whole mesh; each side
+//! condition (`condition int(..) f = C`, a point value) is one more
+//! functional row, and with such rows the system is solved by least
+//! squares. Owns this discretisation; root
 //! finding and the refinement ladder are `split_solve.rs`'s.
 //!
 //! The Hertz problem (`examples/hertz.lmx`) gets exactly the
@@ -254,14 +255,13 @@ pub struct Discrete {
 pub(super) struct Rounding {
     factors: Factors,
     slack: DVector<f64>,
-    /// Least squares only: `32·ε·|A|ᵀ|r|`.
-    normal_slack: Option<DVector<f64>>,
 }
 
 /// The factors a [`Rounding`] solves with.
 enum Factors {
     Square(CheckedLu),
-    LeastSquares(LeastSquares),
+    /// With the residual's slack `32·ε·|A|ᵀ|r|`.
+    LeastSquares(LeastSquares, DVector<f64>),
 }
 
 impl Rounding {
@@ -272,12 +272,8 @@ impl Rounding {
         };
         let b = match &self.factors {
             Factors::Square(lu) => dot(&lu.solve_transpose(l), &self.slack),
-            Factors::LeastSquares(ls) => {
-                let normal = self
-                    .normal_slack
-                    .as_ref()
-                    .map_or(0.0, |ns| dot(&ls.normal_inverse(l), ns));
-                dot(&ls.adjoint(l), &self.slack) + normal
+            Factors::LeastSquares(ls, normal) => {
+                dot(&ls.adjoint(l), &self.slack) + dot(&ls.normal_inverse(l), normal)
             }
         };
         b.is_finite().then_some(b)
@@ -315,7 +311,6 @@ impl Rounding {
         Rounding {
             factors: Factors::Square(lu),
             slack,
-            normal_slack: None,
         }
     }
 
@@ -338,9 +333,8 @@ impl Rounding {
             }),
         );
         Rounding {
-            factors: Factors::LeastSquares(ls),
+            factors: Factors::LeastSquares(ls, normal),
             slack,
-            normal_slack: Some(normal),
         }
     }
 }
