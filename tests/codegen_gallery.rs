@@ -60,6 +60,10 @@ mod sphere_load_range_solver;
 #[rustfmt::skip]
 #[path = "data/codegen_log_end_solver.rs"]
 mod codegen_log_end_solver;
+#[allow(dead_code)]
+#[rustfmt::skip]
+#[path = "data/codegen_two_terms_solver.rs"]
+mod codegen_two_terms_solver;
 
 fn same_bits(what: &str, a: &[Estimate], b: &[Estimate]) {
     assert_eq!(a.len(), b.len(), "{what}");
@@ -208,6 +212,26 @@ fn a_logarithmic_end_generates_a_solver_identical_to_solve() {
     assert!(check_file(
         "tests/data/codegen_log_end.lmx",
         "tests/data/codegen_log_end_solver.rs",
+        input,
+    ));
+}
+
+/// Two exact terms of one unknown at one point (`examples/two_terms.lmx`,
+/// one declaration `A*g(x) + B*h(x)`) are generated as two terms, and the
+/// solver compiled from them solves bit for bit as `solve` does.
+#[test]
+fn several_singular_terms_generate_a_solver_identical_to_solve() {
+    let input = codegen_two_terms_solver::input().expect("generated input is consistent");
+    let terms = input
+        .contact
+        .singulars
+        .iter()
+        .filter(|s| matches!(s.kind, lambdamat::plan::split_input::SplitKind::Term { .. }))
+        .count();
+    assert_eq!(terms, 2, "the generated input declares both terms");
+    assert!(check_file(
+        "examples/two_terms.lmx",
+        "tests/data/codegen_two_terms_solver.rs",
         input,
     ));
 }

@@ -123,6 +123,7 @@ fn every_example_reports_one_shape_and_its_closed_form_within_the_estimates() {
             let got = j["outputs"]
                 .get(q)
                 .or_else(|| j["scalars"].get(q))
+                .or_else(|| j["coefficients"].get(q))
                 .and_then(Value::as_f64)
                 .unwrap_or_else(|| panic!("{name}: no value {q}"));
             let e = estimates[q].as_f64().expect("estimate");

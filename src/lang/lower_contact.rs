@@ -13,7 +13,7 @@ use super::error::{ErrorKind, LangError};
 use super::lower::constant;
 use super::scope::{Entry, Scope, Sort};
 use super::validate_contact::{
-    coefficient_term, inequality_sides, is_inf, linear_side, log_form, relation_form, weight_form,
+    coefficient_terms, inequality_sides, is_inf, linear_side, log_form, relation_form, weight_form,
 };
 use crate::system::contact::{
     Condition, Contact, EndSite, Inequality, Interval as CInterval, LinTerm, MovingEnd, RBin,
@@ -298,75 +298,65 @@ pub fn lower_contact(file: &File, scope: &Scope) -> Result<Contact, LangError> {
                 side,
                 body,
             } => {
-                let term = coefficient_term(body);
-                let coefficient = term.as_ref().and_then(|(id, g)| match scope.get(&id.name) {
+                let coefficient = |id: &Ident| match scope.get(&id.name) {
                     Some(Entry {
                         sort: Sort::Coefficient(k),
                         span,
-                    }) if span == id.span => Some((k, g)),
+                    }) if span == id.span => Some(k),
                     _ => None,
-                });
-                let kind = match coefficient {
-                    Some((k, g)) => SingularKind::Term {
-                        coefficient: k,
-                        func: rexpr(g, scope, &slots)?,
-                    },
-                    None if log_form(body, scope).is_some() => SingularKind::Log,
-                    None => {
-                        let (_, exp) = weight_form(body, scope)
-                            .ok_or_else(|| internal(body.span, "a weight"))?;
-                        SingularKind::Weight {
-                            exponent: rexpr(&exp, scope, &slots)?,
-                        }
-                    }
                 };
+                // A sum of exact terms `A*g(x) + B*h(x)` is one term each:
+                // one column per coefficient, fixed with the others at the
+                // point (the discretisation's one-sided limit and extra
+                // collocation points).
                 let (u, at) = (unknown(u, scope)?, rexpr(at, scope, &slots)?);
-                // Two exact terms of one unknown at one point and side would
-                // be two columns fixed by the same one-sided limit.
-                let twice = matches!(kind, SingularKind::Term { .. })
-                    && c.singulars.iter().any(|s| {
-                        s.unknown == u
-                            && s.at == at
-                            && s.side == *side
-                            && matches!(s.kind, SingularKind::Term { .. })
-                    });
-                if twice {
-                    return Err(LangError::new(
-                        ErrorKind::Unsupported,
-                        "this unknown already has a singular term `B*g(x)` at this point and side: one term per unknown, point and side is supported (its coefficient is fixed by the one limit of its equation there)",
-                        body.span,
-                        "a second term",
-                    )
-                    .with_help("write the behaviour as one term, e.g. `singular p at a- ~ B*(x + 2*(a - x))/sqrt(a^2 - x^2)`"));
+                if let Some(terms) = coefficient_terms(body)
+                    && let Some(ks) = terms
+                        .iter()
+                        .map(|(id, _)| coefficient(id))
+                        .collect::<Option<Vec<usize>>>()
+                {
+                    for ((_, g), k) in terms.iter().zip(ks) {
+                        c.singulars.push(Singular {
+                            unknown: u,
+                            at: at.clone(),
+                            side: *side,
+                            kind: SingularKind::Term {
+                                coefficient: k,
+                                func: rexpr(g, scope, &slots)?,
+                            },
+                        });
+                    }
+                    continue;
                 }
+                let (kind, what) = if log_form(body, scope).is_some() {
+                    (SingularKind::Log, "logarithm")
+                } else {
+                    let (_, exp) =
+                        weight_form(body, scope).ok_or_else(|| internal(body.span, "a weight"))?;
+                    let exponent = rexpr(&exp, scope, &slots)?;
+                    (SingularKind::Weight { exponent }, "weight")
+                };
                 // A weight is |x − P|^e on both sides of its point whatever
                 // side is written, and a logarithm takes no weight out: two
                 // of them at one point would multiply (or one would be lost)
                 // where the user means a sum.
-                let what = match kind {
-                    SingularKind::Weight { .. } => Some("weight"),
-                    SingularKind::Log => Some("logarithm"),
-                    SingularKind::Term { .. } => None,
-                };
-                if let Some(what) = what {
-                    if let Some((_, _, first, first_what)) = behaviours
-                        .iter()
-                        .find(|(v, p, _, _)| *v == u && *p == at)
-                    {
-                        return Err(LangError::new(
-                            ErrorKind::Unsupported,
-                            format!(
-                                "`{}` already has a {first_what} at this point: the behaviour of one unknown at one point is written as one declaration, and sums of several singular terms are not supported yet",
-                                scope.unknowns.get(u).map_or("this unknown", String::as_str)
-                            ),
-                            body.span,
-                            format!("a second {what}"),
-                        )
-                        .with_related(*first, format!("the {first_what} declared first"))
-                        .with_help("write one declaration per unknown and point: a product of powers of one point is one power with the exponents added (`(1 - x)^(-1/2)` times `(1 - x)^(1/4)` is `singular p at 1 ~ (1 - x)^(-1/4)`); a weight holds on both sides of its point whichever side is written, and a logarithm times a power is not supported"));
-                    }
-                    behaviours.push((u, at.clone(), body.span, what));
+                if let Some((_, _, first, first_what)) =
+                    behaviours.iter().find(|(v, p, _, _)| *v == u && *p == at)
+                {
+                    return Err(LangError::new(
+                        ErrorKind::Unsupported,
+                        format!(
+                            "`{}` already has a {first_what} at this point: a weight or logarithm factors the whole unknown there, so one unknown has one of them per point",
+                            scope.unknowns.get(u).map_or("this unknown", String::as_str)
+                        ),
+                        body.span,
+                        format!("a second {what}"),
+                    )
+                    .with_related(*first, format!("the {first_what} declared first"))
+                    .with_help("a product of powers of one point is one power with the exponents added (`(1 - x)^(-1/2)` times `(1 - x)^(1/4)` is `singular p at 1 ~ (1 - x)^(-1/4)`); a sum of singular behaviours is written as exact terms with their own coefficients on one side, `singular p at 1- ~ A/sqrt(1 - x) + B*(1 - x)^(-1/4)`"));
                 }
+                behaviours.push((u, at.clone(), body.span, what));
                 c.singulars.push(Singular {
                     unknown: u,
                     at,

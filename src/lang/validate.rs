@@ -151,11 +151,12 @@ impl Validator {
                     }
                 }
                 Stmt::Singular { body, .. } => {
-                    if let Some((id, _)) = super::validate_contact::coefficient_term(body)
-                        && self.scope.get(&id.name).is_none()
-                    {
-                        self.not_reserved(&id, "a coefficient");
-                        let _ = self.scope.declare_coefficient(&id.name, id.span);
+                    let terms = super::validate_contact::coefficient_terms(body);
+                    for (id, _) in terms.into_iter().flatten() {
+                        if self.scope.get(&id.name).is_none() {
+                            self.not_reserved(&id, "a coefficient");
+                            let _ = self.scope.declare_coefficient(&id.name, id.span);
+                        }
                     }
                 }
                 _ => {}

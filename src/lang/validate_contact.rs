@@ -52,6 +52,30 @@ pub(super) fn coefficient_term(e: &Expr) -> Option<(Ident, Expr)> {
     Some((id, g))
 }
 
+/// `B*g(x) + D*h(x) - …`: the terms of a sum of coefficient terms (a
+/// single term is a sum of one), each a name and its function, a
+/// subtracted term's function negated; `None` unless every summand is a
+/// coefficient term.
+pub(super) fn coefficient_terms(e: &Expr) -> Option<Vec<(Ident, Expr)>> {
+    match &e.kind {
+        ExprKind::Binary(op @ (BinOp::Add | BinOp::Sub), a, b) => {
+            let mut terms = coefficient_terms(a)?;
+            let (id, g) = coefficient_term(b)?;
+            let g = if *op == BinOp::Sub {
+                Expr {
+                    span: g.span,
+                    kind: ExprKind::Neg(Box::new(g)),
+                }
+            } else {
+                g
+            };
+            terms.push((id, g));
+            Some(terms)
+        }
+        _ => coefficient_term(e).map(|t| vec![t]),
+    }
+}
+
 /// Whether `x` occurs in `e`.
 fn uses_x(e: &Expr) -> bool {
     match &e.kind {
@@ -569,17 +593,36 @@ impl Validator {
     pub(super) fn singular(&mut self, unknown: &Ident, at: &Expr, body: &Expr) {
         self.unknown_ref(unknown);
         self.real_expr(at, false);
-        if let Some((id, g)) = coefficient_term(body).as_ref()
-            && matches!(
-                self.scope.get(&id.name),
-                Some(Entry {
-                    sort: Sort::Coefficient(_),
-                    span
-                }) if span == id.span
-            )
-        {
-            self.real_expr(g, true);
-            return;
+        if let Some(terms) = coefficient_terms(body) {
+            let new = |id: &Ident| {
+                matches!(
+                    self.scope.get(&id.name),
+                    Some(Entry {
+                        sort: Sort::Coefficient(_),
+                        span
+                    }) if span == id.span
+                )
+            };
+            if terms.iter().all(|(id, _)| new(id)) {
+                for (_, g) in &terms {
+                    self.real_expr(g, true);
+                }
+                return;
+            }
+            if terms.len() > 1 {
+                if let Some((id, _)) = terms.iter().find(|(id, _)| !new(id)) {
+                    self.err(wrong(
+                        &Expr {
+                            kind: ExprKind::Name(id.clone()),
+                            span: id.span,
+                        },
+                        "each term of a sum of singular terms needs its own new coefficient name (`A*g(x) + B*h(x)`)",
+                        "not a new coefficient",
+                        "e.g. `singular p at 1- ~ A/sqrt(1 - x) + B*(1 - x)^(-1/4)`",
+                    ));
+                }
+                return;
+            }
         }
         if let Some(point) = log_form(body, &self.scope) {
             if self.real_expr(&point, false) {

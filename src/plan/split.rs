@@ -29,8 +29,11 @@ use super::compiled::{CompiledSystem, Fn1, OutputTerm};
 use super::error::PlanError;
 use super::split_input::{SplitContact, SplitInput, SplitInterval, SplitKind};
 use crate::system::contact::EndSite;
+use crate::numeric::gamma::ln_gamma;
 use crate::numeric::operator::Term as NTerm;
-use crate::numeric::solve::{CheckedLu, DEFAULT_MAX_COND, LeastSquares, least_squares};
+use crate::numeric::solve::{
+    CheckedLu, DEFAULT_MAX_COND, LeastSquares, least_squares, rounding_floor,
+};
 use crate::numeric::{
     Assembler, Factor, Grading, Limits, Mesh, Operator, PanelBasis, Side, Singularity,
 };
@@ -881,7 +884,7 @@ impl SplitProblem {
             None
         };
         // Exact singular terms.
-        let mut terms = Vec::new();
+        let mut terms: Vec<SingularTerm> = Vec::new();
         for s in &c.singulars {
             let SplitKind::Term { coefficient, func } = &s.kind else {
                 continue;
@@ -916,6 +919,19 @@ impl SplitProblem {
                     "the singular term of {name} at {at}: cannot measure a power singularity |x - {at}|^(-β) with 0 < β < 1 (β must be a fraction with denominator ≤ 12)"
                 ))
             })?;
+            // Two terms of one power at one point and side differ by a
+            // bounded function, which the unknown's own basis represents:
+            // their coefficients are not determined apart.
+            if let Some(first) = terms.iter().find(|t| {
+                t.unknown == u && t.at == at && t.side == side && (t.beta - beta).abs() < 1e-12
+            }) {
+                let names = &self.contact.coefficients;
+                return Err(invalid(format!(
+                    "the singular terms {} and {} of {name} at {at} have the same power |x - {at}|^(-{beta}): their difference is bounded there, so their coefficients are not determined apart; write them as one term (`B*(g(x) + h(x))`), or give the second a different power",
+                    names.get(first.coefficient).map_or("?", String::as_str),
+                    names.get(*coefficient).map_or("?", String::as_str),
+                )));
+            }
             let (m, cnt) = sub_mesh(s0, s1)?;
             let basis = PanelBasis::new(
                 &m,
@@ -1079,10 +1095,19 @@ impl SplitProblem {
             }
             r0 += xs.len();
         }
-        // One-sided limits of the paired equations at the singular points.
+        // The row of each exact term: the first term of an unknown at a
+        // point and side takes the one-sided limit of the paired equation
+        // at the point (where every term of the group enters through its
+        // limit); each further one collocates that equation once more, in
+        // the unknown's panel beside the point.
         let mut term_eq = Vec::with_capacity(terms.len());
         for (ti, t) in terms.iter().enumerate() {
             let row = r0 + ti;
+            let rank = terms[..ti]
+                .iter()
+                .filter(|u| u.unknown == t.unknown && u.at == t.at && u.side == t.side)
+                .count();
+            let limit = rank == 0;
             let k = if t.side < 0 {
                 breaks
                     .iter()
@@ -1102,7 +1127,22 @@ impl SplitProblem {
                 ))
             })?;
             term_eq.push((t.unknown, e));
-            rhs[row] = self.rhs_at(e, &vars, t.at);
+            let x_row = if limit {
+                t.at
+            } else {
+                bases[t.unknown]
+                    .as_ref()
+                    .and_then(|b| extra_point(b, t.at, t.side, rank))
+                    .ok_or_else(|| {
+                        invalid(format!(
+                            "the singular terms of {} at {}: {} terms at one point and side need as many collocation points in the panel beside it",
+                            self.sys.unknowns[t.unknown],
+                            t.at,
+                            rank + 1
+                        ))
+                    })?
+            };
+            rhs[row] = self.rhs_at(e, &vars, x_row);
             for j in 0..nu {
                 let op = ops[e][j].as_ref();
                 if op.is_none() && self.words[e][j].is_empty() {
@@ -1114,11 +1154,11 @@ impl SplitProblem {
                 let row_at = |asm: &Assembler, win: (f64, f64)| -> Result<Vec<f64>, PlanError> {
                     let mut r = vec![0.0; asm.basis().dim()];
                     if let Some(op) = op {
-                        asm.row_into(op, t.at, win, &mut r)
+                        asm.row_into(op, x_row, win, &mut r)
                             .map_err(num("assembly"))?;
                     }
                     if let Some(p) =
-                        self.products((e, j), asm, &[t.at], win, mid_asm.as_ref(), false)?
+                        self.products((e, j), asm, &[x_row], win, mid_asm.as_ref(), false)?
                     {
                         r.iter_mut().zip(p.iter()).for_each(|(a, b)| *a += b);
                     }
@@ -1156,7 +1196,7 @@ impl SplitProblem {
                     // A term at the same point and side enters through the
                     // same one-sided limit (not through its value at the
                     // point, where its support ends).
-                    let v = if tj == ti || (u.at == t.at && u.side == t.side) {
+                    let v = if limit && (tj == ti || (u.at == t.at && u.side == t.side)) {
                         let linear = match op {
                             Some(op) => {
                                 one_sided_limit(op, u, &term_asms[tj]).map_err(|_| unbounded(u))?
@@ -1454,6 +1494,31 @@ impl SplitProblem {
         let rounding = d.rounding.as_deref()?;
         let (row, _) = d.layout().functional(&self.output_terms(d, o)).ok()?;
         rounding.bound(&row)
+    }
+
+    /// The adjoint rounding bound of singular-term coefficient `k` on `d`
+    /// (as [`SplitProblem::output_rounding`], for the unit functional of
+    /// its column). Without the level's factors (a method solve) a
+    /// coefficient that shares its point and side
+    /// with another term, and so rests on an extra collocation row, gets
+    /// the normwise floor `32·ε·κ·max(1, |B|)` instead; `None` for the
+    /// others, or without such a term.
+    pub(super) fn coefficient_rounding(&self, d: &Discrete, k: usize) -> Option<f64> {
+        let i = d.terms.iter().position(|t| t.coefficient == k)?;
+        let dim = d.offsets[d.offsets.len() - 1];
+        let Some(rounding) = d.rounding.as_deref() else {
+            let t = &d.terms[i];
+            let shared = d
+                .terms
+                .iter()
+                .filter(|u| u.unknown == t.unknown && u.at == t.at && u.side == t.side)
+                .count()
+                > 1;
+            return shared.then(|| rounding_floor(d.cond) * d.solution[dim + i].abs().max(1.0));
+        };
+        let mut l = DVector::zeros(d.solution.len());
+        l[dim + i] = 1.0;
+        rounding.bound(&l)
     }
 
     /// The value of output `o` for a discrete solution: its functional's
@@ -1839,10 +1904,29 @@ fn term_coefficients(
         .collect()
 }
 
+/// The `rank`-th extra collocation point (from 1) of a group of exact
+/// terms at `at` on `side`: in `basis`'s panel beside the point, halfway
+/// between consecutive points of the point itself and the panel's nodes
+/// in order of distance from it (so never a node).
+fn extra_point(basis: &PanelBasis, at: f64, side: i8, rank: usize) -> Option<f64> {
+    let end = |p: &&crate::numeric::basis::Panel| if side < 0 { p.b } else { p.a };
+    let panel = basis
+        .panels
+        .iter()
+        .min_by(|p, q| (end(p) - at).abs().total_cmp(&(end(q) - at).abs()))?;
+    let mut pts: Vec<f64> = panel.nodes.clone();
+    pts.sort_by(|a, b| (a - at).abs().total_cmp(&(b - at).abs()));
+    pts.insert(0, at);
+    let (a, b) = (*pts.get(rank.checked_sub(1)?)?, *pts.get(rank)?);
+    Some(0.5 * (a + b))
+}
+
 /// The one-sided limit at `t.at` of `op` applied to the singular term
 /// `g` of `t`: for an Abel term whose range runs into the point from the
 /// term's side, `a(P,P)·φ(P)·π/√(2|P|)` when `β = 1/2` (the integral
-/// `∫ (s-x)^(-1/2)(P-s)^(-1/2) ds = π`) and `0` when `β < 1/2`; smooth
+/// `∫ (s-x)^(-1/2)(P-s)^(-1/2) ds = π`) and `0` when `β < 1/2`, for a
+/// kernel `|s - x|^(-γ)` likewise `a(P,P)·φ(P)·B(1 - γ, 1 - β)` when
+/// `γ + β = 1` and `0` below; smooth
 /// terms are evaluated by product integration; anything that diverges is
 /// refused.
 fn one_sided_limit(op: &Operator, t: &SingularTerm, asm: &Assembler) -> Result<f64, PlanError> {
@@ -1889,6 +1973,25 @@ fn one_sided_limit(op: &Operator, t: &SingularTerm, asm: &Assembler) -> Result<f
                         return Err(diverges());
                     }
                 } else {
+                    return Err(diverges());
+                }
+            }
+            NTerm::Integral {
+                limits,
+                singularity: Singularity::Power { beta: gamma },
+                kernel,
+            } if matches!(
+                (limits, t.side),
+                (Limits::Upper { .. }, -1) | (Limits::Lower { .. }, 1)
+            ) =>
+            {
+                // ∫ |s - x|^(-γ) |P - s|^(-β) ds over the gap between x and
+                // P is B(1 - γ, 1 - β)·|P - x|^(1 - γ - β).
+                let order = gamma + t.beta;
+                if (order - 1.0).abs() < 1e-12 {
+                    let ln_b = ln_gamma(1.0 - gamma) + ln_gamma(1.0 - t.beta) - ln_gamma(2.0 - order);
+                    total += c * kernel(p, p) * phi_p * ln_b.exp();
+                } else if order > 1.0 {
                     return Err(diverges());
                 }
             }

@@ -540,6 +540,7 @@ pub fn answer_at_end(
             left_out: Vec::new(),
             floors: Vec::new(),
             output_floors: Vec::new(),
+            coefficient_floors: Vec::new(),
         };
         // Each output's own level estimate.
         let noise: Vec<f64> = (0..n_out)

@@ -316,6 +316,7 @@ pub(super) fn check(
             left_out: Vec::new(),
             floors: Vec::new(),
             output_floors: Vec::new(),
+            coefficient_floors: Vec::new(),
         }];
         let (x, slope, d) = find_scalar(problem, lvl, &warm, opts.tol)?;
         (vec![x], slope, d)
@@ -333,6 +334,7 @@ pub(super) fn check(
         left_out: Vec::new(),
         floors: Vec::new(),
         output_floors: Vec::new(),
+        coefficient_floors: Vec::new(),
     };
     Ok(Verdict::Climb {
         level: Box::new(level),

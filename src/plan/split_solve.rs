@@ -249,6 +249,11 @@ pub(super) struct Level {
     /// ([`SplitProblem::output_rounding`]; `None` where the level's
     /// factors were not kept).
     pub(super) output_floors: Vec<Option<f64>>,
+    /// Per singular-term coefficient, its adjoint rounding bound
+    /// ([`SplitProblem::coefficient_rounding`]; `None` where the level's
+    /// factors were not kept): a coefficient is one entry of the solution,
+    /// read like a point value, not summed like an integral.
+    pub(super) coefficient_floors: Vec<Option<f64>>,
 }
 
 /// Tolerance of the root iterations: a twentieth of the requested
@@ -432,6 +437,9 @@ fn solve_split_ladder(
         let output_floors = (0..problem.sys.outputs.len())
             .map(|o| problem.output_rounding(&d, o))
             .collect();
+        let coefficient_floors = (0..problem.contact.coefficients.len())
+            .map(|c| problem.coefficient_rounding(&d, c))
+            .collect();
         let mut this = Level {
             dim: SplitProblem::size(&d),
             scalars,
@@ -445,6 +453,7 @@ fn solve_split_ladder(
             left_out: Vec::new(),
             floors: Vec::new(),
             output_floors,
+            coefficient_floors,
         };
         let rt = if ns > 0 {
             2.0 * root_tolerance(opts.tol)
@@ -813,6 +822,16 @@ pub(super) fn output_estimate(
     estimate_of_guarded(levels, this, &|l| &l.outputs, o, guarded).max(point_rounding(problem, this, o))
 }
 
+/// [`estimate_of`] of singular-term coefficient `i`, at least its
+/// adjoint rounding bound (`Level::coefficient_floors`): the level
+/// differences miss rounding that every level repeats alike, such as an
+/// extra collocation row's (the second term of an unknown at a point)
+/// cancellation beside the point.
+pub(super) fn coefficient_estimate(levels: &[Level], this: &Level, i: usize) -> f64 {
+    let floor = this.coefficient_floors.get(i).copied().flatten();
+    estimate_of(levels, this, &|l| &l.coefficients, i).max(floor.unwrap_or(0.0))
+}
+
 /// One quantity's values on every level climbed, then on `this`.
 pub(super) fn history(
     levels: &[Level],
@@ -1079,7 +1098,7 @@ fn estimate(
         .filter(|&i| !fixed(i))
         .map(|i| {
             rel(
-                estimate_of(levels, this, &|l| &l.coefficients, i),
+                coefficient_estimate(levels, this, i),
                 this.coefficients[i],
             )
         });
@@ -1145,7 +1164,7 @@ pub(super) fn report(
             .map(|(i, n)| Estimate {
                 name: n.clone(),
                 value: this.coefficients[i],
-                error: err(&|l| &l.coefficients, i, 0.0),
+                error: coefficient_estimate(climbed, this, i),
             })
             .collect(),
         unknowns: if this.unknowns.is_empty() {
