@@ -444,7 +444,7 @@ fn contact_lit(c: &Contact, sites: &[EndSite], fns: &mut Fns) -> String {
         .map(|(i, (e, site))| {
             let f = fns.real(
                 &format!("end_{}", i + 1),
-                &format!("Integration limit {} (it uses a scalar)", i + 1),
+                &format!("Integration limit or point-value position {} (it uses a scalar)", i + 1),
                 &e.value,
             );
             let site = match *site {

@@ -365,9 +365,14 @@ fn functional_limits(
 ) -> impl Iterator<Item = (EndSite, &mut BigRational, bool)> {
     terms.iter_mut().enumerate().flat_map(move |(i, t)| {
         let mut v = Vec::new();
-        if let FunctionalTerm::Integral { lower, upper, .. } = t {
-            v.push((site(i), lower, false));
-            v.push((site(i), upper, true));
+        match t {
+            FunctionalTerm::Integral { lower, upper, .. } => {
+                v.push((site(i), lower, false));
+                v.push((site(i), upper, true));
+            }
+            // A point value's position moves as an upper limit does.
+            FunctionalTerm::Point { at, .. } => v.push((site(i), at, true)),
+            FunctionalTerm::Constant(_) => {}
         }
         v
     })
@@ -598,7 +603,7 @@ fn output_terms(e: &Expr, scope: &Scope) -> Result<Vec<FunctionalTerm>, LangErro
             };
             vec![FunctionalTerm::Point {
                 coeff: SExpr::Const(BigRational::one()),
-                at: constant(arg, scope).ok_or_else(|| internal(arg))?,
+                at: output_limit(arg, scope).ok_or_else(|| internal(arg))?,
                 unknown: u,
             }]
         }

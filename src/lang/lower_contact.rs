@@ -413,9 +413,11 @@ fn marker_position(q: &num_rational::BigRational) -> Option<usize> {
     (q.numer() - base).to_usize()
 }
 
-/// Every integration limit in `e` that uses a scalar.
+/// Every integration limit and point-value position in `e` that uses a
+/// scalar.
 fn scalar_limits<'e>(e: &'e Expr, scope: &Scope, out: &mut Vec<&'e Expr>) {
     match &e.kind {
+        ExprKind::Call(f, a) if scope.is_unknown(&f.name) && uses_scalar(a, scope) => out.push(a),
         ExprKind::Integral { lower, upper, .. } => {
             for l in [lower, upper] {
                 if uses_scalar(l, scope) {

@@ -339,7 +339,7 @@ fn functional_term(t: &FunctionalTerm, unknowns: &[String], ends: &[Option<Strin
     match t {
         FunctionalTerm::Point { coeff, at, unknown } => {
             let name = unknowns.get(*unknown).map_or("?", String::as_str);
-            let point = format!("{name}({})", Expr::Const(at.clone()));
+            let point = format!("{name}({})", end(1, at));
             if coeff.as_const().is_some_and(|c| c.is_one()) {
                 point
             } else {

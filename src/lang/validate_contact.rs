@@ -672,12 +672,35 @@ impl Validator {
         }
     }
 
+    /// The first point value `u(arg)` in `e` whose position uses a scalar.
+    fn moving_point<'e>(&self, e: &'e Expr) -> Option<&'e Expr> {
+        match &e.kind {
+            ExprKind::Call(f, a) if self.scope.is_unknown(&f.name) => {
+                self.uses_scalar(a).then_some(&**a)
+            }
+            ExprKind::Neg(a) | ExprKind::Call(_, a) => self.moving_point(a),
+            ExprKind::Binary(_, a, b) => self.moving_point(a).or_else(|| self.moving_point(b)),
+            _ => None,
+        }
+    }
+
     /// `condition B = value`, or a side condition `functional = value`
     /// (an output's body, linear in the unknowns, fixed to a constant).
     pub(super) fn condition(&mut self, lhs: &Expr, rhs: &Expr) {
         if super::validate_system::is_side_condition(lhs, &self.scope) {
             self.output_body(lhs);
             self.side_value(rhs);
+            if let Some(arg) = self.moving_point(lhs) {
+                self.err(
+                    LangError::new(
+                        ErrorKind::Unsupported,
+                        "a condition cannot take a point value at a position that uses an unknown scalar (not supported: the joint root solve does not follow such a condition from level to level)",
+                        arg.span,
+                        "moves with a scalar",
+                    )
+                    .with_help("take the point value at a constant (`p(1/2)`), or state the condition as an integral (`int(0..a) …`); outputs may take point values at scalars (`output p_mid = p(a/2)`)"),
+                );
+            }
             return;
         }
         let ok = matches!(&lhs.kind, ExprKind::Name(id) if matches!(

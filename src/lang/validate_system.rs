@@ -725,7 +725,7 @@ impl Validator {
                             f.name
                         )),
                     );
-                } else {
+                } else if !self.moving_limit(arg) {
                     self.constant(arg);
                 }
             }

@@ -681,7 +681,9 @@ impl SplitProblem {
             add_break(lo, "a relation's interval end", &mut pts)?;
             add_break(hi, "a relation's interval end", &mut pts)?;
         }
-        for e in &c.ends {
+        // A point value's position reads the solution and does not cut
+        // the mesh.
+        for e in c.ends.iter().filter(|e| !self.is_point_position(e.site)) {
             add_break(e.value.eval(&vars, 0.0), "an integration limit", &mut pts)?;
         }
         for (i, s) in c.singulars.iter().enumerate() {
@@ -1392,11 +1394,32 @@ impl SplitProblem {
                 continue;
             };
             let v = e.value.eval(vars, 0.0);
-            if let Some(OutputTerm::Integral { lower, upper, .. }) = out.to_mut().get_mut(k) {
-                *(if e.upper { upper } else { lower }) = v;
+            match out.to_mut().get_mut(k) {
+                Some(OutputTerm::Integral { lower, upper, .. }) => {
+                    *(if e.upper { upper } else { lower }) = v;
+                }
+                Some(OutputTerm::Point { at, .. }) => *at = v,
+                _ => {}
             }
         }
         out
+    }
+
+    /// Whether a moving end's site is the position of a point value (of
+    /// an output or side condition) rather than an integration limit.
+    fn is_point_position(&self, site: EndSite) -> bool {
+        let term = match site {
+            EndSite::Output { output, term } => {
+                self.sys.outputs.get(output).and_then(|o| o.terms.get(term))
+            }
+            EndSite::Condition { condition, term } => self
+                .sys
+                .conditions
+                .get(condition)
+                .and_then(|c| c.terms.get(term)),
+            EndSite::Operator { .. } => None,
+        };
+        matches!(term, Some(OutputTerm::Point { .. }))
     }
 
     /// The terms of side condition `i` at the slot values `vars`

@@ -33,6 +33,7 @@
 //! singular p at (a)- ~ B*(x/sqrt(a^2 - (x^2)))
 //! condition B = 0
 //! output P = 2*pi*int(0..2) x*p(x) dx
+//! output p_half = p(a/2)
 //! ```
 
 // Literals are printed to read back bit for bit; some may look like
@@ -44,9 +45,9 @@ use std::sync::Arc;
 use lambdamat::standalone::Limits::Upper;
 use lambdamat::standalone::Singularity::AbelSqrt;
 use lambdamat::standalone::{
-    CompiledEquation, CompiledOutput, CompiledSystem, Operator, OutputTerm, PlanError, RFunc,
-    RealFn, Scalar, SplitCondition, SplitContact, SplitInequality, SplitInput, SplitInterval,
-    SplitKind, SplitLinTerm, SplitRelation, SplitSingular, real_pow, words,
+    CompiledEquation, CompiledOutput, CompiledSystem, EndSite, Operator, OutputTerm, PlanError,
+    RFunc, RealFn, Scalar, SplitCondition, SplitContact, SplitEnd, SplitInequality, SplitInput,
+    SplitInterval, SplitKind, SplitLinTerm, SplitRelation, SplitSingular, real_pow, words,
 };
 
 /// Operator `k1`, kernel `t/sqrt(t^2 - x^2)`: its smooth factor a(x, t) with kernel = a(x, t)/√|t² - x²|.
@@ -85,12 +86,21 @@ pub fn system() -> Result<CompiledSystem, PlanError> {
         name: "P".into(),
         terms: vec![output_1_term_1],
     };
+    let output_2_term_1 = OutputTerm::Point {
+        coeff: 1.0,
+        at: 2.0,
+        unknown: 0,
+    };
+    let output_2 = CompiledOutput {
+        name: "p_half".into(),
+        terms: vec![output_2_term_1],
+    };
     let sys = CompiledSystem {
         symbols: vec!["k1".into()],
         operators: vec![Some(op_k1)],
         unknowns: vec!["p".into()],
         equations: vec![equation_1],
-        outputs: vec![output_1],
+        outputs: vec![output_1, output_2],
         conditions: Vec::new(),
         target: 0,
         principal: None,
@@ -126,6 +136,11 @@ fn const_1(_v: &[f64], _x: f64) -> f64 {
 /// Singular declaration 1, singular term: `x/sqrt(a^2 - (x^2))`.
 fn singular_1_term(v: &[f64], x: f64) -> f64 {
     x / RFunc::Sqrt.apply(real_pow(v[0], 2.0) - real_pow(x, 2.0))
+}
+
+/// Integration limit or point-value position 1 (it uses a scalar): `a/2`.
+fn end_1(v: &[f64], _x: f64) -> f64 {
+    v[0] / 2.0
 }
 
 /// The split-domain problem, ready for `lambdamat::standalone::split_solver_main`.
@@ -193,7 +208,11 @@ pub fn input() -> Result<SplitInput, PlanError> {
             value: RealFn::new(const_0),
         }],
         estimates: vec![None],
-        ends: Vec::new(),
+        ends: vec![SplitEnd {
+            site: EndSite::Output { output: 1, term: 0 },
+            upper: true,
+            value: RealFn::new(end_1),
+        }],
     };
     let sys = system()?;
     Ok(SplitInput { sys, contact })

@@ -170,7 +170,7 @@ fn singular_1_term(v: &[f64], x: f64) -> f64 {
     x / RFunc::Sqrt.apply(real_pow(v[0], 2.0) - real_pow(x, 2.0))
 }
 
-/// Integration limit 4 (it uses a scalar): `a/2`.
+/// Integration limit or point-value position 4 (it uses a scalar): `a/2`.
 fn end_4(v: &[f64], _x: f64) -> f64 {
     v[0] / 2.0
 }
