@@ -211,6 +211,15 @@ pub struct SingularTerm {
     pub phi: Vec<f64>,
 }
 
+impl SingularTerm {
+    /// Whether `other` is a term of the same unknown at the same point and
+    /// side: the group whose first term takes the one-sided limit row and
+    /// the others extra collocation rows.
+    fn shares_point(&self, other: &SingularTerm) -> bool {
+        self.unknown == other.unknown && self.at == other.at && self.side == other.side
+    }
+}
+
 /// A discrete solution at fixed scalars.
 pub struct Discrete {
     /// The slot values (scalars, then real parameters).
@@ -1107,7 +1116,7 @@ impl SplitProblem {
             let row = r0 + ti;
             let rank = terms[..ti]
                 .iter()
-                .filter(|u| u.unknown == t.unknown && u.at == t.at && u.side == t.side)
+                .filter(|u| u.shares_point(t))
                 .count();
             let limit = rank == 0;
             let k = if t.side < 0 {
@@ -1534,7 +1543,7 @@ impl SplitProblem {
             let shared = d
                 .terms
                 .iter()
-                .filter(|u| u.unknown == t.unknown && u.at == t.at && u.side == t.side)
+                .filter(|u| u.shares_point(t))
                 .count()
                 > 1;
             return shared.then(|| rounding_floor(d.cond) * d.solution[dim + i].abs().max(1.0));
