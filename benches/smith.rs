@@ -209,7 +209,8 @@ fn trailing(c: &mut Criterion) {
 /// (Hermite certificate with the local pivots moved last) and the 2×2 with
 /// one huge coefficient (D alone from the adjugate), and the 4×4 of
 /// 45-digit rationals (integer Hermite route on up to 4 096 word primes,
-/// with U and V). Criterion's "time" is
+/// with U and V; product-tree CRT), the 6×6 of 60-digit rationals (D alone:
+/// U's rows would need more primes than that). Criterion's "time" is
 /// process CPU time per call. `cargo bench --bench smith -- smith_stall`.
 fn stall(c: &mut Criterion) {
     let mut g = c.benchmark_group("smith_stall");
@@ -225,6 +226,7 @@ fn stall(c: &mut Criterion) {
         "sparse_24_e24",
         "bigc_2_d50",
         "bigq_4_d2",
+        "bigq_6_d2",
     ] {
         let a = first_matrix(&format!("benches/data/issue29_{case}.lmx"));
         g.bench_function(case, |b| b.iter_custom(|iters| cpu_time_of(iters, &a)));

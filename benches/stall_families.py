@@ -195,10 +195,12 @@ def pari_like(cmd, prog, timeout, pari):
         if p.returncode < 0:
             return {"cpu": None}
         return {"cpu": None, "error": (p.stderr or p.stdout)[-2000:]}
-    if pari:
-        degs = [int(x) for x in lines[1].strip("[]").split(",") if x.strip()]
-    else:
-        degs = [int(x) for x in lines[1].split()]
+    toks = lines[1].strip("[]").split(",") if pari else lines[1].split()
+    try:
+        degs = [int(x) for x in toks if x.strip()]
+    except ValueError:
+        # e.g. Singular prints "?" for a diagonal entry it could not read.
+        return {"cpu": None, "error": "unreadable degrees: " + lines[1][:200]}
     return {"cpu": int(lines[0]) / 1000.0, "degs": sorted(d for d in degs if d >= 0)}
 
 

@@ -9,6 +9,7 @@
 //! polynomials or signs.
 
 use num_bigint::BigUint;
+use num_integer::Integer;
 
 /// 10^19, the largest power of ten below 2^64; its top bit is set, so it
 /// is already normalised for the reciprocal division.
@@ -58,8 +59,71 @@ fn chunk_digits(mut c: u64, buf: &mut [u8]) {
     buf[0] = b'0' + c as u8;
 }
 
+/// Above this many limbs, [`write_nat`] splits the number by powers
+/// `10^(19·2^j)` (num-bigint's subquadratic division) instead of dividing
+/// every limb by 10^19 once per chunk, which is quadratic.
+const SPLIT_LIMBS: usize = 40;
+
+/// Widths (in 19-digit chunks) up to this are written by the chunk loop.
+const SPLIT_BASE_CHUNKS: usize = 32;
+
+thread_local! {
+    /// `10^(19·2^j)` for j = 0, 1, …, as far as printing has needed.
+    static POWERS: std::cell::RefCell<Vec<BigUint>> = const { std::cell::RefCell::new(Vec::new()) };
+}
+
 /// Appends the decimal text of `n` (as `n.to_string()` gives it).
 pub fn write_nat(out: &mut String, n: &BigUint) {
+    if n.iter_u64_digits().len() > SPLIT_LIMBS {
+        POWERS.with(|cache| {
+            let mut powers = cache.borrow_mut();
+            if powers.is_empty() {
+                powers.push(BigUint::from(BASE));
+            }
+            // Up to the first power above n.
+            while powers.last().is_some_and(|p| p <= n) {
+                let sq = powers.last().map(|p| p * p).unwrap_or_default();
+                powers.push(sq);
+            }
+            write_split(out, n, &powers);
+        });
+        return;
+    }
+    write_small(out, n);
+}
+
+/// `n > 0` (with `n < powers.last()`): the digits above the largest power
+/// `P_j ≤ n` unpadded, those below it padded to its width.
+fn write_split(out: &mut String, n: &BigUint, powers: &[BigUint]) {
+    if n.iter_u64_digits().len() <= SPLIT_LIMBS {
+        write_small(out, n);
+        return;
+    }
+    let j = powers.iter().rposition(|p| p <= n).unwrap_or(0);
+    let (q, r) = n.div_rem(&powers[j]);
+    write_split(out, &q, powers);
+    write_padded(out, &r, j, powers);
+}
+
+/// `v < 10^(19·2^j)` as exactly 19·2^j digits.
+fn write_padded(out: &mut String, v: &BigUint, j: usize, powers: &[BigUint]) {
+    let width = 19usize << j;
+    if (1usize << j) <= SPLIT_BASE_CHUNKS {
+        let start = out.len();
+        write_small(out, v);
+        let written = out.len() - start;
+        if written < width {
+            out.insert_str(start, &"0".repeat(width - written));
+        }
+        return;
+    }
+    let (hi, lo) = v.div_rem(&powers[j - 1]);
+    write_padded(out, &hi, j - 1, powers);
+    write_padded(out, &lo, j - 1, powers);
+}
+
+/// [`write_nat`] by one division of all limbs per 19-digit chunk.
+fn write_small(out: &mut String, n: &BigUint) {
     const STACK: usize = 16;
     let len = n.iter_u64_digits().len();
     if len <= 1 {
@@ -171,7 +235,36 @@ mod tests {
         assert_eq!(s, format!("x = {}", ten.pow(25)));
     }
 
+    /// Numbers long enough to be split by powers of 10^19, with runs of
+    /// zero digits at the split points and below them.
+    #[test]
+    fn long_naturals_print_as_display() {
+        let ten = BigUint::from(10u32);
+        let mut checked = 0;
+        for k in [19 * 42, 850, 19 * 64, 19 * 128, 19 * 129 + 7, 5_000, 19 * 512, 20_000] {
+            let p = ten.pow(k);
+            let q = ten.pow(k / 2 + 3);
+            for n in [&p - 1u32, p.clone(), &p + 1u32, &p + &q, &p * 7u32 + 3u32, &p * &q - 1u32] {
+                assert!(n.iter_u64_digits().len() > SPLIT_LIMBS);
+                assert_eq!(text(&n), n.to_string(), "10^{k}");
+                checked += 1;
+            }
+        }
+        assert_eq!(checked, 48);
+    }
+
     proptest! {
+        #[test]
+        fn random_long_naturals_print_as_display(limbs in proptest::collection::vec(any::<u64>(), 41..700),
+                                                 zeros in 0usize..300) {
+            let mut l = limbs;
+            for i in 0..zeros.min(l.len() - 1) {
+                l[i] = 0;
+            }
+            let n = l.iter().rev().fold(BigUint::from(0u32), |acc, &w| (acc << 64u32) + BigUint::from(w));
+            prop_assert_eq!(text(&n), n.to_string());
+        }
+
         #[test]
         fn random_naturals_print_as_display(limbs in proptest::collection::vec(any::<u64>(), 0..14),
                                             zeros in 0usize..4) {

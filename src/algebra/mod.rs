@@ -9,6 +9,7 @@
 //! * [`kronecker`]: integer polynomial products by Kronecker substitution;
 //! * [`decimal`]: decimal text of big naturals (for printing);
 //! * [`modular`]: word-size prime fields, Z_p\[x\], Chinese remainders;
+//! * [`crt`]: Chinese remaindering over many word primes by a product tree;
 //! * [`modgcd`]: Brown's modular multivariate gcd and the modular Q\[x\] gcd;
 //! * [`ratfunc`]: the field Q(s1..sn) of reduced rational functions;
 //! * [`upoly`]: dense univariate polynomials over any field object (Q\[x\],
@@ -28,6 +29,7 @@
 //!   every command consumes (size bound, eliminant, ordered elimination,
 //!   commuted pairs).
 
+pub mod crt;
 pub mod decimal;
 pub mod derivation;
 pub mod eliminate;

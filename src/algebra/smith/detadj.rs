@@ -237,6 +237,9 @@ fn image(f: Fp, m: &[Vec<IntPoly>], deg: usize) -> Option<(Vec<u64>, Vec<Vec<u64
 /// `m = Π ps` (the inverses and the products are computed once).
 pub struct Garner {
     ps: Vec<Fp>,
+    /// From [`TREE_MIN`] primes on, the product-tree reconstruction
+    /// (the `inv` table is then empty).
+    tree: Option<crate::algebra::crt::CrtTree>,
     /// `inv[i][j] = ps[j]⁻¹ mod ps[i]` (prepared), `j < i`.
     inv: Vec<Vec<u64>>,
     /// `m = Π ps`.
@@ -246,9 +249,27 @@ pub struct Garner {
     half_limbs: Vec<u64>,
 }
 
+/// From this many primes on, [`Garner`] reconstructs by the product tree
+/// of [`crate::algebra::crt`] (O(k²) mixed-radix digits give way to a few
+/// subquadratic products per level). Measured per value: equal at 16–24
+/// primes, the tree 1.4× faster at 32, 2.4× at 128, 5.4× at 1 500 (and
+/// 10× faster to set up there).
+pub const TREE_MIN: usize = 32;
+
 impl Garner {
     /// The basis of the primes `ps` (distinct).
     pub fn new(ps: &[Fp]) -> Self {
+        if ps.len() >= TREE_MIN {
+            let tree = crate::algebra::crt::CrtTree::new(ps);
+            return Garner {
+                ps: ps.to_vec(),
+                inv: Vec::new(),
+                m: tree.m.clone(),
+                m_limbs: Vec::new(),
+                half_limbs: Vec::new(),
+                tree: Some(tree),
+            };
+        }
         let inv = (0..ps.len())
             .map(|i| {
                 (0..i)
@@ -260,6 +281,7 @@ impl Garner {
         let half = &m >> 1u32;
         Garner {
             ps: ps.to_vec(),
+            tree: None,
             inv,
             m_limbs: m.magnitude().to_u64_digits(),
             half_limbs: half.magnitude().to_u64_digits(),
@@ -269,6 +291,9 @@ impl Garner {
 
     /// The integer in `(−m/2, m/2]` with the residues `res` (one per prime).
     pub fn lift(&self, res: &[u64]) -> BigInt {
+        if let Some(tree) = &self.tree {
+            return tree.lift(res);
+        }
         let k = res.len();
         debug_assert_eq!(k, self.ps.len());
         let mut v = [0u64; 32];

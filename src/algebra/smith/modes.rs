@@ -720,7 +720,18 @@ fn one_symbol(
             }
             (d, NONSINGULAR_ALGORITHM)
         }
-        Some(FastPath::FormOnly { c, b, bits }) => {
+        Some(FastPath::FormOnly { c, b, bits, primes }) => {
+            let digits = bits as f64 * std::f64::consts::LOG10_2;
+            let omitted = match primes {
+                None => format!(
+                    "transforms omitted: U would hold about {digits:.1e} digits of coefficients (limit {:.1e})",
+                    TRANSFORM_LIMIT_BITS as f64 * std::f64::consts::LOG10_2
+                ),
+                Some(k) => format!(
+                    "transforms omitted: U's rows would need about {k} word primes to reconstruct (the modular route has {}), and the exact route stalls at that height",
+                    crate::algebra::modular::NPRIMES_LONG
+                ),
+            };
             // Without coprime entries in B that certificate fails anyway,
             // after an expensive product check.
             if super::hermite_cert::entries_coprime(&b)
@@ -731,19 +742,14 @@ fn one_symbol(
                     (&c, &b),
                     &ring,
                     "det and adj by images mod word primes (CRT above a proved bound); invariant factors from A·B = c·I, the gcd of B's entries and deg c",
-                    format!(
-                        "{note}; transforms omitted: U would hold about {:.1e} digits of coefficients (limit {:.1e}); the invariant factors alone are certified",
-                        bits as f64 * std::f64::consts::LOG10_2,
-                        TRANSFORM_LIMIT_BITS as f64 * std::f64::consts::LOG10_2
-                    ),
+                    format!("{note}; {omitted}; the invariant factors alone are certified"),
                     opts,
                 )
             {
                 return Ok(report);
             }
             let why = format!(
-                "{note}; transforms omitted: U would hold about {:.1e} digits of coefficients, and the (n−1)-th determinantal divisor is not 1; the invariant factors alone are certified",
-                bits as f64 * std::f64::consts::LOG10_2
+                "{note}; {omitted}, and the (n−1)-th determinantal divisor is not 1; the invariant factors alone are certified"
             );
             if let Some(report) = two_factor_report(name, a, &au, &c, &b, &ring, why, opts) {
                 return Ok(report);

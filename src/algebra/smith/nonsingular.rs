@@ -155,6 +155,10 @@ pub enum FastPath {
         b: Matrix<QxRing>,
         /// Estimated size of U in bits.
         bits: u64,
+        /// When the size is within the limit but the modular route would
+        /// need this many word primes to reconstruct U's rows, beyond its
+        /// supply ([`crate::algebra::modular::NPRIMES_LONG`]).
+        primes: Option<usize>,
     },
     /// No entry of adj's last row is invertible modulo det (so
     /// `d_(n−1) ≠ 1`, or an unlucky last row): `A·B = c·I` as in
@@ -314,9 +318,20 @@ pub fn try_fast_parts(a: &Matrix<QxRing>, limit_bits: u64) -> Option<FastParts> 
         ))));
     }
     let bits = transform_bits(det_q.num(), &adj_t);
-    if bits > limit_bits {
+    // Beyond the prime supply the integer route cannot finish, and the
+    // exact one (extended Euclid over Q[x] on coefficients of that height)
+    // stalls: bigq_6_d2, 6×6 of degree 2 with 60-digit rationals, needs
+    // about 6 900 primes and ran over 60 s.
+    let primes = super::small::h_primes_estimate(det_q.num());
+    if bits > limit_bits || primes > crate::algebra::modular::NPRIMES_LONG {
         let b = scaled_adjugate(&r, &adj_t, &delta);
-        return Some(FastParts::Path(FastPath::FormOnly { c: det_q, b, bits }));
+        let primes = (bits <= limit_bits).then_some(primes);
+        return Some(FastParts::Path(FastPath::FormOnly {
+            c: det_q,
+            b,
+            bits,
+            primes,
+        }));
     }
     if let Some(parts) = super::small::small_parts(a, det_q.num(), &adj_t, &delta) {
         return Some(FastParts::Small(SmallFast {

@@ -170,6 +170,20 @@ fn h_image(f: Fp, det: &[BigInt], adj: &[Vec<IntPoly>], order: &[usize]) -> Opti
     Some(HImage { f, h })
 }
 
+/// The number of word primes (61 bits each) from which h is first
+/// reconstructed. Measured on random dense inputs (n = 8, 12; degree 1–3),
+/// h's numerators and common denominator each have 0.84–0.94·(N − 1)·b
+/// bits, b the bits of det's coefficients and N = deg det, so
+/// reconstruction needs 1.7–1.9·(N − 1)·b bits. It is first tried at
+/// 1.8·(N − 1)·b: a failed attempt costs a whole Euclid on the lifted value
+/// (at n = 8, d = 3 about eight images' work), a late one only a few
+/// images. Beyond [`modular::NPRIMES_LONG`] the route cannot succeed.
+pub fn h_primes_estimate(det: &[BigInt]) -> usize {
+    let big_n = det.len().saturating_sub(1);
+    let detbits = det.iter().map(|c| c.bits()).max().unwrap_or(0) as usize;
+    (9 * big_n.saturating_sub(1) * detbits).div_ceil(5 * 61)
+}
+
 /// The rational vectors `h_i` (numerators, positive denominator, not yet
 /// in lowest terms) from images modulo word primes: rational
 /// reconstruction over the first k primes, accepted when the next prime's
@@ -181,15 +195,7 @@ fn reconstruct_h(
     adj: &[Vec<IntPoly>],
     order: &[usize],
 ) -> Option<Vec<(Vec<BigInt>, BigInt)>> {
-    // Measured on random dense inputs (n = 8, 12; degree 1–3), h's
-    // numerators and common denominator each have 0.84–0.94·(N − 1)·b
-    // bits, b the bits of det's coefficients, so reconstruction needs
-    // 1.7–1.9·(N − 1)·b bits. It is first tried at 1.8·(N − 1)·b: a failed
-    // attempt costs a whole Euclid on the lifted value (at n = 8, d = 3
-    // about eight images' work), a late one only a few images.
-    let big_n = det.len() - 1;
-    let detbits = det.iter().map(|c| c.bits()).max().unwrap_or(0) as usize;
-    let first_try = (9 * big_n.saturating_sub(1) * detbits).div_ceil(5 * 61);
+    let first_try = h_primes_estimate(det);
     let mut images: Vec<HImage> = Vec::new();
     let mut next_try = first_try.max(1);
     let mut unlucky = 0;
