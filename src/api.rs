@@ -492,8 +492,9 @@ impl Problem {
     /// The Rust source of a standalone solver for the system, solving for
     /// `target` (default as in [`Problem::reduce`]): what `lambdamat
     /// codegen` writes. The system must pass the input checks `solve`
-    /// makes (a short solve on the first levels runs them; only their
-    /// input errors refuse it).
+    /// makes (the first level, assembled and solved once, runs them; with
+    /// unknown scalars a short solve on the first levels; only their input
+    /// errors refuse it).
     ///
     /// ```
     /// let p = lambdamat::Problem::from_file("examples/mms.lmx")?;
@@ -519,9 +520,15 @@ impl Problem {
             crate::codegen::solver_source(prog, target, &from).map_err(|e| self.located(e))?;
         // The solver's input checks (intervals, scalars against
         // conditions, operators) run when its problem is made; those of the
-        // numerics (right sides finite at the nodes, …) on a short solve.
+        // numerics (right sides finite at the nodes, …) on the first level,
+        // or with unknown scalars on a short solve.
         let input = SplitInput::for_target(prog, target).map_err(|e| self.located(e))?;
-        crate::plan::split::SplitProblem::from_input(input).map_err(|e| self.located(e))?;
+        match crate::plan::split_solve::check_inputs(input) {
+            Ok(true) => return Ok(code),
+            Err(e) if e.is_input_error() => return Err(self.located(e)),
+            Err(_) => return Ok(code),
+            Ok(false) => {}
+        }
         let quick = crate::report::SolveSettings {
             tol: 1.0,
             max_level: 1,

@@ -349,6 +349,22 @@ pub fn solve_split_within(
     Ok(sol)
 }
 
+/// The numeric input checks of a solve (right sides and kernels finite at
+/// the nodes, …) without the ladder, for a file without unknown scalars:
+/// level 0 assembled with the declared ends (no automatic end weights, whose
+/// trials solve the whole system some ten times over) and solved once.
+/// `Ok(false)` when the file has unknown scalars (their root solve is the
+/// ladder's, so the caller runs a short solve instead); any error of the
+/// level is returned, the caller keeps its input errors.
+pub fn check_inputs(input: SplitInput) -> Result<bool, PlanError> {
+    let problem = SplitProblem::from_input(input)?;
+    if !problem.contact.scalars.is_empty() {
+        return Ok(false);
+    }
+    problem.discretise(&[], &SplitLevel::level(0))?;
+    Ok(true)
+}
+
 /// [`solve_split_within`] without the uniqueness check.
 fn solve_split_ladder(
     input: SplitInput,
