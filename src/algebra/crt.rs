@@ -90,11 +90,11 @@ impl CrtTree {
             let start = lo * BLOCK;
             let end = (start + BLOCK).min(self.ps.len());
             let mut acc = [0u64; BLOCK + 1];
-            for i in start..end {
-                let f = self.ps[i];
-                let v = f.mul_pre(self.c[i], res[i]);
+            let leaf = (&self.ps[start..end], &self.c[start..end], &self.cof[start..end]);
+            for (((f, &c), cof), &r) in leaf.0.iter().zip(leaf.1).zip(leaf.2).zip(&res[start..end]) {
+                let v = f.mul_pre(c, r);
                 let mut carry = 0u128;
-                for (a, &w) in acc.iter_mut().zip(self.cof[i].iter()) {
+                for (a, &w) in acc.iter_mut().zip(cof.iter()) {
                     let t = *a as u128 + v as u128 * w as u128 + carry;
                     *a = t as u64;
                     carry = t >> 64;
@@ -198,13 +198,7 @@ mod tests {
     #[test]
     fn tree_lift_is_the_symmetric_crt_value() {
         let all: Vec<Fp> = long_primes().take(300).map(Fp::new).collect();
-        let mut seed = 17u64;
-        let mut next = || {
-            seed = seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            seed
-        };
+        let mut next = crate::algebra::modular::lcg(17);
         let mut checked = 0;
         for k in [1, 2, 15, 16, 17, 31, 32, 33, 64, 100, 255, 300] {
             let tree = CrtTree::new(&all[..k]);

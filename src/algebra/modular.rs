@@ -175,6 +175,18 @@ pub fn primes() -> impl Iterator<Item = u64> {
 /// How many primes [`long_primes`] offers (about 250 000 bits).
 pub const NPRIMES_LONG: usize = 4096;
 
+/// A seeded 64-bit linear congruential generator (Knuth's MMIX
+/// constants): the tests' reproducible random words.
+#[cfg(test)]
+pub(crate) fn lcg(mut seed: u64) -> impl FnMut() -> u64 {
+    move || {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        seed
+    }
+}
+
 /// [`primes`] continued to [`NPRIMES_LONG`] primes, for the routes whose
 /// size estimate is known before the first image (the generic Hermite
 /// route's h and U rows, `smith::small`): a row-scaled matrix of
@@ -661,13 +673,8 @@ mod tests {
     #[test]
     fn pseudo_remainder_inverse_is_the_inverse() {
         let f = Fp::new(prime(0).expect("a prime"));
-        let mut seed = 17u64;
-        let mut next = || {
-            seed = seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            seed >> 2
-        };
+        let mut word = lcg(17);
+        let mut next = || word() >> 2;
         let (mut inverted, mut refused) = (0, 0);
         for round in 0..300 {
             let dm = 1 + round % 9;

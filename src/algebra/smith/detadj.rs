@@ -515,13 +515,7 @@ mod tests {
     #[test]
     fn garner_lift_is_the_symmetric_crt_value() {
         let ps: Vec<Fp> = primes().take(5).map(Fp::new).collect();
-        let mut seed = 9u64;
-        let mut next = || {
-            seed = seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            seed
-        };
+        let mut next = crate::algebra::modular::lcg(9);
         let mut checked = 0;
         for k in 1..=5 {
             let basis = Garner::new(&ps[..k]);
