@@ -56,7 +56,7 @@ impl CrtTree {
         build(ps, &cof, &mut nodes, 0, 0, leaves);
         // (M/M_N) mod M_N down the tree; at a leaf, times M_leaf/mᵢ mod mᵢ.
         let mut c = vec![0u64; ps.len()];
-        descend(ps, &cof, &nodes, &mut c, 0, 0, leaves, BigUint::one());
+        descend(ps, &nodes, &mut c, 0, 0, leaves, BigUint::one());
         let m = nodes[0].clone();
         CrtTree {
             ps: ps.to_vec(),
@@ -148,10 +148,8 @@ fn build(ps: &[Fp], cof: &[[u64; BLOCK]], nodes: &mut [BigUint], idx: usize, lo:
 
 /// With `r = (M/M_N) mod M_N` at node `idx`, sets `c[i] = (M/mᵢ)⁻¹ mod mᵢ`
 /// (prepared) for the primes under it.
-#[allow(clippy::too_many_arguments)]
 fn descend(
     ps: &[Fp],
-    cof: &[[u64; BLOCK]],
     nodes: &[BigUint],
     c: &mut [u64],
     idx: usize,
@@ -163,14 +161,15 @@ fn descend(
         let start = lo * BLOCK;
         let end = (start + BLOCK).min(ps.len());
         let r = BigInt::from_biguint(Sign::Plus, r);
-        for i in start..end {
-            let f = ps[i];
-            let own = cof[i].iter().rev().fold(0u64, |acc, &d| {
-                // acc·2^64 + d mod p, as Fp::reduce does it.
-                f.add(f.mul(acc, two64(f)), d % f.p)
-            });
-            let whole = f.mul(f.reduce(&r), own);
-            c[i] = f.prep(f.inv(whole));
+        let leaf = &ps[start..end];
+        for (i, f) in leaf.iter().enumerate() {
+            // M_leaf/mᵢ mod mᵢ: the leaf's other primes.
+            let own = leaf
+                .iter()
+                .enumerate()
+                .filter(|&(j, _)| j != i)
+                .fold(1u64, |acc, (_, g)| f.mul(acc, g.p % f.p));
+            c[start + i] = f.prep(f.inv(f.mul(f.reduce(&r), own)));
         }
         return;
     }
@@ -178,13 +177,8 @@ fn descend(
     let (li, ri) = (idx + 1, idx + 2 * (mid - lo));
     let rl = (&r * &nodes[ri]) % &nodes[li];
     let rr = (r * &nodes[li]) % &nodes[ri];
-    descend(ps, cof, nodes, c, li, lo, mid, rl);
-    descend(ps, cof, nodes, c, ri, mid, hi, rr);
-}
-
-/// 2^64 mod p.
-fn two64(f: Fp) -> u64 {
-    ((1u128 << 64) % f.p as u128) as u64
+    descend(ps, nodes, c, li, lo, mid, rl);
+    descend(ps, nodes, c, ri, mid, hi, rr);
 }
 
 #[cfg(test)]

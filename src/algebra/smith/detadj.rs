@@ -236,9 +236,10 @@ fn image(f: Fp, m: &[Vec<IntPoly>], deg: usize) -> Option<(Vec<u64>, Vec<Vec<u64
 /// residues `res[k] mod ps[k]` give the integer in the symmetric range of
 /// `m = Π ps` (the inverses and the products are computed once).
 pub struct Garner {
+    /// The primes (empty when `tree` holds them).
     ps: Vec<Fp>,
     /// From [`TREE_MIN`] primes on, the product-tree reconstruction
-    /// (the `inv` table is then empty).
+    /// (`ps`, `inv` and the limbs are then empty).
     tree: Option<crate::algebra::crt::CrtTree>,
     /// `inv[i][j] = ps[j]⁻¹ mod ps[i]` (prepared), `j < i`.
     inv: Vec<Vec<u64>>,
@@ -262,7 +263,7 @@ impl Garner {
         if ps.len() >= TREE_MIN {
             let tree = crate::algebra::crt::CrtTree::new(ps);
             return Garner {
-                ps: ps.to_vec(),
+                ps: Vec::new(),
                 inv: Vec::new(),
                 m: tree.m.clone(),
                 m_limbs: Vec::new(),
