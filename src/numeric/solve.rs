@@ -18,9 +18,18 @@ pub const DEFAULT_MAX_COND: f64 = 1e13;
 /// Above this (1-norm) condition estimate a square system's singular
 /// values are computed to look for a null direction ([`null_direction`]).
 const NULL_PROBE: f64 = 1e8;
-/// Largest system whose singular values the probe computes (the SVD costs
-/// a few LU factorisations; beyond this the conditioning limit alone acts).
+/// Largest system whose full singular values the probe computes when the
+/// iterations of [`extreme_singular_values`] do not settle (the SVD costs
+/// several LU factorisations; beyond this the conditioning limit alone
+/// acts).
 const NULL_PROBE_SIZE: usize = 1500;
+/// How many of the smallest singular values the probe iterates on (two are
+/// needed; the others speed up the second one's convergence).
+const PROBE_BLOCK: usize = 4;
+/// Relative change of successive estimates at which the probe stops.
+const PROBE_SETTLED: f64 = 1e-4;
+/// Most iterations of each of the probe's two iterations.
+const PROBE_ITERATIONS: usize = 80;
 /// A smallest singular value below this fraction of the largest ...
 pub(crate) const NULL_SMALLEST: f64 = 1e-10;
 /// ... and below this fraction of the next one, ...
@@ -48,6 +57,87 @@ pub fn null_direction(singular_values: &[f64]) -> Option<(f64, f64)> {
         && *smallest < NULL_GAP * next
         && *next > NULL_NEXT * largest)
         .then(|| (smallest / largest, next / largest))
+}
+
+/// The largest and the [`PROBE_BLOCK`] smallest singular values of
+/// `S = A·diag(scale)` from the factors of `S` at hand, for
+/// [`null_direction`]: the largest by power iteration on `SᵀS`, the
+/// smallest by subspace iteration with `(S Sᵀ)⁻¹` through the factors and
+/// the singular values of `S⁻¹X` on the iterated orthonormal block `X`
+/// (Ritz values: each estimate of a small singular value is at least the
+/// true one, each approaches it as the block settles). Costs a few dozen
+/// triangular solves with `PROBE_BLOCK` right sides, against the full SVD's
+/// several factorisations. It stops as soon as the smallest value has
+/// settled above twice the null threshold (no null direction, whatever the
+/// next value is), else when the two smallest have settled. `None` for a system of at most twice the block
+/// (its full SVD is as cheap), when an estimate is not finite, or when the
+/// small ones did not settle within [`PROBE_ITERATIONS`].
+fn extreme_singular_values(a: &DMatrix<f64>, scale: &[f64], lu: &DenseLu) -> Option<Vec<f64>> {
+    let n = scale.len();
+    if n <= 2 * PROBE_BLOCK {
+        return None;
+    }
+    let d = DVector::from_column_slice(scale);
+    // Largest: ‖S x‖ for the power iterate x of SᵀS (from below).
+    let mut x = DVector::from_fn(n, |i, _| 1.0 + (i % 7) as f64 / 7.0);
+    x /= x.norm();
+    let mut largest = 0.0;
+    for _ in 0..PROBE_ITERATIONS {
+        let y = a * x.component_mul(&d);
+        let est = y.norm();
+        let z = (a.tr_mul(&y)).component_mul(&d);
+        let zn = z.norm();
+        if !est.is_finite() || !zn.is_finite() || zn == 0.0 {
+            return None;
+        }
+        x = z / zn;
+        let settled = (est - largest).abs() <= PROBE_SETTLED * est;
+        largest = est;
+        if settled {
+            break;
+        }
+    }
+    // Smallest: subspace iteration with (S Sᵀ)⁻¹ = S⁻ᵀ S⁻¹.
+    let b = PROBE_BLOCK.min(n);
+    let mut seed = 0x5eed_u64 ^ n as u64;
+    let start = DMatrix::from_fn(n, b, |_, _| {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+    });
+    let mut q = start.qr().q();
+    let mut prev: Vec<f64> = Vec::new();
+    for _ in 0..PROBE_ITERATIONS {
+        let mut y = q.clone();
+        lu.solve_many(&mut y);
+        let mut ritz: Vec<f64> = y.clone().singular_values().iter().map(|v| 1.0 / v).collect();
+        ritz.sort_by(f64::total_cmp);
+        if ritz.iter().any(|v| !v.is_finite()) {
+            return None;
+        }
+        let close = |i: usize| prev.len() == ritz.len() && (ritz[i] - prev[i]).abs() <= PROBE_SETTLED * ritz[i];
+        // A settled smallest value well above the null threshold decides
+        // the test whatever the next one is.
+        let decided = close(0) && ritz[0] > 2.0 * NULL_SMALLEST * largest;
+        if decided || (close(0) && close(1.min(b - 1))) {
+            let mut sv = vec![largest];
+            sv.extend(ritz);
+            return Some(sv);
+        }
+        prev = ritz;
+        let m = y.amax();
+        if !(m.is_finite() && m > 0.0) {
+            return None;
+        }
+        y /= m;
+        lu.solve_transpose_many(&mut y);
+        if y.iter().any(|v| !v.is_finite()) {
+            return None;
+        }
+        q = y.qr().q();
+    }
+    None
 }
 
 /// An LU factorisation of `A·D` (`D` scales columns to unit max-norm) that
@@ -95,12 +185,19 @@ impl CheckedLu {
         };
         let inv_norm = me.inverse_norm1_estimate();
         let cond = norm1 * inv_norm;
-        if (cond.is_nan() || cond > NULL_PROBE) && n <= NULL_PROBE_SIZE {
-            let mut s = a.clone();
-            for (j, sc) in me.scale.iter().enumerate() {
-                s.column_mut(j).scale_mut(*sc);
-            }
-            if let Some((smallest, next)) = null_direction(s.singular_values().as_slice()) {
+        if cond.is_nan() || cond > NULL_PROBE {
+            let sv = match extreme_singular_values(a, &me.scale, &me.lu) {
+                Some(sv) => sv,
+                None if n <= NULL_PROBE_SIZE => {
+                    let mut s = a.clone();
+                    for (j, sc) in me.scale.iter().enumerate() {
+                        s.column_mut(j).scale_mut(*sc);
+                    }
+                    s.singular_values().as_slice().to_vec()
+                }
+                None => Vec::new(),
+            };
+            if let Some((smallest, next)) = null_direction(&sv) {
                 return Err(NumericError::NullSpace {
                     size: n,
                     smallest,
@@ -148,6 +245,17 @@ impl CheckedLu {
     pub fn solve_transpose(&self, b: &DVector<f64>) -> DVector<f64> {
         let db = DVector::from_iterator(b.len(), b.iter().zip(&self.scale).map(|(v, s)| v * s));
         self.lu.solve_transpose(&db)
+    }
+
+    /// Solves `Aᵀ X = B` in place for every column of `x`, each column
+    /// exactly as [`CheckedLu::solve_transpose`] solves it.
+    pub fn solve_transpose_many(&self, x: &mut DMatrix<f64>) {
+        for mut col in x.column_iter_mut() {
+            for (v, s) in col.iter_mut().zip(&self.scale) {
+                *v *= s;
+            }
+        }
+        self.lu.solve_transpose_many(x);
     }
 
     /// Solves `A X = B` column by column.
@@ -430,6 +538,104 @@ mod tests {
         assert!(null_direction(&[1.0, 0.5, 1e-13]).is_some());
         assert_eq!(null_direction(&[1.0, 1e-9, 1e-13]), None);
         assert_eq!(null_direction(&[1.0, 0.5, 1e-9]), None);
+    }
+
+    /// `U·diag(sv)·Vᵀ` with orthogonal `U`, `V` from seeded QRs.
+    fn with_spectrum(sv: &[f64], seed: u64) -> DMatrix<f64> {
+        let n = sv.len();
+        let mut state = seed;
+        let mut orth = || {
+            let m = DMatrix::from_fn(n, n, |_, _| {
+                state = state
+                    .wrapping_mul(6364136223846793005)
+                    .wrapping_add(1442695040888963407);
+                (state >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+            });
+            m.qr().q()
+        };
+        let (u, v) = (orth(), orth());
+        u * DMatrix::from_diagonal(&DVector::from_column_slice(sv)) * v.transpose()
+    }
+
+    #[test]
+    fn the_probe_matches_the_full_svd() {
+        // Spectra: a planted null direction (isolated, tiny), a gap too
+        // small to count, a steady fall to rounding, two tiny values, and
+        // a well-conditioned one; plus Hilbert matrices (above twice the
+        // block, where the probe iterates).
+        let n = 60;
+        let steady: Vec<f64> = (0..n).map(|i| 10f64.powf(-14.0 * i as f64 / (n - 1) as f64)).collect();
+        let mut planted: Vec<f64> = (0..n).map(|i| 1.0 - 0.9 * i as f64 / n as f64).collect();
+        planted[n - 1] = 1e-15;
+        let mut small_gap = planted.clone();
+        small_gap[n - 1] = 1e-2;
+        let mut two = planted.clone();
+        two[n - 2] = 3e-15;
+        let flat: Vec<f64> = (0..n).map(|i| 2.0 - i as f64 / n as f64).collect();
+        // The next value near its threshold (1e-6 of the largest), on
+        // either side, above a smallest of 5e-12.
+        let near = |next: f64| {
+            let mut sv = planted.clone();
+            sv[n - 3] = 3.0 * next;
+            sv[n - 2] = next;
+            sv[n - 1] = 5e-12;
+            sv
+        };
+        let (above, below) = (near(3e-6), near(3e-7));
+        let mut cases: Vec<(DMatrix<f64>, Option<bool>)> = [
+            (&planted, Some(true)),
+            (&small_gap, Some(false)),
+            (&steady, Some(false)),
+            (&two, Some(false)),
+            (&flat, Some(false)),
+            (&above, Some(true)),
+            (&below, Some(false)),
+        ]
+            .into_iter()
+            .enumerate()
+            .map(|(k, (sv, want))| (with_spectrum(sv, 0x5eed + k as u64), want))
+            .collect();
+        for m in [10, 12, 14] {
+            cases.push((DMatrix::from_fn(m, m, |i, j| 1.0 / (i + j + 1) as f64), Some(false)));
+        }
+        let mut compared = 0;
+        for (k, (a, want)) in cases.iter().enumerate() {
+            let m = a.nrows();
+            let scale: Vec<f64> = (0..m).map(|j| 1.0 / a.column(j).amax()).collect();
+            let mut s = a.clone();
+            for (j, sc) in scale.iter().enumerate() {
+                s.column_mut(j).scale_mut(*sc);
+            }
+            let lu = DenseLu::new(s.clone()).unwrap();
+            let full = s.singular_values();
+            let Some(probe) = extreme_singular_values(a, &scale, &lu) else {
+                panic!("case {k}: the probe did not settle");
+            };
+            let decided = null_direction(&probe).is_some();
+            assert_eq!(decided, null_direction(full.as_slice()).is_some(), "case {k}");
+            if let Some(w) = want {
+                assert_eq!(decided, *w, "case {k}");
+            }
+            let mut f: Vec<f64> = full.iter().copied().collect();
+            f.sort_by(|x, y| y.total_cmp(x));
+            // From below, within a few per cent: the test's thresholds are
+            // orders of magnitude apart.
+            assert!(probe[0] <= f[0] * (1.0 + 1e-12) && probe[0] >= 0.95 * f[0], "case {k}: largest {} against {}", probe[0], f[0]);
+            // The smallest estimates are at or above the true values, and
+            // close to them where they are resolved (above rounding).
+            for (i, est) in probe[1..].iter().enumerate() {
+                let t = f[m - 1 - i];
+                assert!(*est >= t * (1.0 - 1e-6) || t < 1e-10 * f[0], "case {k}: σ {i} {est} below {t}");
+                // The next value is iterated to the end only where the
+                // smallest leaves the test open.
+                let needed = i == 0 || probe[1] <= 2.0 * NULL_SMALLEST * probe[0];
+                if t > 1e-10 * f[0] && i < 2 && needed {
+                    assert!(*est <= t * (1.0 + 1e-2), "case {k}: σ {i} {est} against {t}");
+                    compared += 1;
+                }
+            }
+        }
+        assert!(compared >= 5, "only {compared} resolved values compared");
     }
 
     #[test]

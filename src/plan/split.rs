@@ -291,6 +291,29 @@ impl Rounding {
         b.is_finite().then_some(b)
     }
 
+    /// The largest [`Rounding::bound`] over the functional rows `rows`;
+    /// `None` if one is not finite. Square factors solve the rows in
+    /// blocks (each bound the same number as [`Rounding::bound`]'s).
+    pub(super) fn worst_bound(&self, rows: &[DVector<f64>]) -> Option<f64> {
+        let Factors::Square(lu) = &self.factors else {
+            return rows.iter().try_fold(0.0f64, |w, l| Some(w.max(self.bound(l)?)));
+        };
+        let mut worst = 0.0f64;
+        for block in rows.chunks(16) {
+            let n = block[0].len();
+            let mut z = DMatrix::from_fn(n, block.len(), |i, j| block[j][i]);
+            lu.solve_transpose_many(&mut z);
+            for col in z.column_iter() {
+                let b: f64 = col.iter().zip(self.slack.iter()).map(|(z, s)| z.abs() * s).sum();
+                if !b.is_finite() {
+                    return None;
+                }
+                worst = worst.max(b);
+            }
+        }
+        Some(worst)
+    }
+
     /// `|r|·with_residual + η(|A||y| + |b|)` and `r = b − A y`.
     fn slack(
         a: &DMatrix<f64>,

@@ -928,17 +928,21 @@ fn adjoint_floors(
             if !(factor.is_finite() && floor > factor * this.unknowns[u] && fails) {
                 return None;
             }
-            let mut worst = 0.0f64;
-            for &x in &kept[u] {
-                let term = super::compiled::OutputTerm::Point {
-                    coeff: 1.0,
-                    at: x,
-                    unknown: u,
-                };
-                let (row, _) = layout.functional(&[term]).ok()?;
-                worst = worst.max(rounding.bound(&row)?);
+            let rows = kept[u]
+                .iter()
+                .map(|&x| {
+                    let term = super::compiled::OutputTerm::Point {
+                        coeff: 1.0,
+                        at: x,
+                        unknown: u,
+                    };
+                    layout.functional(&[term]).ok().map(|(row, _)| row)
+                })
+                .collect::<Option<Vec<_>>>()?;
+            if rows.is_empty() {
+                return Some(0.0);
             }
-            Some(worst)
+            rounding.worst_bound(&rows)
         })
         .collect()
 }
