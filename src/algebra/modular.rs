@@ -176,8 +176,8 @@ pub fn primes() -> impl Iterator<Item = u64> {
 pub const NPRIMES_LONG: usize = 4096;
 
 /// A seeded 64-bit linear congruential generator (Knuth's MMIX
-/// constants): the tests' reproducible random words.
-#[cfg(test)]
+/// constants): reproducible random words for the tests and for the
+/// null-direction probe's start block (`numeric::solve`).
 pub(crate) fn lcg(mut seed: u64) -> impl FnMut() -> u64 {
     move || {
         seed = seed

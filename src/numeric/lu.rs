@@ -119,37 +119,15 @@ impl DenseLu {
         self.piv.len()
     }
 
-    /// Solves `A x = b`.
+    /// Solves `A x = b` ([`DenseLu::solve_many`] with one column).
     pub fn solve(&self, b: &DVector<f64>) -> DVector<f64> {
-        let n = self.size();
-        let s = self.a.as_slice();
-        let mut x = b.clone();
-        for (k, &p) in self.piv.iter().enumerate() {
-            x.swap_rows(k, p);
-        }
-        for k in 0..n {
-            let v = x[k];
-            if v != 0.0 {
-                for i in k + 1..n {
-                    x[i] -= s[k * n + i] * v;
-                }
-            }
-        }
-        for k in (0..n).rev() {
-            x[k] /= s[k * n + k];
-            let v = x[k];
-            if v != 0.0 {
-                for i in 0..k {
-                    x[i] -= s[k * n + i] * v;
-                }
-            }
-        }
-        x
+        let mut x = DMatrix::from_column_slice(b.len(), 1, b.as_slice());
+        self.solve_many(&mut x);
+        DVector::from_column_slice(x.as_slice())
     }
 
-    /// Solves `A X = B` in place for every column of `x`, with the
-    /// arithmetic of [`DenseLu::solve`] column by column; each column of the
-    /// factors is read once for all right sides.
+    /// Solves `A X = B` in place for every column of `x`; each column of
+    /// the factors is read once for all right sides.
     pub fn solve_many(&self, x: &mut DMatrix<f64>) {
         let n = self.size();
         let s = self.a.as_slice();
@@ -183,8 +161,7 @@ impl DenseLu {
         }
     }
 
-    /// Solves `Aᵀ X = B` in place for every column of `x`, with the
-    /// arithmetic of [`DenseLu::solve_transpose`] column by column.
+    /// Solves `Aᵀ X = B` in place for every column of `x`.
     pub fn solve_transpose_many(&self, x: &mut DMatrix<f64>) {
         let n = self.size();
         let s = self.a.as_slice();
@@ -209,24 +186,12 @@ impl DenseLu {
         }
     }
 
-    /// Solves `Aᵀ x = b`.
+    /// Solves `Aᵀ x = b` ([`DenseLu::solve_transpose_many`] with one
+    /// column).
     pub fn solve_transpose(&self, b: &DVector<f64>) -> DVector<f64> {
-        let n = self.size();
-        let s = self.a.as_slice();
-        let mut x = b.clone();
-        let xs = x.as_mut_slice();
-        // Uᵀ y = b: column k of U is row k of Uᵀ.
-        for k in 0..n {
-            xs[k] = (xs[k] - dot(&s[k * n..k * n + k], &xs[..k])) / s[k * n + k];
-        }
-        // Lᵀ z = y (unit diagonal).
-        for k in (0..n).rev() {
-            xs[k] -= dot(&s[k * n + k + 1..(k + 1) * n], &xs[k + 1..]);
-        }
-        for (k, &p) in self.piv.iter().enumerate().rev() {
-            x.swap_rows(k, p);
-        }
-        x
+        let mut x = DMatrix::from_column_slice(b.len(), 1, b.as_slice());
+        self.solve_transpose_many(&mut x);
+        DVector::from_column_slice(x.as_slice())
     }
 }
 

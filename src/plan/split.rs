@@ -269,6 +269,11 @@ pub(super) struct Rounding {
     slack: DVector<f64>,
 }
 
+/// `|z|ᵀ·s`.
+fn abs_dot(z: &[f64], s: &DVector<f64>) -> f64 {
+    z.iter().zip(s.iter()).map(|(z, s)| z.abs() * s).sum()
+}
+
 /// The factors a [`Rounding`] solves with.
 enum Factors {
     Square(CheckedLu),
@@ -279,13 +284,11 @@ enum Factors {
 impl Rounding {
     /// The bound for the functional row `l`; `None` if not finite.
     pub(super) fn bound(&self, l: &DVector<f64>) -> Option<f64> {
-        let dot = |z: &DVector<f64>, s: &DVector<f64>| -> f64 {
-            z.iter().zip(s.iter()).map(|(z, s)| z.abs() * s).sum()
-        };
         let b = match &self.factors {
-            Factors::Square(lu) => dot(&lu.solve_transpose(l), &self.slack),
+            Factors::Square(lu) => abs_dot(lu.solve_transpose(l).as_slice(), &self.slack),
             Factors::LeastSquares(ls, normal) => {
-                dot(&ls.adjoint(l), &self.slack) + dot(&ls.normal_inverse(l), normal)
+                abs_dot(ls.adjoint(l).as_slice(), &self.slack)
+                    + abs_dot(ls.normal_inverse(l).as_slice(), normal)
             }
         };
         b.is_finite().then_some(b)
@@ -303,8 +306,8 @@ impl Rounding {
             let n = block[0].len();
             let mut z = DMatrix::from_fn(n, block.len(), |i, j| block[j][i]);
             lu.solve_transpose_many(&mut z);
-            for col in z.column_iter() {
-                let b: f64 = col.iter().zip(self.slack.iter()).map(|(z, s)| z.abs() * s).sum();
+            for col in z.as_slice().chunks_exact(n) {
+                let b = abs_dot(col, &self.slack);
                 if !b.is_finite() {
                     return None;
                 }

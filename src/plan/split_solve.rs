@@ -939,9 +939,6 @@ fn adjoint_floors(
                     layout.functional(&[term]).ok().map(|(row, _)| row)
                 })
                 .collect::<Option<Vec<_>>>()?;
-            if rows.is_empty() {
-                return Some(0.0);
-            }
             rounding.worst_bound(&rows)
         })
         .collect()
