@@ -74,6 +74,16 @@ pub fn gcd(a: &MPoly, b: &MPoly) -> MPoly {
     if b.is_zero() {
         return a.primitive_normal();
     }
+    // Associates (a line of one denominator, an lcm that already holds
+    // the next factor) need no gcd.
+    let same_monomials = a.terms().len() == b.terms().len()
+        && a.terms().iter().zip(b.terms()).all(|((x, _), (y, _))| x == y);
+    if same_monomials {
+        let pa = a.primitive_normal();
+        if pa == b.primitive_normal() {
+            return pa;
+        }
+    }
     let n = a.nvars();
     let v = match (a.main_var(), b.main_var()) {
         (None, _) | (_, None) => return MPoly::one(n),
@@ -142,6 +152,11 @@ pub fn gcd_cofactors(a: &MPoly, b: &MPoly) -> (MPoly, MPoly, MPoly) {
 pub fn lcm(a: &MPoly, b: &MPoly) -> MPoly {
     if a.is_zero() || b.is_zero() {
         return MPoly::zero(a.nvars());
+    }
+    // A running lcm usually holds the next factor already (a line's
+    // denominators divide one product): one exact division decides it.
+    if a.div_exact(b).is_some() {
+        return a.primitive_normal();
     }
     let g = gcd(a, b);
     (a * &b.div_exact(&g).expect("gcd divides")).primitive_normal()

@@ -319,9 +319,14 @@ impl MPoly {
         };
         let e = int_terms(d, &sd);
         let lc = &e[0].1;
-        let mut r = int_terms(self, &sa);
+        // The remainder in an ordered map: a step touches the divisor's
+        // terms only (|d|·log|r|), where rebuilding the remainder's sorted
+        // list cost |r| per quotient term (quadratic when d is small and
+        // the quotient long).
+        let mut r: BTreeMap<Monomial, BigInt> = int_terms(self, &sa).into_iter().collect();
         let mut quot: Vec<(Monomial, BigInt)> = Vec::new();
-        while let Some((rm, rc)) = r.first() {
+        let mut key: Monomial = vec![0; self.nvars];
+        while let Some((rm, rc)) = r.pop_last() {
             if !rm.iter().zip(dm).all(|(a, b)| a >= b) {
                 return None;
             }
@@ -330,7 +335,24 @@ impl MPoly {
                 return None;
             }
             let m: Monomial = rm.iter().zip(dm).map(|(a, b)| a - b).collect();
-            r = sub_shifted(&r, &e, &m, &c);
+            // The leading term cancels exactly; subtract c·x^m·(d − lt d).
+            for (em, ec) in &e[1..] {
+                for ((k, a), b) in key.iter_mut().zip(em).zip(&m) {
+                    *k = a + b;
+                }
+                let t = ec * &c;
+                match r.get_mut(key.as_slice()) {
+                    Some(v) => {
+                        *v -= t;
+                        if v.is_zero() {
+                            r.remove(key.as_slice());
+                        }
+                    }
+                    None => {
+                        r.insert(key.clone(), -t);
+                    }
+                }
+            }
             quot.push((m, c));
         }
         let back = &sd / &sa;
@@ -426,40 +448,6 @@ fn merge(a: &MPoly, b: &MPoly, negate_b: bool) -> MPoly {
     }
 }
 
-/// `r − c·x^m·e` for integer terms in the polynomial order (highest
-/// first): shifting by a monomial keeps the lexicographic order, so one
-/// merge suffices.
-fn sub_shifted(
-    r: &[(Monomial, BigInt)],
-    e: &[(Monomial, BigInt)],
-    m: &Monomial,
-    c: &BigInt,
-) -> Vec<(Monomial, BigInt)> {
-    let shifted = e.iter().map(|(em, ec)| {
-        let mm: Monomial = em.iter().zip(m).map(|(x, y)| x + y).collect();
-        (mm, ec * c)
-    });
-    let mut out = Vec::with_capacity(r.len() + e.len());
-    let mut i = 0;
-    for (sm, sc) in shifted {
-        while i < r.len() && r[i].0 > sm {
-            out.push(r[i].clone());
-            i += 1;
-        }
-        if i < r.len() && r[i].0 == sm {
-            let v = &r[i].1 - &sc;
-            if !v.is_zero() {
-                out.push((sm, v));
-            }
-            i += 1;
-        } else {
-            out.push((sm, -sc));
-        }
-    }
-    out.extend_from_slice(&r[i..]);
-    out
-}
-
 /// The integer numerators of `p` and the positive rational `u` with
 /// `p = numerators / u` (`u = 1` when the coefficients are integers).
 fn integer_form(p: &MPoly) -> (Vec<BigInt>, Option<Q>) {
@@ -474,8 +462,49 @@ fn integer_form(p: &MPoly) -> (Vec<BigInt>, Option<Q>) {
     (v, Some(u))
 }
 
+/// Exponent vectors packed into one `u64`, symbol 0 in the highest bits,
+/// so that the integer order is the lexicographic term order and adding
+/// keys adds monomials: usable for a product when every symbol's exponents
+/// in the two factors sum below `2^bits`.
+struct Packing {
+    nvars: usize,
+    bits: u32,
+}
+
+impl Packing {
+    fn for_product(a: &MPoly, b: &MPoly) -> Option<Packing> {
+        let nvars = a.nvars;
+        if nvars == 0 || nvars > 64 {
+            return None;
+        }
+        let bits = (64 / nvars as u32).min(32);
+        let top = |p: &MPoly, v: usize| p.terms.iter().map(|(m, _)| u64::from(m[v])).max();
+        for v in 0..nvars {
+            if top(a, v).unwrap_or(0) + top(b, v).unwrap_or(0) >= 1u64 << bits {
+                return None;
+            }
+        }
+        Some(Packing { nvars, bits })
+    }
+
+    fn pack(&self, m: &[u32]) -> u64 {
+        m.iter().fold(0, |k, &e| (k << self.bits) | u64::from(e))
+    }
+
+    fn unpack(&self, mut k: u64) -> Monomial {
+        let mask = (1u64 << self.bits) - 1;
+        let mut m = vec![0u32; self.nvars];
+        for e in m.iter_mut().rev() {
+            *e = (k & mask) as u32;
+            k >>= self.bits;
+        }
+        m
+    }
+}
+
 /// The product, accumulated over the integers (one rational normalisation
-/// per result term instead of one per pair of terms).
+/// per result term instead of one per pair of terms), on packed monomials
+/// where they fit.
 fn product(a: &MPoly, b: &MPoly) -> MPoly {
     debug_assert_eq!(a.nvars, b.nvars);
     if a.is_zero() || b.is_zero() {
@@ -483,21 +512,47 @@ fn product(a: &MPoly, b: &MPoly) -> MPoly {
     }
     let (ia, ua) = integer_form(a);
     let (ib, ub) = integer_form(b);
-    let mut map: BTreeMap<Monomial, BigInt> = BTreeMap::new();
-    for ((ma, _), ca) in a.terms.iter().zip(&ia) {
-        for ((mb, _), cb) in b.terms.iter().zip(&ib) {
-            let m: Monomial = ma.iter().zip(mb).map(|(x, y)| x + y).collect();
-            let c = ca * cb;
-            match map.entry(m) {
-                std::collections::btree_map::Entry::Vacant(e) => {
-                    e.insert(c);
-                }
-                std::collections::btree_map::Entry::Occupied(mut e) => {
-                    *e.get_mut() += c;
+    let map: Vec<(Monomial, BigInt)> = match Packing::for_product(a, b) {
+        Some(pk) => {
+            let kb: Vec<u64> = b.terms.iter().map(|(m, _)| pk.pack(m)).collect();
+            let mut map: BTreeMap<u64, BigInt> = BTreeMap::new();
+            for ((ma, _), ca) in a.terms.iter().zip(&ia) {
+                let ka = pk.pack(ma);
+                for (kb, cb) in kb.iter().zip(&ib) {
+                    *map.entry(ka + kb).or_default() += ca * cb;
                 }
             }
+            map.into_iter()
+                .rev()
+                .filter(|(_, c)| !c.is_zero())
+                .map(|(k, c)| (pk.unpack(k), c))
+                .collect()
         }
-    }
+        None => {
+            let mut map: BTreeMap<Monomial, BigInt> = BTreeMap::new();
+            // One exponent buffer for the lookups; a monomial is allocated
+            // only when it is new.
+            let mut key: Monomial = vec![0; a.nvars];
+            for ((ma, _), ca) in a.terms.iter().zip(&ia) {
+                for ((mb, _), cb) in b.terms.iter().zip(&ib) {
+                    for ((k, x), y) in key.iter_mut().zip(ma).zip(mb) {
+                        *k = x + y;
+                    }
+                    let c = ca * cb;
+                    match map.get_mut(key.as_slice()) {
+                        Some(v) => *v += c,
+                        None => {
+                            map.insert(key.clone(), c);
+                        }
+                    }
+                }
+            }
+            map.into_iter()
+                .rev()
+                .filter(|(_, c)| !c.is_zero())
+                .collect()
+        }
+    };
     let scale = match (ua, ub) {
         (None, None) => None,
         (Some(x), None) | (None, Some(x)) => Some(x.recip()),
@@ -507,8 +562,6 @@ fn product(a: &MPoly, b: &MPoly) -> MPoly {
         nvars: a.nvars,
         terms: map
             .into_iter()
-            .rev()
-            .filter(|(_, c)| !c.is_zero())
             .map(|(m, c)| {
                 let q = Q::from_integer(c);
                 (m, if let Some(s) = &scale { q * s } else { q })
@@ -574,6 +627,63 @@ mod tests {
 
     fn xy() -> (MPoly, MPoly) {
         (MPoly::var(0, 2), MPoly::var(1, 2))
+    }
+
+    /// The product as a sum of one-term products (`Add` only): the
+    /// reference the packed and unpacked products are checked against.
+    fn sum_of_term_products(a: &MPoly, b: &MPoly) -> MPoly {
+        let mut s = MPoly::zero(a.nvars);
+        for (ma, ca) in &a.terms {
+            for (mb, cb) in &b.terms {
+                let m: Monomial = ma.iter().zip(mb).map(|(x, y)| x + y).collect();
+                s = &s + &MPoly::monomial(m, ca * cb);
+            }
+        }
+        s
+    }
+
+    #[test]
+    fn products_agree_packed_and_unpacked() {
+        let mut seed = 7u64;
+        let mut next = |k: u64| {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (seed >> 33) % k
+        };
+        let mut packed = 0;
+        let mut unpacked = 0;
+        for nvars in 1..=4usize {
+            let bits = (64 / nvars as u32).min(32);
+            for case in 0..40 {
+                // Exponents near half the packing range, so that some sums
+                // reach 2^bits (the unpacked path) and some stay below it.
+                let half = 1u64 << (bits - 1);
+                let mut poly = |big: bool| {
+                    let terms: Vec<(Monomial, Q)> = (0..1 + next(6))
+                        .map(|_| {
+                            let m = (0..nvars)
+                                .map(|_| {
+                                    let e = if big { half - 3 + next(6) } else { next(4) };
+                                    e as u32
+                                })
+                                .collect();
+                            let c = Q::new(
+                                BigInt::from(next(19) as i64 - 9),
+                                BigInt::from(1 + next(4) as i64),
+                            );
+                            (m, c)
+                        })
+                        .collect();
+                    MPoly::from_terms(nvars, terms)
+                };
+                let (a, b) = (poly(case % 2 == 0), poly(case % 4 == 0));
+                match Packing::for_product(&a, &b) {
+                    Some(_) => packed += 1,
+                    None => unpacked += 1,
+                }
+                assert_eq!(&a * &b, sum_of_term_products(&a, &b), "{a:?} * {b:?}");
+            }
+        }
+        assert!(packed >= 40 && unpacked >= 10, "packed {packed}, unpacked {unpacked}");
     }
 
     #[test]

@@ -108,10 +108,11 @@ fn pseudo_quotient(b: &MPoly, a: &MPoly, p: usize) -> (MPoly, MPoly) {
 /// them to coprime integer coefficients.
 fn reduce_line(line: &mut [&mut MPoly]) {
     let mut g = MPoly::zero(line.first().map_or(0, |e| e.nvars()));
-    for e in line.iter() {
-        if e.is_zero() {
-            continue;
-        }
+    // Smallest entries first: the running gcd is then small early, and
+    // every later gcd has one small argument.
+    let mut order: Vec<&MPoly> = line.iter().map(|e| &**e).filter(|e| !e.is_zero()).collect();
+    order.sort_by_key(|e| e.terms().len());
+    for e in order {
         g = gcd(&g, e);
         if g.is_nonzero_constant() {
             break;

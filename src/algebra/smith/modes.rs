@@ -1028,12 +1028,6 @@ pub fn to_principal(a: &Matrix<PolyRing>, p: usize) -> Matrix<UPolyRing<RatFuncF
     })
 }
 
-/// Q(others)[λ] element with polynomial coefficients → Q[all].
-fn to_poly(e: &UPoly<RatFunc>, p: usize, nvars: usize) -> MPoly {
-    let cs: Vec<MPoly> = e.0.iter().map(|c| c.num().clone()).collect();
-    MPoly::from_coeffs_in(p, &cs, nvars)
-}
-
 fn principal(
     name: &str,
     a: &Matrix<PolyRing>,
@@ -1375,23 +1369,45 @@ impl ProductCheck<UPolyRing<RatFuncField>> for ClearedDenominators {
     }
 }
 
-/// Scale that clears the denominators of, and removes the Q[others]
-/// content from, a line of K[λ] entries: returns it as `num/den` polynomials.
-fn clearing_scale(line: &[&UPoly<RatFunc>], n: usize) -> (MPoly, MPoly) {
+/// A line of K\[λ\] entries with its denominators cleared and its
+/// Q\[others\] content removed: each coefficient `n/d` becomes
+/// `n·(l/d)/g`, with `l` the lcm of the line's denominators and `g` the
+/// gcd of the cleared numerators, taken by exact divisions (no gcd per
+/// coefficient, which a product of fractions would normalise by); the
+/// entries come back over Q\[all\], λ the symbol `p`.
+fn cleared_content_free(line: &[&UPoly<RatFunc>], p: usize, n: usize) -> Vec<MPoly> {
     let mut l = MPoly::one(n);
     for e in line {
         for c in &e.0 {
-            l = lcm(&l, c.den());
+            if !c.is_polynomial() && c.den() != &l {
+                l = lcm(&l, c.den());
+            }
         }
     }
+    let nums: Vec<Vec<MPoly>> = line
+        .iter()
+        .map(|e| {
+            e.0.iter()
+                .map(|c| c.num() * &l.div_exact(c.den()).expect("lcm"))
+                .collect()
+        })
+        .collect();
     let mut g = MPoly::zero(n);
-    for e in line {
-        for c in &e.0 {
-            let num = c.num() * &l.div_exact(c.den()).expect("lcm");
-            g = gcd(&g, &num);
-        }
+    for c in nums.iter().flatten() {
+        g = gcd(&g, c);
     }
-    (l, if g.is_zero() { MPoly::one(n) } else { g })
+    if g.is_zero() {
+        g = MPoly::one(n);
+    }
+    nums.iter()
+        .map(|cs| {
+            let cs: Vec<MPoly> = cs
+                .iter()
+                .map(|c| c.div_exact(&g).expect("the content divides"))
+                .collect();
+            MPoly::from_coeffs_in(p, &cs, n)
+        })
+        .collect()
 }
 
 fn denominator_free(
@@ -1402,16 +1418,7 @@ fn denominator_free(
     let n = a.ring.nvars();
     let kr = &du.ring;
     let pr = a.ring.clone();
-    let scale_line = |line: Vec<&UPoly<RatFunc>>| -> Vec<MPoly> {
-        let (l, g) = clearing_scale(&line, n);
-        let s = RatFunc::new(l, g).expect("nonzero");
-        line.iter()
-            .map(|e| {
-                let scaled = kr.scale(e, &s);
-                to_poly(&scaled, p, n)
-            })
-            .collect()
-    };
+    let scale_line = |line: Vec<&UPoly<RatFunc>>| cleared_content_free(&line, p, n);
     let m = du.rows();
     let mut u_rows = Vec::new();
     for i in 0..m {
