@@ -27,12 +27,13 @@ NAMES = ["x", "y", "z", "w"]
 TIMEOUT = 120
 
 
-def gen(n, nv, deg, seed, terms):
+def gen(n, nv, deg, seed, terms, cols=None):
+    """An n×n matrix, or n×cols (the square ones are unchanged)."""
     rnd = random.Random(seed)
     m = []
     for _ in range(n):
         row = []
-        for _ in range(n):
+        for _ in range(cols or n):
             if rnd.random() < 1 / 6:
                 row.append({})
                 continue

@@ -4,10 +4,10 @@ against PARI/GP's matsnf(M, 3) over Q(others)[principal].
 
 Usage:
   principal_grid.py BIN [--ns 2,3,4] [--nvs 2,3] [--degs 1,2] [--seeds 1-8]
-                        [--terms T] [--timeout S] [--no-pari]
+                        [--terms T] [--extra-cols K] [--timeout S] [--no-pari]
 
 The matrices are benches/multi_peers.py's (same generator, same seeds); the
-principal symbol is the last one. lambdamat: user CPU of the whole
+principal symbol is the last one; --extra-cols K makes them n×(n+K). lambdamat: user CPU of the whole
 `BIN smith FILE --principal s --json` process (RLIMIT_CPU = timeout);
 PARI: matsnf's own time (getabstime, the call repeated until 200 ms
 have passed, time per call), under the same CPU limit. One line
@@ -89,6 +89,7 @@ def main():
     degs = ints(arg(a, "--degs", "1,2"))
     seeds = ints(arg(a, "--seeds", "1-8"))
     terms = int(arg(a, "--terms", "3"))
+    extra = int(arg(a, "--extra-cols", "0"))
     timeout = int(arg(a, "--timeout", "60"))
     multi_peers.TIMEOUT = timeout + 5
     rows = []
@@ -98,7 +99,7 @@ def main():
                 names = multi_peers.NAMES[:nv]
                 for deg in degs:
                     for seed in seeds:
-                        m = multi_peers.gen(n, nv, deg, seed, terms)
+                        m = multi_peers.gen(n, nv, deg, seed, terms, n + extra)
                         path = os.path.join(tmp, f"m_{n}_{nv}_{deg}_{seed}.lmx")
                         with open(path, "w") as f:
                             f.write(multi_peers.lmx(m, names))
@@ -111,6 +112,8 @@ def main():
                                 "ff" if alg.startswith("fraction-free")
                                 else "det-adj" if alg.startswith("det and adj")
                                 else "field" if alg.startswith("elimination")
+                                else "max-minors" if "minors over Q[all] by expansion" in alg
+                                else "divisors" if alg.startswith("determinantal divisors")
                                 else alg[:20]
                             )
                             uv = "yes" if rep.get("U") else "no"
@@ -130,7 +133,7 @@ def main():
                         except (ValueError, TypeError):
                             agree = "-"
                         line = (
-                            f"n={n} nv={nv} deg={deg} seed={seed} route={route} uv={uv} "
+                            f"n={n}x{n + extra} nv={nv} deg={deg} seed={seed} route={route} uv={uv} "
                             f"ours={t:.3f}s degs={degs_ours} pari={'-' if pt is None else f'{pt:.3f}s'} "
                             f"pari_degs={pdeg} agree={agree} pari/ours={ratio}"
                         )

@@ -1106,11 +1106,15 @@ fn principal_fraction_free(
             "the fraction-free elimination over Q[others][λ] stopped at its safeguard (entries over {} bits of coefficients)",
             super::fraction_free::SIZE_LIMIT_BITS
         );
-        return Ok(
-            principal_form_only(name, a, ap, p, note, opts, Some(&why)).or_else(|| {
+        return Ok(principal_form_only(name, a, ap, p, note, opts, Some(&why))
+            .or_else(|| {
                 super::principal_form::maximal_minors_report(name, a, ap, p, note, &why, opts)
-            }),
-        );
+            })
+            .or_else(|| {
+                super::principal_form::determinantal_divisors_report(
+                    name, a, ap, p, note, &why, opts,
+                )
+            }));
     };
     let Some([u, d, v]) = super::fraction_free::over_k(&ff, kr, p) else {
         return Ok(None);
@@ -1273,7 +1277,8 @@ pub(super) fn principal_d_only_report(
     opts: &SmithOptions,
 ) -> SmithReport {
     let kr = d.ring.clone();
-    let inv = d.diagonal();
+    // The nonzero diagonal: a rank-deficient D lists only its rank's factors.
+    let inv: Vec<_> = d.diagonal().into_iter().take(rank).collect();
     let latex = opts.latex.then(|| LatexForms {
         a: rows_of(a, true),
         invariant_factors: inv.iter().map(|e| kr.latex(e)).collect(),
@@ -1960,6 +1965,46 @@ mod tests {
             fast.invariant_factor_coefficients,
             full.invariant_factor_coefficients
         );
+    }
+
+    #[test]
+    fn principal_divisors_route_agrees_with_the_elimination() {
+        let square = random_xy(3, 11);
+        // Rank 2: the third row is x·(first) + (second).
+        let mut singular = random_xy(3, 5);
+        for j in 0..3 {
+            let e = &(&MPoly::var(0, 2) * singular.get(0, j)) + singular.get(1, j);
+            singular.set(2, j, e);
+        }
+        let wide = random_xy(3, 7).submatrix(&[0, 1], &[0, 1, 2]);
+        let tall = random_xy(3, 9).submatrix(&[0, 1, 2], &[0, 2]);
+        let mut ranks = Vec::new();
+        for a in [square, singular, wide, tall] {
+            for p in [0, 1] {
+                let ap = to_principal(&a, p);
+                let opts = SmithOptions::default();
+                let fast = super::super::principal_form::determinantal_divisors_report(
+                    "A", &a, &ap, p, "note", "asked", &opts,
+                )
+                .expect("few minors");
+                let full = smith_report(
+                    "A",
+                    &a,
+                    &SmithOptions {
+                        principal: Some(p),
+                        ..SmithOptions::default()
+                    },
+                )
+                .expect("certified");
+                assert!(full.u.is_some(), "a small input takes the elimination");
+                assert!(fast.u.is_none());
+                assert_eq!(fast.invariant_factors, full.invariant_factors, "symbol {p}");
+                assert_eq!(fast.d, full.d);
+                assert_eq!(fast.rank, full.rank);
+                ranks.push(fast.rank);
+            }
+        }
+        assert_eq!(ranks, [3, 3, 2, 2, 2, 2, 2, 2]);
     }
 
     #[test]

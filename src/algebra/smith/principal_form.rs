@@ -1,15 +1,21 @@
-//! The principal mode's report without transforms for a non-square input
-//! (issue 15): when the fraction-free elimination gives up on the size of
-//! its entries ([`super::fraction_free::SIZE_LIMIT_BITS`]), the invariant
-//! factors over Q(others)\[λ\] are still certified from its maximal minors
-//! ([`super::certify_several::certify_maximal_minors`]): D = diag(1, …, 1,
-//! d) padded with zeros, rank min(m, n), d the gcd of the minors. This
-//! module only assembles the report; it must not compute or certify (the
-//! square inputs take `modes`' det/adjugate route instead).
+//! The principal mode's reports without transforms, for inputs on which
+//! the fraction-free elimination gives up on the size of its entries
+//! ([`super::fraction_free::SIZE_LIMIT_BITS`]) and no det/adjugate
+//! certificate applies: from the maximal minors of a non-square input
+//! ([`super::certify_several::certify_maximal_minors`]: D = diag(1, …, 1,
+//! d) padded with zeros, rank min(m, n), d the gcd of the minors), or, for
+//! any shape and rank, from the determinantal divisors over Q\[all\]
+//! ([`super::divisors`]), whose primitive parts in λ are those over
+//! Q(others)\[λ\]. This module only assembles the reports; the minors,
+//! gcds and checks belong to the modules it calls.
 
+use super::certify::Check;
 use super::certify_several::certify_maximal_minors;
+use super::divisors::{certify_divisors, determinantal_divisors, minor_count};
 use super::modes::{SmithOptions, SmithReport, principal_d_only_report};
+use crate::algebra::gcd::content_in;
 use crate::algebra::matrix::Matrix;
+use crate::algebra::mpoly::MPoly;
 use crate::algebra::polyring::PolyRing;
 use crate::algebra::ratfunc::{RatFunc, RatFuncField};
 use crate::algebra::ring::{GcdDomain, Ring};
@@ -77,5 +83,79 @@ pub fn maximal_minors_report(
         algorithm,
         cert.checks,
         opts,
+    ))
+}
+
+/// At most this many minors (of all orders) for
+/// [`determinantal_divisors_report`]: a 4×5 has 125, a 6×6 923, a 7×7
+/// 3 431 (the determinantal mode's own route switch is at 20 000).
+pub const DIVISOR_ROUTE_MINORS: u128 = 5_000;
+
+/// The report of any `a` over Q(others)\[λ\] (λ = symbol `p`, `ap` = A
+/// over that ring) from its determinantal divisors over Q\[all\]:
+/// d_k = gcd of the k×k minors (certified to divide every one of them, and
+/// every minor of order rank + 1 to vanish), and over K\[λ\] the k-th
+/// divisor is the primitive part of d_k in λ (a content in Q\[others\] is a
+/// unit of K; by Gauss's lemma the gcd of the minors over K\[λ\] is the
+/// primitive part of their gcd over Q\[all\]). Transforms omitted because
+/// of `why`; `None` above [`DIVISOR_ROUTE_MINORS`] minors or when the
+/// certificate fails.
+pub fn determinantal_divisors_report(
+    name: &str,
+    a: &Matrix<PolyRing>,
+    ap: &Matrix<UPolyRing<RatFuncField>>,
+    p: usize,
+    note: &str,
+    why: &str,
+    opts: &SmithOptions,
+) -> Option<SmithReport> {
+    let (m, n) = (a.rows(), a.cols());
+    if minor_count(m, n) > DIVISOR_ROUTE_MINORS {
+        return None;
+    }
+    opts.progress.phase(&format!(
+        "determinantal divisors over Q[all] ({} minors), their primitive parts in {}",
+        minor_count(m, n),
+        a.ring.names[p]
+    ));
+    let dv = determinantal_divisors(a, DIVISOR_ROUTE_MINORS).ok()?;
+    let cert = certify_divisors(a, &dv);
+    if !cert.verified() {
+        return None;
+    }
+    let primitive = |d: &MPoly| -> Option<MPoly> { d.div_exact(&content_in(d, p)) };
+    let kr = &ap.ring;
+    let to_k = |e: &MPoly| {
+        kr.normalize(&kr.trim(e.coeffs_in(p).into_iter().map(RatFunc::from_poly).collect()))
+    };
+    let r = dv.determinantal.len();
+    let mut d = Matrix::zeros(kr.clone(), m, n);
+    let mut prev = MPoly::one(a.ring.nvars());
+    let mut chain = true;
+    for (k, dk) in dv.determinantal.iter().enumerate() {
+        let pk = primitive(dk)?;
+        let f = pk.div_exact(&prev);
+        chain &= f.is_some();
+        d.set(k, k, to_k(&f?));
+        prev = pk;
+    }
+    let mut checks = cert.checks;
+    checks.push(Check {
+        property: "f_k = pp(d_k)/pp(d_(k-1)) over Q(others)[λ]".into(),
+        ok: chain,
+        detail: "the primitive part in λ of each divisor divides the next's (exact division over Q[all])".into(),
+    });
+    if !chain {
+        return None;
+    }
+    let algorithm = format!(
+        "determinantal divisors over Q[all] (d_k = gcd of the k×k minors, Bareiss determinants, modular gcd), their primitive parts in {} are those over Q(others)[{}]; f_k = d_k/d_(k-1)",
+        a.ring.names[p], a.ring.names[p]
+    );
+    let mode_note = format!(
+        "{note}; transforms omitted because {why}: the invariant factors alone are certified"
+    );
+    Some(principal_d_only_report(
+        name, a, d, r, mode_note, algorithm, checks, opts,
     ))
 }
