@@ -1106,15 +1106,18 @@ fn principal_fraction_free(
             "the fraction-free elimination over Q[others][λ] stopped at its safeguard (entries over {} bits of coefficients)",
             super::fraction_free::SIZE_LIMIT_BITS
         );
+        let form_only = super::principal_form::FormOnly {
+            name,
+            a,
+            ap,
+            p,
+            note,
+            why: &why,
+            opts,
+        };
         return Ok(principal_form_only(name, a, ap, p, note, opts, Some(&why))
-            .or_else(|| {
-                super::principal_form::maximal_minors_report(name, a, ap, p, note, &why, opts)
-            })
-            .or_else(|| {
-                super::principal_form::determinantal_divisors_report(
-                    name, a, ap, p, note, &why, opts,
-                )
-            }));
+            .or_else(|| form_only.maximal_minors())
+            .or_else(|| form_only.determinantal_divisors()));
     };
     let Some([u, d, v]) = super::fraction_free::over_k(&ff, kr, p) else {
         return Ok(None);
@@ -1983,9 +1986,16 @@ mod tests {
             for p in [0, 1] {
                 let ap = to_principal(&a, p);
                 let opts = SmithOptions::default();
-                let fast = super::super::principal_form::determinantal_divisors_report(
-                    "A", &a, &ap, p, "note", "asked", &opts,
-                )
+                let fast = super::super::principal_form::FormOnly {
+                    name: "A",
+                    a: &a,
+                    ap: &ap,
+                    p,
+                    note: "note",
+                    why: "asked",
+                    opts: &opts,
+                }
+                .determinantal_divisors()
                 .expect("few minors");
                 let full = smith_report(
                     "A",
