@@ -7,6 +7,8 @@
 //! This module owns gcd, content and pseudo-remainder, nothing else.
 
 use super::mpoly::MPoly;
+use super::rational::Q;
+use num_traits::One;
 
 /// Pseudo-remainder of `a` by `b` with respect to variable `v`: a multiple
 /// `c * a` (with `c` a power-product of leading coefficients of `b`, free of
@@ -57,6 +59,28 @@ pub fn primitive_part_in(a: &MPoly, v: usize) -> MPoly {
         .primitive_normal()
 }
 
+/// The largest monomial dividing `p` (nonzero): each variable's smallest
+/// exponent over the terms.
+fn monomial_content(p: &MPoly) -> Vec<u32> {
+    let mut e = p.terms()[0].0.clone();
+    for (t, _) in &p.terms()[1..] {
+        for (x, y) in e.iter_mut().zip(t) {
+            *x = (*x).min(*y);
+        }
+    }
+    e
+}
+
+/// `p / x^m` for a monomial `x^m` dividing `p`.
+fn div_monomial(p: &MPoly, m: &[u32]) -> MPoly {
+    let terms = p
+        .terms()
+        .iter()
+        .map(|(t, c)| (t.iter().zip(m).map(|(x, y)| x - y).collect(), c.clone()))
+        .collect();
+    MPoly::from_sorted_terms(p.nvars(), terms)
+}
+
 /// The greatest common divisor of `a` and `b`, normalised to coprime integer
 /// coefficients with a positive leading coefficient (so `gcd(0, 0) = 0` and
 /// the gcd of nonzero constants is `1`).
@@ -83,6 +107,16 @@ pub fn gcd(a: &MPoly, b: &MPoly) -> MPoly {
         if pa == b.primitive_normal() {
             return pa;
         }
+    }
+    // Monomial factors apart: gcd(x^α·a', x^β·b') = x^min(α,β)·gcd(a', b')
+    // when no variable divides a' or b' (the variables are primes). The
+    // images of a' and b' then have no common monomial either, so a
+    // coprime pair is seen as such at once.
+    let (ma, mb) = (monomial_content(a), monomial_content(b));
+    if ma.iter().chain(&mb).any(|&e| e > 0) {
+        let m: Vec<u32> = ma.iter().zip(&mb).map(|(x, y)| *x.min(y)).collect();
+        let g = gcd(&div_monomial(a, &ma), &div_monomial(b, &mb));
+        return &g * &MPoly::monomial(m, Q::one());
     }
     let n = a.nvars();
     let v = match (a.main_var(), b.main_var()) {
@@ -189,6 +223,20 @@ mod tests {
         assert_eq!(gcd(&MPoly::constant(q(3, 4), 2), &x.clone()), MPoly::one(2));
         assert_eq!(gcd(&MPoly::zero(2), &x.scale(&qi(-2))), x.clone());
         assert!(gcd(&MPoly::zero(2), &MPoly::zero(2)).is_zero());
+    }
+
+    #[test]
+    fn a_monomial_gcd_takes_the_smallest_exponents() {
+        let v = vars(3);
+        let (x, y, z) = (&v[0], &v[1], &v[2]);
+        let m = (x.pow(2) * y.clone()).scale(&q(-5, 3));
+        // Every term has x and y²; one lacks z.
+        let p = &(&(x.pow(3) * y.pow(2)) * z) - &(x * &y.pow(4)).scale(&qi(7));
+        assert_eq!(gcd(&m, &p), x * y);
+        assert_eq!(gcd(&p, &m), x * y);
+        assert_eq!(gcd(&m, &(z + &MPoly::one(3))), MPoly::one(3));
+        assert_eq!(gcd(&m, &m.scale(&qi(4))), (x.pow(2) * y.clone()));
+        assert_eq!(gcd(&MPoly::zero(3), &m), (x.pow(2) * y.clone()));
     }
 
     #[test]

@@ -462,18 +462,127 @@ impl<R: GcdDomain> Matrix<R> {
         rank
     }
 
-    /// All k×k minors (in lexicographic order of row and column subsets).
+    /// All k×k minors (in lexicographic order of row and column subsets),
+    /// by [`MinorOrders`].
     pub fn minors(&self, k: usize) -> Vec<R::Elem> {
-        let rs = subsets(self.rows, k);
-        let cs = subsets(self.cols, k);
-        let mut out = Vec::with_capacity(rs.len() * cs.len());
-        for r in &rs {
-            for c in &cs {
-                out.push(self.submatrix(r, c).det().expect("square"));
+        let mut orders = MinorOrders::new(self);
+        while orders.order() < k {
+            if !orders.advance() {
+                return Vec::new();
             }
         }
-        out
+        orders.minors().to_vec()
     }
+}
+
+/// Every minor of a matrix, one order at a time, lowest first. Order
+/// k + 1 comes from order k by Laplace expansion along the line (a row or
+/// a column of the minor) with the fewest non-zero entries, so a minor
+/// costs at most k + 1 products of an entry with a minor of the order
+/// before, and no division; an order's minors are listed in
+/// lexicographic order of their row subsets, then of their column
+/// subsets. Holds one order at a time.
+pub struct MinorOrders<'a, R: Ring> {
+    a: &'a Matrix<R>,
+    order: usize,
+    minors: Vec<R::Elem>,
+}
+
+impl<'a, R: Ring> MinorOrders<'a, R> {
+    /// Starts at order 0 (the single empty minor, 1).
+    pub fn new(a: &'a Matrix<R>) -> Self {
+        MinorOrders {
+            a,
+            order: 0,
+            minors: vec![a.ring.one()],
+        }
+    }
+
+    /// The order of the minors [`Self::minors`] lists.
+    pub fn order(&self) -> usize {
+        self.order
+    }
+
+    /// The minors of the current order.
+    pub fn minors(&self) -> &[R::Elem] {
+        &self.minors
+    }
+
+    /// Steps to the next order; `false` (and no change) past
+    /// `min(rows, cols)`.
+    pub fn advance(&mut self) -> bool {
+        let (a, r, k) = (self.a, &self.a.ring, self.order + 1);
+        if k > a.rows.min(a.cols) {
+            return false;
+        }
+        // For every k-subset, the index among the (k−1)-subsets of the
+        // subset without its p-th element.
+        let drops = |n: usize| -> (Vec<Vec<usize>>, Vec<Vec<usize>>) {
+            let prev: std::collections::HashMap<Vec<usize>, usize> = subsets(n, k - 1)
+                .into_iter()
+                .enumerate()
+                .map(|(i, s)| (s, i))
+                .collect();
+            let subs = subsets(n, k);
+            let drop = subs
+                .iter()
+                .map(|s| {
+                    (0..k)
+                        .map(|p| {
+                            let rest: Vec<usize> = [&s[..p], &s[p + 1..]].concat();
+                            prev[&rest]
+                        })
+                        .collect()
+                })
+                .collect();
+            (subs, drop)
+        };
+        let (rsubs, rdrop) = drops(a.rows);
+        let (csubs, cdrop) = drops(a.cols);
+        let prev_cols = binomial_len(a.cols, k - 1);
+        let mut out = Vec::with_capacity(rsubs.len() * csubs.len());
+        for (rs, rd) in rsubs.iter().zip(&rdrop) {
+            for (cs, cd) in csubs.iter().zip(&cdrop) {
+                let nz = |i: usize, j: usize| !r.is_zero(a.get(rs[i], cs[j]));
+                // (non-zeros, along a row?, position)
+                let mut line = (usize::MAX, true, 0);
+                for p in 0..k {
+                    let row = (0..k).filter(|&j| nz(p, j)).count();
+                    if row < line.0 {
+                        line = (row, true, p);
+                    }
+                    let col = (0..k).filter(|&i| nz(i, p)).count();
+                    if col < line.0 {
+                        line = (col, false, p);
+                    }
+                }
+                if line.0 == 0 {
+                    out.push(r.zero());
+                    continue;
+                }
+                let (_, along_row, p) = line;
+                // The q-th term: its entry's (row, column) positions.
+                let at = |q: usize| if along_row { (p, q) } else { (q, p) };
+                let term = |q: usize| {
+                    let (i, j) = at(q);
+                    (a.get(rs[i], cs[j]), &self.minors[rd[i] * prev_cols + cd[j]])
+                };
+                let mut terms = (0..k).filter(|&q| nz(at(q).0, at(q).1)).map(|q| {
+                    let (e, m) = term(q);
+                    (e, m, (p + q) % 2 == 1)
+                });
+                out.push(r.signed_dot(&mut terms));
+            }
+        }
+        self.minors = out;
+        self.order = k;
+        true
+    }
+}
+
+/// The number of `k`-subsets of `0..n`.
+fn binomial_len(n: usize, k: usize) -> usize {
+    (0..k).fold(1usize, |acc, i| acc * (n - i) / (i + 1))
 }
 
 /// All `k`-subsets of `0..n` in lexicographic order.
@@ -504,6 +613,7 @@ mod tests {
     use super::*;
     use crate::algebra::mpoly::MPoly;
     use crate::algebra::polyring::PolyRing;
+    use crate::algebra::rational::Q;
 
     fn seed() -> Matrix<PolyRing> {
         let names: Vec<String> = ["k1", "k2", "k3", "k4"]
@@ -513,6 +623,69 @@ mod tests {
         let ring = PolyRing::new(names);
         let v: Vec<MPoly> = (0..4).map(|i| MPoly::var(i, 4)).collect();
         Matrix::new(ring, 2, 2, v)
+    }
+
+    /// Seeded rectangular matrices over Q[x, y] with many zero entries (so
+    /// the expansion line changes from minor to minor, rows and columns
+    /// both) and some halves among integer coefficients (both summation
+    /// paths): every minor of every order equals the Bareiss determinant
+    /// of its submatrix.
+    #[test]
+    fn laplace_minors_equal_bareiss_determinants() {
+        let mut state = 0x2545_f491_4f6c_dd1du64;
+        let mut next = move |m: u64| {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state % m
+        };
+        let ring = PolyRing::new(vec!["x".to_string(), "y".to_string()]);
+        // Minors checked, those a column expands (sparser than any row),
+        // and those of integer entries only (summed on packed monomials).
+        let (mut checked, mut by_column, mut integral_minors) = (0, 0, 0);
+        for (rows, cols) in [(4, 4), (3, 5), (5, 4), (5, 5)] {
+            let data: Vec<MPoly> = (0..rows * cols)
+                .map(|_| {
+                    if next(5) < 2 {
+                        return MPoly::zero(2);
+                    }
+                    MPoly::from_terms(
+                        2,
+                        (0..1 + next(3)).map(|_| {
+                            let c = next(19) as i64 - 9;
+                            let den = if next(6) == 0 { 2 } else { 1 };
+                            (vec![next(3) as u32, next(3) as u32], Q::new(c.into(), den.into()))
+                        }),
+                    )
+                })
+                .collect();
+            let a = Matrix::new(ring.clone(), rows, cols, data);
+            let mut orders = MinorOrders::new(&a);
+            while orders.advance() {
+                let k = orders.order();
+                let mut it = orders.minors().iter();
+                for rs in subsets(rows, k) {
+                    for cs in subsets(cols, k) {
+                        let sub = a.submatrix(&rs, &cs);
+                        let nz = |i: usize, j: usize| !sub.get(i, j).is_zero();
+                        let row = (0..k).map(|i| (0..k).filter(|&j| nz(i, j)).count()).min();
+                        let col = (0..k).map(|j| (0..k).filter(|&i| nz(i, j)).count()).min();
+                        by_column += usize::from(col < row);
+                        let integral = (0..k)
+                            .all(|i| (0..k).all(|j| sub.get(i, j).terms().iter().all(|(_, c)| c.is_integer())));
+                        integral_minors += usize::from(integral);
+                        assert_eq!(it.next(), sub.det().as_ref(), "rows {rs:?} cols {cs:?}");
+                        checked += 1;
+                    }
+                }
+                assert!(it.next().is_none());
+            }
+            assert_eq!(orders.order(), rows.min(cols));
+        }
+        assert!(
+            checked == 500 && by_column > 20 && (100..400).contains(&integral_minors),
+            "{checked} minors, {by_column} by a column, {integral_minors} integral"
+        );
     }
 
     #[test]

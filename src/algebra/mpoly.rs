@@ -303,6 +303,19 @@ impl MPoly {
         if self.is_zero() {
             return Some(self.clone());
         }
+        if let [(dm, dc)] = d.terms.as_slice() {
+            // A monomial divides term by term (the order is kept).
+            let inv = dc.recip();
+            let mut terms = Vec::with_capacity(self.terms.len());
+            for (m, c) in &self.terms {
+                if !m.iter().zip(dm).all(|(a, b)| a >= b) {
+                    return None;
+                }
+                let q = m.iter().zip(dm).map(|(a, b)| a - b).collect();
+                terms.push((q, if inv.is_one() { c.clone() } else { c * &inv }));
+            }
+            return Some(MPoly::from_sorted_terms(self.nvars, terms));
+        }
         // Over the integers: with `a = sa·self` and `e = sd·d` of coprime
         // integer coefficients, d | self over Q iff e | a over Q, and then
         // (Gauss's lemma, e primitive) the quotient a/e has integer
@@ -570,6 +583,55 @@ fn product(a: &MPoly, b: &MPoly) -> MPoly {
     }
 }
 
+/// `Σ ±a_k·b_k` over `(a_k, b_k, subtract)`. When every coefficient is an
+/// integer and the exponents of every pair fit one packing, all products
+/// are summed in one map of packed monomials over the integers (no
+/// rational normalisation, no intermediate sums); otherwise product by
+/// product.
+pub fn sum_of_products(nvars: usize, terms: &[(&MPoly, &MPoly, bool)]) -> MPoly {
+    let integral = |p: &MPoly| p.terms.iter().all(|(_, c)| c.is_integer());
+    let packing = (nvars > 0 && nvars <= 64).then(|| {
+        let bits = (64 / nvars as u32).min(32);
+        Packing { nvars, bits }
+    });
+    let fits = |pk: &Packing| {
+        let top = |p: &MPoly, v: usize| p.terms.iter().map(|(m, _)| u64::from(m[v])).max();
+        terms.iter().all(|(a, b, _)| {
+            (0..nvars).all(|v| top(a, v).unwrap_or(0) + top(b, v).unwrap_or(0) < 1u64 << pk.bits)
+        })
+    };
+    let Some(pk) = packing.filter(|pk| {
+        terms.iter().all(|(a, b, _)| integral(a) && integral(b)) && fits(pk)
+    }) else {
+        let mut acc = MPoly::zero(nvars);
+        for (a, b, minus) in terms {
+            let p = product(a, b);
+            acc = merge(&acc, &p, *minus);
+        }
+        return acc;
+    };
+    let mut map: BTreeMap<u64, BigInt> = BTreeMap::new();
+    for (a, b, minus) in terms {
+        let kb: Vec<u64> = b.terms.iter().map(|(m, _)| pk.pack(m)).collect();
+        for (ma, ca) in &a.terms {
+            let ka = pk.pack(ma);
+            let ca = if *minus { -ca.numer() } else { ca.numer().clone() };
+            for (kb, (_, cb)) in kb.iter().zip(&b.terms) {
+                *map.entry(ka + kb).or_default() += &ca * cb.numer();
+            }
+        }
+    }
+    MPoly {
+        nvars,
+        terms: map
+            .into_iter()
+            .rev()
+            .filter(|(_, c)| !c.is_zero())
+            .map(|(k, c)| (pk.unpack(k), Q::from_integer(c)))
+            .collect(),
+    }
+}
+
 macro_rules! forward_binop {
     ($tr:ident, $method:ident, $body:expr) => {
         impl $tr<&MPoly> for &MPoly {
@@ -640,6 +702,18 @@ mod tests {
             }
         }
         s
+    }
+
+    #[test]
+    fn division_by_a_monomial_is_term_by_term() {
+        let (x, y) = (MPoly::var(0, 2), MPoly::var(1, 2));
+        let p = &(&x.pow(3) * &y).scale(&Q::new(3.into(), 2.into())) - &(&x * &y.pow(2));
+        let m = (&x * &y).scale(&Q::new((-3).into(), 4.into()));
+        let q = p.div_exact(&m).expect("x*y divides p");
+        assert_eq!(&q * &m, p);
+        assert_eq!(q.to_string_with(&["x", "y"]), "-2*x^2 + 4/3*y");
+        assert!(p.div_exact(&x.pow(2)).is_none());
+        assert!(p.div_exact(&y.pow(2)).is_none());
     }
 
     #[test]

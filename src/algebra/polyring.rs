@@ -39,6 +39,16 @@ impl Ring for PolyRing {
     fn sub(&self, a: &MPoly, b: &MPoly) -> MPoly {
         a - b
     }
+    fn signed_dot<'a>(
+        &self,
+        terms: &mut dyn Iterator<Item = (&'a MPoly, &'a MPoly, bool)>,
+    ) -> MPoly
+    where
+        MPoly: 'a,
+    {
+        let terms: Vec<_> = terms.collect();
+        crate::algebra::mpoly::sum_of_products(self.nvars(), &terms)
+    }
     fn mul(&self, a: &MPoly, b: &MPoly) -> MPoly {
         a * b
     }
@@ -64,6 +74,9 @@ impl Ring for PolyRing {
 }
 
 impl GcdDomain for PolyRing {
+    fn bulk(&self, a: &MPoly) -> usize {
+        a.terms().len()
+    }
     fn div_exact(&self, a: &MPoly, b: &MPoly) -> Option<MPoly> {
         a.div_exact(b)
     }

@@ -46,6 +46,28 @@ pub trait Ring: Clone + Debug {
         }
         acc
     }
+    /// `Σ ±a_k·b_k` (the flag: subtract); rings may override it to sum
+    /// once.
+    fn signed_dot<'a>(
+        &self,
+        terms: &mut dyn Iterator<Item = (&'a Self::Elem, &'a Self::Elem, bool)>,
+    ) -> Self::Elem
+    where
+        Self::Elem: 'a,
+    {
+        let mut acc = self.zero();
+        for (a, b, minus) in terms {
+            if !self.is_zero(a) && !self.is_zero(b) {
+                let p = self.mul(a, b);
+                acc = if minus {
+                    self.sub(&acc, &p)
+                } else {
+                    self.add(&acc, &p)
+                };
+            }
+        }
+        acc
+    }
     /// Whether `a` is invertible in this ring.
     fn is_unit(&self, a: &Self::Elem) -> bool;
     /// The print tree of an element (expanded, highest degree first): the
@@ -81,6 +103,11 @@ pub trait GcdDomain: Ring {
     /// The normalised associate of `a` (e.g. monic, or primitive with a
     /// positive leading coefficient); `0` stays `0`.
     fn normalize(&self, a: &Self::Elem) -> Self::Elem;
+    /// A rough size of `a` (its number of terms, for polynomials), by
+    /// which gcd folds take small elements first; 0 where not measured.
+    fn bulk(&self, _a: &Self::Elem) -> usize {
+        0
+    }
 }
 
 /// A Euclidean domain: division with remainder decreasing a size function.

@@ -2,10 +2,12 @@
 //! `d_k = gcd` of all k×k minors, `f_k = d_k / d_{k-1}`. This is the honest
 //! mode over Q[s1..sn] with n ≥ 2, where no unimodular transforms need exist;
 //! it is also the independent cross-check of the elimination in tests.
+//! The minors come order by order from Laplace expansion
+//! ([`MinorOrders`]), each order once for its gcd and its certificate.
 //! Owns only this computation and its certificate.
 
 use super::certify::{Certificate, Check};
-use crate::algebra::matrix::Matrix;
+use crate::algebra::matrix::{Matrix, MinorOrders};
 use crate::algebra::ring::GcdDomain;
 
 /// The determinantal divisors `d_1..d_r` (r = rank) and invariant factors.
@@ -82,6 +84,54 @@ pub fn determinantal_divisors<R: GcdDomain>(
     a: &Matrix<R>,
     limit: u128,
 ) -> Result<Divisors<R::Elem>, TooManyMinors> {
+    divisors_pass(a, limit, false).map(|(dv, _)| dv)
+}
+
+/// [`determinantal_divisors`] with their certificate, taken from the same
+/// minors: each `d_k` divides every k×k minor (by exact division),
+/// `d_{k-1}·f_k = d_k` up to a unit, `f_k | f_{k+1}`, and every minor of
+/// order rank + 1 vanishes.
+pub fn certified_divisors<R: GcdDomain>(
+    a: &Matrix<R>,
+    limit: u128,
+) -> Result<(Divisors<R::Elem>, Certificate), TooManyMinors> {
+    divisors_pass(a, limit, true).map(|(dv, cert)| (dv, cert.expect("certified")))
+}
+
+/// The gcd of `minors`, smallest first, and for each minor whether an
+/// exact division by the running gcd showed that the final gcd divides it
+/// (the running gcd only loses factors). A minor the running gcd already
+/// divides costs one exact division instead of a gcd; once the gcd is a
+/// unit the rest are not looked at.
+fn minors_gcd<R: GcdDomain>(r: &R, minors: &[R::Elem]) -> (R::Elem, Vec<bool>) {
+    let mut order: Vec<usize> = (0..minors.len())
+        .filter(|&i| !r.is_zero(&minors[i]))
+        .collect();
+    order.sort_by_key(|&i| r.bulk(&minors[i]));
+    let mut divided = vec![false; minors.len()];
+    let mut g = r.zero();
+    for i in order {
+        let x = &minors[i];
+        if r.is_zero(&g) {
+            g = r.normalize(x);
+        } else if r.is_unit(&g) {
+            break;
+        } else if r.div_exact(x, &g).is_some() {
+            divided[i] = true;
+        } else {
+            g = r.gcd(&g, x);
+        }
+    }
+    (g, divided)
+}
+
+/// The minors order by order ([`MinorOrders`]): the gcd of each order,
+/// and with `certify` the checks of [`certified_divisors`].
+fn divisors_pass<R: GcdDomain>(
+    a: &Matrix<R>,
+    limit: u128,
+    certify: bool,
+) -> Result<(Divisors<R::Elem>, Option<Certificate>), TooManyMinors> {
     let (m, n) = (a.rows(), a.cols());
     let needed = minor_count(m, n);
     if needed > limit {
@@ -96,65 +146,60 @@ pub fn determinantal_divisors<R: GcdDomain>(
     let mut det = Vec::new();
     let mut inv = Vec::new();
     let mut prev = r.one();
-    for k in 1..=m.min(n) {
-        let g = a
-            .minors(k)
-            .iter()
-            .fold(r.zero(), |g, x| if r.is_zero(x) { g } else { r.gcd(&g, x) });
+    let mut all_divide = true;
+    let mut next_zero = true;
+    let mut orders = MinorOrders::new(a);
+    while orders.advance() {
+        let minors = orders.minors();
+        let (g, divided) = minors_gcd(r, minors);
         if r.is_zero(&g) {
+            next_zero = minors.iter().all(|x| r.is_zero(x));
             break;
         }
         let g = r.normalize(&g);
+        if certify && !r.is_unit(&g) {
+            all_divide &= minors
+                .iter()
+                .zip(&divided)
+                .all(|(x, &done)| done || r.div_exact(x, &g).is_some());
+        }
         let f = r.div_exact(&g, &prev).expect("d_{k-1} divides d_k");
         inv.push(r.normalize(&f));
         prev = g.clone();
         det.push(g);
     }
-    Ok(Divisors {
-        determinantal: det,
-        invariant: inv,
-    })
-}
-
-/// Certifies divisors: each `d_k` divides every k×k minor, `d_{k-1}·f_k = d_k`
-/// up to a unit, `f_k | f_{k+1}`, and all minors of order rank+1 vanish.
-pub fn certify_divisors<R: GcdDomain>(a: &Matrix<R>, dv: &Divisors<R::Elem>) -> Certificate {
-    let r = &a.ring;
-    let mut checks = Vec::new();
-    let mut all_divide = true;
-    for (k, d) in dv.determinantal.iter().enumerate() {
-        if a.minors(k + 1).iter().any(|x| r.div_exact(x, d).is_none()) {
-            all_divide = false;
+    let cert = certify.then(|| {
+        let rank = det.len();
+        let chain = inv
+            .windows(2)
+            .all(|w| r.div_exact(&w[1], &w[0]).is_some());
+        Certificate {
+            checks: vec![
+                Check {
+                    property: "d_k divides every k×k minor".into(),
+                    ok: all_divide,
+                    detail: format!("checked by exact division for k = 1..{rank}"),
+                },
+                Check {
+                    property: "rank".into(),
+                    ok: next_zero,
+                    detail: format!("rank {rank}: every minor of order {} vanishes", rank + 1),
+                },
+                Check {
+                    property: "divisibility f1 | f2 | …".into(),
+                    ok: chain,
+                    detail: "each invariant factor divides the next".into(),
+                },
+            ],
         }
-    }
-    checks.push(Check {
-        property: "d_k divides every k×k minor".into(),
-        ok: all_divide,
-        detail: format!(
-            "checked by exact division for k = 1..{}",
-            dv.determinantal.len()
-        ),
     });
-    let rank = dv.determinantal.len();
-    let next_zero =
-        rank >= a.rows().min(a.cols()) || a.minors(rank + 1).iter().all(|x| r.is_zero(x));
-    checks.push(Check {
-        property: "rank".into(),
-        ok: next_zero,
-        detail: format!("rank {rank}: every minor of order {} vanishes", rank + 1),
-    });
-    let mut chain = true;
-    for w in dv.invariant.windows(2) {
-        if r.div_exact(&w[1], &w[0]).is_none() {
-            chain = false;
-        }
-    }
-    checks.push(Check {
-        property: "divisibility f1 | f2 | …".into(),
-        ok: chain,
-        detail: "each invariant factor divides the next".into(),
-    });
-    Certificate { checks }
+    Ok((
+        Divisors {
+            determinantal: det,
+            invariant: inv,
+        },
+        cert,
+    ))
 }
 
 #[cfg(test)]

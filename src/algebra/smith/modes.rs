@@ -8,7 +8,7 @@
 
 use super::SmithDecomposition;
 use super::certify::{Certificate, Check, ProductCheck, Unimodular, certify};
-use super::divisors::{certify_divisors, determinantal_divisors};
+use super::divisors::certified_divisors;
 use super::nonsingular::{FastParts, FastPath};
 use crate::algebra::gcd::{content_in, gcd, lcm};
 use crate::algebra::matrix::Matrix;
@@ -1564,8 +1564,10 @@ fn refuse_if_too_large(a: &Matrix<PolyRing>, mode: &str) -> Result<(), SmithErro
     )))
 }
 
-/// Above this many minors the determinantal mode takes the route through
-/// one certified Smith form per symbol instead of enumerating minors.
+/// Up to this many minors the determinantal mode enumerates them
+/// ([`certified_divisors`]); above, a square input whose d_(n−1) is 1
+/// takes det and adj by images, any other one certified Smith form per
+/// symbol.
 pub const MINOR_ROUTE_LIMIT: u128 = 20_000;
 
 /// The primitive associate in Q[all] of an element of Q(others)[λ]
@@ -1742,16 +1744,17 @@ fn divisors_mode(
     a: &Matrix<PolyRing>,
     opts: &SmithOptions,
 ) -> Result<SmithReport, SmithError> {
-    if let Some(r) = divisors_generic(name, a, opts) {
+    // Up to MINOR_ROUTE_LIMIT minors, all of them (by Laplace expansion)
+    // are cheaper than det and adj by images: measured on seeded 4×4–8×8
+    // in three symbols of degree 2–10, never slower and up to 50× faster.
+    let by_minors = super::divisors::minor_count(a.rows(), a.cols()) <= MINOR_ROUTE_LIMIT;
+    if !by_minors && let Some(r) = divisors_generic(name, a, opts) {
         return Ok(r);
     }
-    let by_minors = super::divisors::minor_count(a.rows(), a.cols()) <= MINOR_ROUTE_LIMIT;
     let (dv, cert) = if by_minors {
-        opts.progress.phase("gcds of minors");
-        let dv = determinantal_divisors(a, MINOR_LIMIT)?;
-        opts.progress.phase("certifying the determinantal divisors");
-        let cert = certify_divisors(a, &dv);
-        (dv, cert)
+        opts.progress
+            .phase("minors by Laplace expansion, their gcds and the certificate");
+        certified_divisors(a, MINOR_LIMIT)?
     } else {
         refuse_if_too_large(a, "the determinantal-divisor mode")?;
         divisors_by_symbol(a, &opts.progress)?
@@ -1774,7 +1777,7 @@ fn divisors_mode(
         ring: r.name(),
         mode: Mode::DeterminantalDivisors,
         algorithm: if by_minors {
-            "gcd of k×k minors (Bareiss determinants, modular gcd)".to_string()
+            "gcd of k×k minors (Laplace expansion from the minors of order k−1, modular gcd)".to_string()
         } else {
             "lcm over each symbol s of the determinantal divisors of the certified Smith form over Q(others)[s] (no minors enumerated)".to_string()
         },
@@ -1851,6 +1854,7 @@ fn run_check<R: GcdDomain>(m: &[Matrix<R>]) -> Certificate {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::algebra::smith::divisors::determinantal_divisors;
 
     fn seed() -> Matrix<PolyRing> {
         let names: Vec<String> = ["k1", "k2", "k3", "k4"]

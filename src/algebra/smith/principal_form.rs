@@ -11,7 +11,7 @@
 
 use super::certify::Check;
 use super::certify_several::certify_maximal_minors;
-use super::divisors::{certify_divisors, determinantal_divisors, minor_count};
+use super::divisors::{certified_divisors, minor_count};
 use super::modes::{SmithOptions, SmithReport, principal_d_only_report};
 use crate::algebra::gcd::content_in;
 use crate::algebra::matrix::Matrix;
@@ -138,8 +138,7 @@ impl FormOnly<'_> {
             minor_count(m, n),
             a.ring.names[p]
         ));
-        let dv = determinantal_divisors(a, DIVISOR_ROUTE_MINORS).ok()?;
-        let cert = certify_divisors(a, &dv);
+        let (dv, cert) = certified_divisors(a, DIVISOR_ROUTE_MINORS).ok()?;
         if !cert.verified() {
             return None;
         }
@@ -169,7 +168,7 @@ impl FormOnly<'_> {
             return None;
         }
         let algorithm = format!(
-            "determinantal divisors over Q[all] (d_k = gcd of the k×k minors, Bareiss determinants, modular gcd), their primitive parts in {} are those over Q(others)[{}]; f_k = d_k/d_(k-1)",
+            "determinantal divisors over Q[all] (d_k = gcd of the k×k minors by Laplace expansion, modular gcd), their primitive parts in {} are those over Q(others)[{}]; f_k = d_k/d_(k-1)",
             a.ring.names[p], a.ring.names[p]
         );
         let mode_note = format!(
