@@ -486,16 +486,35 @@ pub struct MinorOrders<'a, R: Ring> {
     a: &'a Matrix<R>,
     order: usize,
     minors: Vec<R::Elem>,
+    /// Most [`GcdDomain::bulk`] (terms) one order may hold, if limited.
+    max_bulk: Option<usize>,
+    /// An advance stopped at `max_bulk`.
+    stopped: bool,
 }
 
-impl<'a, R: Ring> MinorOrders<'a, R> {
+impl<'a, R: GcdDomain> MinorOrders<'a, R> {
     /// Starts at order 0 (the single empty minor, 1).
     pub fn new(a: &'a Matrix<R>) -> Self {
         MinorOrders {
             a,
             order: 0,
             minors: vec![a.ring.one()],
+            max_bulk: None,
+            stopped: false,
         }
+    }
+
+    /// Stops an advance, and keeps the order before, as soon as the order
+    /// being built would hold more than `terms` terms in all (so at most
+    /// two orders within the limit are held at once).
+    pub fn with_bulk_limit(mut self, terms: usize) -> Self {
+        self.max_bulk = Some(terms);
+        self
+    }
+
+    /// Whether the last [`Self::advance`] stopped at the bulk limit.
+    pub fn stopped_by_limit(&self) -> bool {
+        self.stopped
     }
 
     /// The order of the minors [`Self::minors`] lists.
@@ -509,7 +528,7 @@ impl<'a, R: Ring> MinorOrders<'a, R> {
     }
 
     /// Steps to the next order; `false` (and no change) past
-    /// `min(rows, cols)`.
+    /// `min(rows, cols)` or at the bulk limit.
     pub fn advance(&mut self) -> bool {
         let (a, r, k) = (self.a, &self.a.ring, self.order + 1);
         if k > a.rows.min(a.cols) {
@@ -541,6 +560,7 @@ impl<'a, R: Ring> MinorOrders<'a, R> {
         let (csubs, cdrop) = drops(a.cols);
         let prev_cols = binomial_len(a.cols, k - 1);
         let mut out = Vec::with_capacity(rsubs.len() * csubs.len());
+        let mut bulk = 0usize;
         for (rs, rd) in rsubs.iter().zip(&rdrop) {
             for (cs, cd) in csubs.iter().zip(&cdrop) {
                 let nz = |i: usize, j: usize| !r.is_zero(a.get(rs[i], cs[j]));
@@ -571,7 +591,13 @@ impl<'a, R: Ring> MinorOrders<'a, R> {
                     let (e, m) = term(q);
                     (e, m, (p + q) % 2 == 1)
                 });
-                out.push(r.signed_dot(&mut terms));
+                let minor = r.signed_dot(&mut terms);
+                bulk += r.bulk(&minor);
+                if self.max_bulk.is_some_and(|m| bulk > m) {
+                    self.stopped = true;
+                    return false;
+                }
+                out.push(minor);
             }
         }
         self.minors = out;
@@ -686,6 +712,31 @@ mod tests {
             checked == 500 && by_column > 20 && (100..400).contains(&integral_minors),
             "{checked} minors, {by_column} by a column, {integral_minors} integral"
         );
+    }
+
+    #[test]
+    fn a_bulk_limit_stops_an_order_and_keeps_the_one_before() {
+        let ring = PolyRing::new(vec!["x".to_string()]);
+        let x = MPoly::var(0, 1);
+        // A 3×4 of entries x + i²: 12 entries and 18 two-by-two minors,
+        // two terms each.
+        let data = (0..12)
+            .map(|i: i64| &x + &MPoly::constant(Q::from_integer((i * i).into()), 1))
+            .collect();
+        let a = Matrix::new(ring, 3, 4, data);
+        let bulk = |o: &MinorOrders<PolyRing>| o.minors().iter().map(|m| m.terms().len()).sum();
+        let mut free = MinorOrders::new(&a);
+        assert!(free.advance());
+        let first: usize = bulk(&free);
+        assert!(free.advance());
+        assert!(bulk(&free) > first, "the second order is larger");
+        let mut orders = MinorOrders::new(&a).with_bulk_limit(first);
+        assert!(orders.advance());
+        assert!(!orders.advance());
+        assert!(orders.stopped_by_limit());
+        assert_eq!((orders.order(), orders.minors().len()), (1, 12));
+        while free.advance() {}
+        assert!(!free.stopped_by_limit() && free.order() == 3);
     }
 
     #[test]

@@ -84,7 +84,7 @@ pub fn determinantal_divisors<R: GcdDomain>(
     a: &Matrix<R>,
     limit: u128,
 ) -> Result<Divisors<R::Elem>, TooManyMinors> {
-    divisors_pass(a, limit, false).map(|(dv, _)| dv)
+    divisors_pass(a, limit, false, None).map(|r| r.expect("no bulk limit").0)
 }
 
 /// [`determinantal_divisors`] with their certificate, taken from the same
@@ -95,7 +95,21 @@ pub fn certified_divisors<R: GcdDomain>(
     a: &Matrix<R>,
     limit: u128,
 ) -> Result<(Divisors<R::Elem>, Certificate), TooManyMinors> {
-    divisors_pass(a, limit, true).map(|(dv, cert)| (dv, cert.expect("certified")))
+    certified_divisors_within(a, limit, None).map(|r| r.expect("no bulk limit"))
+}
+
+/// Divisors with their certificate.
+pub type CertifiedDivisors<E> = (Divisors<E>, Certificate);
+
+/// [`certified_divisors`] holding at most `max_bulk` terms of minors per
+/// order (two orders at a time): `Ok(None)` when an order would hold more.
+pub fn certified_divisors_within<R: GcdDomain>(
+    a: &Matrix<R>,
+    limit: u128,
+    max_bulk: Option<usize>,
+) -> Result<Option<CertifiedDivisors<R::Elem>>, TooManyMinors> {
+    divisors_pass(a, limit, true, max_bulk)
+        .map(|r| r.map(|(dv, cert)| (dv, cert.expect("certified"))))
 }
 
 /// The gcd of `minors`, smallest first, and for each minor whether an
@@ -127,11 +141,16 @@ fn minors_gcd<R: GcdDomain>(r: &R, minors: &[R::Elem]) -> (R::Elem, Vec<bool>) {
 
 /// The minors order by order ([`MinorOrders`]): the gcd of each order,
 /// and with `certify` the checks of [`certified_divisors`].
+/// What one pass found: the divisors and, when asked, their certificate;
+/// `None` at the bulk limit.
+type Pass<E> = Option<(Divisors<E>, Option<Certificate>)>;
+
 fn divisors_pass<R: GcdDomain>(
     a: &Matrix<R>,
     limit: u128,
     certify: bool,
-) -> Result<(Divisors<R::Elem>, Option<Certificate>), TooManyMinors> {
+    max_bulk: Option<usize>,
+) -> Result<Pass<R::Elem>, TooManyMinors> {
     let (m, n) = (a.rows(), a.cols());
     let needed = minor_count(m, n);
     if needed > limit {
@@ -149,6 +168,9 @@ fn divisors_pass<R: GcdDomain>(
     let mut all_divide = true;
     let mut next_zero = true;
     let mut orders = MinorOrders::new(a);
+    if let Some(m) = max_bulk {
+        orders = orders.with_bulk_limit(m);
+    }
     while orders.advance() {
         let minors = orders.minors();
         let (g, divided) = minors_gcd(r, minors);
@@ -167,6 +189,9 @@ fn divisors_pass<R: GcdDomain>(
         inv.push(r.normalize(&f));
         prev = g.clone();
         det.push(g);
+    }
+    if orders.stopped_by_limit() {
+        return Ok(None);
     }
     let cert = certify.then(|| {
         let rank = det.len();
@@ -193,13 +218,13 @@ fn divisors_pass<R: GcdDomain>(
             ],
         }
     });
-    Ok((
+    Ok(Some((
         Divisors {
             determinantal: det,
             invariant: inv,
         },
         cert,
-    ))
+    )))
 }
 
 #[cfg(test)]
