@@ -23,7 +23,7 @@ import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import multi_peers  # noqa: E402
-from principal_grid import arg, ints, limit  # noqa: E402
+from principal_grid import arg, ints, limit, print_summary  # noqa: E402
 
 
 def run_ours(binary, path, timeout):
@@ -128,16 +128,7 @@ def main():
                             flush=True,
                         )
                         rows.append((n, t, st))
-    print("summary (per n: cases, max ours s, median ours s, Singular faster in how many, max Singular s)")
-    for n in ns:
-        r = [x for x in rows if x[0] == n]
-        ts = sorted(x[1] for x in r)
-        slower = sum(1 for x in r if x[2] is not None and x[2] < x[1])
-        smax = max((x[2] for x in r if x[2] is not None), default=None)
-        print(
-            f"n={n}: {len(r)} cases, max {ts[-1]:.3f} s, median {ts[len(ts) // 2]:.3f} s, "
-            f"Singular faster in {slower}, Singular max {smax}"
-        )
+    print_summary(rows, ns, "Singular")
 
 
 if __name__ == "__main__":

@@ -139,7 +139,13 @@ def main():
                         )
                         print(line, flush=True)
                         rows.append((n, t, pt, route))
-    print("summary (per n: cases, max ours s, median ours s, PARI faster in how many, max PARI s)")
+    print_summary(rows, ns, "PARI")
+
+
+def print_summary(rows, ns, peer):
+    """Per n: cases, max and median of ours, how often `peer` was faster,
+    its max; `rows` holds (n, ours seconds, peer seconds or None, ...)."""
+    print(f"summary (per n: cases, max ours s, median ours s, {peer} faster in how many, max {peer} s)")
     for n in ns:
         r = [x for x in rows if x[0] == n]
         ts = sorted(x[1] for x in r)
@@ -147,7 +153,7 @@ def main():
         pmax = max((x[2] for x in r if x[2] is not None), default=None)
         print(
             f"n={n}: {len(r)} cases, max {ts[-1]:.3f} s, median {ts[len(ts) // 2]:.3f} s, "
-            f"PARI faster in {slower}, PARI max {pmax}"
+            f"{peer} faster in {slower}, {peer} max {pmax}"
         )
 
 
