@@ -486,18 +486,20 @@ struct Packing {
 
 impl Packing {
     fn for_product(a: &MPoly, b: &MPoly) -> Option<Packing> {
-        let nvars = a.nvars;
+        Packing::for_products(a.nvars, &[(a, b)])
+    }
+
+    /// One packing for every product `a·b` of `pairs`.
+    fn for_products(nvars: usize, pairs: &[(&MPoly, &MPoly)]) -> Option<Packing> {
         if nvars == 0 || nvars > 64 {
             return None;
         }
         let bits = (64 / nvars as u32).min(32);
         let top = |p: &MPoly, v: usize| p.terms.iter().map(|(m, _)| u64::from(m[v])).max();
-        for v in 0..nvars {
-            if top(a, v).unwrap_or(0) + top(b, v).unwrap_or(0) >= 1u64 << bits {
-                return None;
-            }
-        }
-        Some(Packing { nvars, bits })
+        let fits = pairs.iter().all(|(a, b)| {
+            (0..nvars).all(|v| top(a, v).unwrap_or(0) + top(b, v).unwrap_or(0) < 1u64 << bits)
+        });
+        fits.then_some(Packing { nvars, bits })
     }
 
     fn pack(&self, m: &[u32]) -> u64 {
@@ -590,19 +592,13 @@ fn product(a: &MPoly, b: &MPoly) -> MPoly {
 /// product.
 pub fn sum_of_products(nvars: usize, terms: &[(&MPoly, &MPoly, bool)]) -> MPoly {
     let integral = |p: &MPoly| p.terms.iter().all(|(_, c)| c.is_integer());
-    let packing = (nvars > 0 && nvars <= 64).then(|| {
-        let bits = (64 / nvars as u32).min(32);
-        Packing { nvars, bits }
-    });
-    let fits = |pk: &Packing| {
-        let top = |p: &MPoly, v: usize| p.terms.iter().map(|(m, _)| u64::from(m[v])).max();
-        terms.iter().all(|(a, b, _)| {
-            (0..nvars).all(|v| top(a, v).unwrap_or(0) + top(b, v).unwrap_or(0) < 1u64 << pk.bits)
-        })
-    };
-    let Some(pk) = packing.filter(|pk| {
-        terms.iter().all(|(a, b, _)| integral(a) && integral(b)) && fits(pk)
-    }) else {
+    let pairs: Vec<(&MPoly, &MPoly)> = terms.iter().map(|(a, b, _)| (*a, *b)).collect();
+    let packing = pairs
+        .iter()
+        .all(|(a, b)| integral(a) && integral(b))
+        .then(|| Packing::for_products(nvars, &pairs))
+        .flatten();
+    let Some(pk) = packing else {
         let mut acc = MPoly::zero(nvars);
         for (a, b, minus) in terms {
             let p = product(a, b);
