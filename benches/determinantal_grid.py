@@ -23,7 +23,7 @@ import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import multi_peers  # noqa: E402
-from principal_grid import arg, ints, limit, print_summary  # noqa: E402
+from principal_grid import Grid, limit, print_summary  # noqa: E402
 
 
 def run_ours(binary, path, timeout):
@@ -87,48 +87,35 @@ quit;
 def main():
     a = sys.argv[1:]
     binary = a[0]
-    ns = ints(arg(a, "--ns", "3,4,5,6,7"))
-    nvs = ints(arg(a, "--nvs", "3"))
-    degs = ints(arg(a, "--degs", "2,6,10"))
-    seeds = ints(arg(a, "--seeds", "1-2"))
-    terms = int(arg(a, "--terms", "3"))
-    extra = int(arg(a, "--extra-cols", "0"))
-    timeout = int(arg(a, "--timeout", "60"))
+    grid = Grid(a, ns="3,4,5,6,7", nvs="3", degs="2,6,10", seeds="1-2")
+    timeout, extra = grid.timeout, grid.extra
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
-        for n in ns:
-            for nv in nvs:
-                names = multi_peers.NAMES[:nv]
-                for deg in degs:
-                    for seed in seeds:
-                        m = multi_peers.gen(n, nv, deg, seed, terms, n + extra)
-                        path = os.path.join(tmp, f"m_{n}_{nv}_{deg}_{seed}.lmx")
-                        with open(path, "w") as f:
-                            f.write(multi_peers.lmx(m, names))
-                        t, rep = run_ours(binary, path, timeout)
-                        ours = None
-                        if rep is not None:
-                            acc, ours = 0, []
-                            for f in rep["invariant_factors"]:
-                                acc += total_degree(f)
-                                ours.append(acc)
-                        st, sdeg = None, "-"
-                        if "--no-singular" not in a:
-                            try:
-                                st, sdeg = run_singular(m, names, timeout)
-                            except Exception as e:  # noqa: BLE001
-                                sdeg = type(e).__name__
-                        ratio = f"{st / t:.2f}" if st is not None and t > 0 else "-"
-                        agree = "-" if st is None or ours is None else sdeg == ours
-                        print(
-                            f"n={n}x{n + extra} nv={nv} deg={deg} seed={seed} "
-                            f"ours={t:.3f}s d_k degrees={ours if ours is not None else 'FAILED/limit'} "
-                            f"singular={'-' if st is None else f'{st:.3f}s'} singular_degrees={sdeg} "
-                            f"agree={agree} singular/ours={ratio}",
-                            flush=True,
-                        )
-                        rows.append((n, t, st))
-    print_summary(rows, ns, "Singular")
+        for n, nv, names, deg, seed, m, path in grid.cases(tmp):
+            t, rep = run_ours(binary, path, timeout)
+            ours = None
+            if rep is not None:
+                acc, ours = 0, []
+                for f in rep["invariant_factors"]:
+                    acc += total_degree(f)
+                    ours.append(acc)
+            st, sdeg = None, "-"
+            if "--no-singular" not in a:
+                try:
+                    st, sdeg = run_singular(m, names, timeout)
+                except Exception as e:  # noqa: BLE001
+                    sdeg = type(e).__name__
+            ratio = f"{st / t:.2f}" if st is not None and t > 0 else "-"
+            agree = "-" if st is None or ours is None else sdeg == ours
+            print(
+                f"n={n}x{n + extra} nv={nv} deg={deg} seed={seed} "
+                f"ours={t:.3f}s d_k degrees={ours if ours is not None else 'FAILED/limit'} "
+                f"singular={'-' if st is None else f'{st:.3f}s'} singular_degrees={sdeg} "
+                f"agree={agree} singular/ours={ratio}",
+                flush=True,
+            )
+            rows.append((n, t, st))
+    print_summary(rows, grid.ns, "Singular")
 
 
 if __name__ == "__main__":

@@ -7,7 +7,8 @@ Usage:
                         [--terms T] [--extra-cols K] [--timeout S] [--no-pari]
 
 The matrices are benches/multi_peers.py's (same generator, same seeds); the
-principal symbol is the last one; --extra-cols K makes them n×(n+K). lambdamat: user CPU of the whole
+principal symbol is the last one; --extra-cols K makes them n×(n+K) (bordered
+to a square for PARI). lambdamat: user CPU of the whole
 `BIN smith FILE --principal s --json` process (RLIMIT_CPU = timeout);
 PARI: matsnf's own time (getabstime, the call repeated until 200 ms
 have passed, time per call), under the same CPU limit. One line
@@ -64,7 +65,13 @@ def run_ours(binary, path, principal, timeout):
 
 def run_pari(m, nv, principal, timeout):
     """matsnf(M, 3) over Q(others)[x], repeated until 200 ms have passed
-    (getabstime counts milliseconds): the time per call and the degrees."""
+    (getabstime counts milliseconds): the time per call and the degrees of
+    the nonzero invariant factors. matsnf takes square matrices only: a
+    non-square input is bordered with zero rows or columns (the same
+    nonzero invariant factors)."""
+    size = max(len(m), len(m[0]))
+    m = [list(row) + [{}] * (size - len(row)) for row in m]
+    m += [[{}] * size for _ in range(size - len(m))]
     names = [f"a{i}" for i in range(nv)]
     names[principal] = "x"
     rows = ";".join(",".join(multi_peers.poly_str(e, names) for e in row) for row in m)
@@ -78,68 +85,85 @@ def run_pari(m, nv, principal, timeout):
         ["gp", "-q", "-s", "1G"], input=prog, capture_output=True, text=True,
         preexec_fn=limit(timeout),
     ).stdout.splitlines()
-    return float(out[0]) / 1000.0, out[2].replace(" ", "")
+    degs = [d for d in out[2].strip("[]").replace(" ", "").split(",") if d != "-oo"]
+    return float(out[0]) / 1000.0, "[" + ",".join(degs) + "]"
 
 
 def main():
     a = sys.argv[1:]
     binary = a[0]
-    ns = ints(arg(a, "--ns", "2,3,4"))
-    nvs = ints(arg(a, "--nvs", "2,3"))
-    degs = ints(arg(a, "--degs", "1,2"))
-    seeds = ints(arg(a, "--seeds", "1-8"))
-    terms = int(arg(a, "--terms", "3"))
-    extra = int(arg(a, "--extra-cols", "0"))
-    timeout = int(arg(a, "--timeout", "60"))
+    grid = Grid(a, ns="2,3,4", nvs="2,3", degs="1,2", seeds="1-8")
+    timeout, extra = grid.timeout, grid.extra
     multi_peers.TIMEOUT = timeout + 5
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
-        for n in ns:
-            for nv in nvs:
+        for n, nv, names, deg, seed, m, path in grid.cases(tmp):
+            t, rep = run_ours(binary, path, names[-1], timeout)
+            if rep is None:
+                route, uv, degs_ours = "FAILED/limit", "-", "-"
+            else:
+                alg = rep.get("algorithm", "")
+                route = (
+                    "ff" if alg.startswith("fraction-free")
+                    else "det-adj" if alg.startswith("det and adj")
+                    else "field" if alg.startswith("elimination")
+                    else "max-minors" if "minors over Q[all] by expansion" in alg
+                    else "divisors" if alg.startswith("determinantal divisors")
+                    else alg[:20]
+                )
+                uv = "yes" if rep.get("U") else "no"
+                degs_ours = "[" + ",".join(
+                    str(len(c) - 1)
+                    for c in rep.get("invariant_factor_coefficients") or []
+                ) + "]"
+            pt, pdeg = None, "-"
+            if "--no-pari" not in a:
+                try:
+                    pt, pdeg = run_pari(m, nv, nv - 1, timeout)
+                except Exception as e:  # noqa: BLE001
+                    pdeg = type(e).__name__
+            ratio = f"{pt / t:.2f}" if pt is not None and t > 0 else "-"
+            try:
+                agree = sorted(json.loads(pdeg)) == sorted(json.loads(degs_ours))
+            except (ValueError, TypeError):
+                agree = "-"
+            line = (
+                f"n={n}x{n + extra} nv={nv} deg={deg} seed={seed} route={route} uv={uv} "
+                f"ours={t:.3f}s degs={degs_ours} pari={'-' if pt is None else f'{pt:.3f}s'} "
+                f"pari_degs={pdeg} agree={agree} pari/ours={ratio}"
+            )
+            print(line, flush=True)
+            rows.append((n, t, pt, route))
+    print_summary(rows, grid.ns, "PARI")
+
+
+class Grid:
+    """The seeded grid both grid scripts run: options --ns, --nvs, --degs,
+    --seeds (defaults given), --terms, --extra-cols and --timeout, and the
+    cases over them."""
+
+    def __init__(self, a, ns, nvs, degs, seeds):
+        self.ns = ints(arg(a, "--ns", ns))
+        self.nvs = ints(arg(a, "--nvs", nvs))
+        self.degs = ints(arg(a, "--degs", degs))
+        self.seeds = ints(arg(a, "--seeds", seeds))
+        self.terms = int(arg(a, "--terms", "3"))
+        self.extra = int(arg(a, "--extra-cols", "0"))
+        self.timeout = int(arg(a, "--timeout", "60"))
+
+    def cases(self, tmp):
+        """Per case (n, nv, names, deg, seed, m, path): multi_peers.gen's
+        n×(n + extra) matrix and its lambdamat file, written in `tmp`."""
+        for n in self.ns:
+            for nv in self.nvs:
                 names = multi_peers.NAMES[:nv]
-                for deg in degs:
-                    for seed in seeds:
-                        m = multi_peers.gen(n, nv, deg, seed, terms, n + extra)
+                for deg in self.degs:
+                    for seed in self.seeds:
+                        m = multi_peers.gen(n, nv, deg, seed, self.terms, n + self.extra)
                         path = os.path.join(tmp, f"m_{n}_{nv}_{deg}_{seed}.lmx")
                         with open(path, "w") as f:
                             f.write(multi_peers.lmx(m, names))
-                        t, rep = run_ours(binary, path, names[-1], timeout)
-                        if rep is None:
-                            route, uv, degs_ours = "FAILED/limit", "-", "-"
-                        else:
-                            alg = rep.get("algorithm", "")
-                            route = (
-                                "ff" if alg.startswith("fraction-free")
-                                else "det-adj" if alg.startswith("det and adj")
-                                else "field" if alg.startswith("elimination")
-                                else "max-minors" if "minors over Q[all] by expansion" in alg
-                                else "divisors" if alg.startswith("determinantal divisors")
-                                else alg[:20]
-                            )
-                            uv = "yes" if rep.get("U") else "no"
-                            degs_ours = "[" + ",".join(
-                                str(len(c) - 1)
-                                for c in rep.get("invariant_factor_coefficients") or []
-                            ) + "]"
-                        pt, pdeg = None, "-"
-                        if "--no-pari" not in a:
-                            try:
-                                pt, pdeg = run_pari(m, nv, nv - 1, timeout)
-                            except Exception as e:  # noqa: BLE001
-                                pdeg = type(e).__name__
-                        ratio = f"{pt / t:.2f}" if pt is not None and t > 0 else "-"
-                        try:
-                            agree = sorted(json.loads(pdeg)) == sorted(json.loads(degs_ours))
-                        except (ValueError, TypeError):
-                            agree = "-"
-                        line = (
-                            f"n={n}x{n + extra} nv={nv} deg={deg} seed={seed} route={route} uv={uv} "
-                            f"ours={t:.3f}s degs={degs_ours} pari={'-' if pt is None else f'{pt:.3f}s'} "
-                            f"pari_degs={pdeg} agree={agree} pari/ours={ratio}"
-                        )
-                        print(line, flush=True)
-                        rows.append((n, t, pt, route))
-    print_summary(rows, ns, "PARI")
+                        yield n, nv, names, deg, seed, m, path
 
 
 def print_summary(rows, ns, peer):

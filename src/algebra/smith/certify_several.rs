@@ -784,26 +784,31 @@ fn interpolate(f: Fp, xs: &[u64], ys: &[u64]) -> UP {
 
 /// The entries of `line` (over K[λ]) times the lcm of their
 /// denominators, as polynomials over Q[all] (λ = symbol `s`).
-fn cleared_line(line: &[&UPoly<RatFunc>], s: usize, nv: usize) -> Vec<MPoly> {
-    let l = line
+pub(super) fn cleared_line(line: &[&UPoly<RatFunc>], s: usize, nv: usize) -> Vec<MPoly> {
+    scaled_line(line, s, nv).1
+}
+
+/// `(l, l·line)`: the lcm `l` of the denominators of `line` and the
+/// entries of [`cleared_line`].
+fn scaled_line(line: &[&UPoly<RatFunc>], s: usize, nv: usize) -> (MPoly, Vec<MPoly>) {
+    let mut l = MPoly::one(nv);
+    for c in line.iter().flat_map(|e| e.0.iter()) {
+        // A line's entries often share one denominator: no lcm for it.
+        if !c.is_polynomial() && c.den() != &l {
+            l = lcm(&l, c.den());
+        }
+    }
+    let cleared = line
         .iter()
-        .flat_map(|e| e.0.iter())
-        .fold(MPoly::one(nv), |l, c| {
-            if c.is_polynomial() {
-                l
-            } else {
-                lcm(&l, c.den())
-            }
-        });
-    line.iter()
         .map(|e| {
             let cs: Vec<MPoly> =
                 e.0.iter()
-                    .map(|c| c.num() * &l.div_exact(c.den()).unwrap_or_else(|| MPoly::zero(nv)))
+                    .map(|c| c.num() * &l.div_exact(c.den()).expect("the lcm of the denominators"))
                     .collect();
             MPoly::from_coeffs_in(s, &cs, nv)
         })
-        .collect()
+        .collect();
+    (l, cleared)
 }
 
 /// det of a square matrix over Q\[all\] by expansion along its row with the
@@ -858,27 +863,16 @@ pub fn product_by_lines(
     if d.rows() != m || d.cols() != n {
         return false;
     }
-    let scale_of = |line: &[&UPoly<RatFunc>]| {
-        line.iter()
-            .flat_map(|e| e.0.iter())
-            .fold(MPoly::one(nv), |l, c| {
-                if c.is_polynomial() {
-                    l
-                } else {
-                    lcm(&l, c.den())
-                }
-            })
-    };
     let rows: Vec<(MPoly, Vec<MPoly>)> = (0..m)
         .map(|i| {
             let line: Vec<&UPoly<RatFunc>> = (0..m).map(|j| u.get(i, j)).collect();
-            (scale_of(&line), cleared_line(&line, s, nv))
+            scaled_line(&line, s, nv)
         })
         .collect();
     let cols: Vec<(MPoly, Vec<MPoly>)> = (0..n)
         .map(|j| {
             let line: Vec<&UPoly<RatFunc>> = (0..n).map(|i| v.get(i, j)).collect();
-            (scale_of(&line), cleared_line(&line, s, nv))
+            scaled_line(&line, s, nv)
         })
         .collect();
     // U′·A, row by row.
@@ -909,8 +903,8 @@ pub fn product_by_lines(
                 }
                 continue;
             }
-            let g = scale_of(&[dij]);
-            let dt = cleared_line(&[dij], s, nv).remove(0);
+            let (g, mut dt) = scaled_line(&[dij], s, nv);
+            let dt = dt.remove(0);
             if &g * &x != &(di * ej) * &dt {
                 return false;
             }

@@ -1098,13 +1098,18 @@ fn principal_fraction_free(
         kr.k.shown.join(", "),
         a.ring.names[p]
     ));
-    let Some(ff) = super::fraction_free::eliminate_fraction_free(a, p) else {
+    use super::fraction_free as ff;
+    let Some(ff) = ff::eliminate_fraction_free(a, p) else {
         // Its entries swelled: the invariant factors alone, where the
         // det/adjugate (square) or coprime maximal minors (non-square)
         // certify them.
         let why = format!(
-            "the fraction-free elimination over Q[others][λ] stopped at its safeguard (entries over {} bits of coefficients)",
-            super::fraction_free::SIZE_LIMIT_BITS
+            "the fraction-free elimination over Q[others][λ] stopped at its safeguard against swelling entries (over {} bits of coefficients, or one round multiplying their size by over {} above {} bits, or by over {} above {} bits)",
+            ff::SIZE_LIMIT_BITS,
+            ff::JUMP_FACTOR,
+            ff::JUMP_FLOOR_BITS,
+            ff::SWELL_FACTOR,
+            ff::SWELL_FLOOR_BITS,
         );
         let form_only = super::principal_form::FormOnly {
             name,
@@ -1377,44 +1382,25 @@ impl ProductCheck<UPolyRing<RatFuncField>> for ClearedDenominators {
     }
 }
 
-/// A line of K\[λ\] entries with its denominators cleared and its
-/// Q\[others\] content removed: each coefficient `n/d` becomes
-/// `n·(l/d)/g`, with `l` the lcm of the line's denominators and `g` the
-/// gcd of the cleared numerators, taken by exact divisions (no gcd per
-/// coefficient, which a product of fractions would normalise by); the
-/// entries come back over Q\[all\], λ the symbol `p`.
+/// A line of K\[λ\] entries with its denominators cleared
+/// ([`super::certify_several::cleared_line`]) and its Q\[others\] content
+/// removed: the entries come back over Q\[all\], λ the symbol `p`, with
+/// no common factor free of λ.
 fn cleared_content_free(line: &[&UPoly<RatFunc>], p: usize, n: usize) -> Vec<MPoly> {
-    let mut l = MPoly::one(n);
-    for e in line {
-        for c in &e.0 {
-            if !c.is_polynomial() && c.den() != &l {
-                l = lcm(&l, c.den());
-            }
+    let cleared = super::certify_several::cleared_line(line, p, n);
+    let mut g = MPoly::zero(n);
+    for c in cleared.iter().flat_map(|e| e.coeffs_in(p)) {
+        g = gcd(&g, &c);
+        if g.is_nonzero_constant() {
+            return cleared;
         }
     }
-    let nums: Vec<Vec<MPoly>> = line
-        .iter()
-        .map(|e| {
-            e.0.iter()
-                .map(|c| c.num() * &l.div_exact(c.den()).expect("lcm"))
-                .collect()
-        })
-        .collect();
-    let mut g = MPoly::zero(n);
-    for c in nums.iter().flatten() {
-        g = gcd(&g, c);
-    }
     if g.is_zero() {
-        g = MPoly::one(n);
+        return cleared;
     }
-    nums.iter()
-        .map(|cs| {
-            let cs: Vec<MPoly> = cs
-                .iter()
-                .map(|c| c.div_exact(&g).expect("the content divides"))
-                .collect();
-            MPoly::from_coeffs_in(p, &cs, n)
-        })
+    cleared
+        .iter()
+        .map(|e| e.div_exact(&g).expect("the content divides"))
         .collect()
 }
 

@@ -51,21 +51,13 @@ impl FormOnly<'_> {
     /// minors; `None` when the invariant factors are not established that
     /// way.
     pub fn maximal_minors(&self) -> Option<SmithReport> {
-        let FormOnly {
-            name,
-            a,
-            ap,
-            p,
-            note,
-            why,
-            opts,
-        } = *self;
+        let (a, ap, p) = (self.a, self.ap, self.p);
         let (m, n) = (a.rows(), a.cols());
         if m == n {
             return None;
         }
         let r = m.min(n);
-        opts.progress.phase(&format!(
+        self.opts.progress.phase(&format!(
             "invariant factors from the {r}×{r} minors over Q(others)[{}]",
             a.ring.names[p]
         ));
@@ -97,19 +89,7 @@ impl FormOnly<'_> {
                 r - 1
             )
         };
-        let mode_note = format!(
-            "{note}; transforms omitted because {why}: the invariant factors alone are certified"
-        );
-        Some(principal_d_only_report(
-            name,
-            a,
-            d,
-            r,
-            mode_note,
-            algorithm,
-            cert.checks,
-            opts,
-        ))
+        Some(self.report(d, r, algorithm, cert.checks))
     }
 
     /// The report of any `a` from its determinantal divisors over Q\[all\]:
@@ -120,20 +100,12 @@ impl FormOnly<'_> {
     /// primitive part of their gcd over Q\[all\]); `None` above [`DIVISOR_ROUTE_MINORS`] minors or when the
     /// certificate fails.
     pub fn determinantal_divisors(&self) -> Option<SmithReport> {
-        let FormOnly {
-            name,
-            a,
-            ap,
-            p,
-            note,
-            why,
-            opts,
-        } = *self;
+        let (a, ap, p) = (self.a, self.ap, self.p);
         let (m, n) = (a.rows(), a.cols());
         if minor_count(m, n) > DIVISOR_ROUTE_MINORS {
             return None;
         }
-        opts.progress.phase(&format!(
+        self.opts.progress.phase(&format!(
             "determinantal divisors over Q[all] ({} minors), their primitive parts in {}",
             minor_count(m, n),
             a.ring.names[p]
@@ -160,10 +132,10 @@ impl FormOnly<'_> {
         }
         let mut checks = cert.checks;
         checks.push(Check {
-        property: "f_k = pp(d_k)/pp(d_(k-1)) over Q(others)[λ]".into(),
-        ok: chain,
-        detail: "the primitive part in λ of each divisor divides the next's (exact division over Q[all])".into(),
-    });
+            property: "f_k = pp(d_k)/pp(d_(k-1)) over Q(others)[λ]".into(),
+            ok: chain,
+            detail: "the primitive part in λ of each divisor divides the next's (exact division over Q[all])".into(),
+        });
         if !chain {
             return None;
         }
@@ -171,11 +143,24 @@ impl FormOnly<'_> {
             "determinantal divisors over Q[all] (d_k = gcd of the k×k minors by Laplace expansion, modular gcd), their primitive parts in {} are those over Q(others)[{}]; f_k = d_k/d_(k-1)",
             a.ring.names[p], a.ring.names[p]
         );
+        Some(self.report(d, r, algorithm, checks))
+    }
+
+    /// The report of the invariant factors on the diagonal of `d` (rank
+    /// `r`), found by `algorithm` and certified by `checks`.
+    fn report(
+        &self,
+        d: Matrix<UPolyRing<RatFuncField>>,
+        r: usize,
+        algorithm: String,
+        checks: Vec<Check>,
+    ) -> SmithReport {
         let mode_note = format!(
-            "{note}; transforms omitted because {why}: the invariant factors alone are certified"
+            "{}; transforms omitted because {}: the invariant factors alone are certified",
+            self.note, self.why
         );
-        Some(principal_d_only_report(
-            name, a, d, r, mode_note, algorithm, checks, opts,
-        ))
+        principal_d_only_report(
+            self.name, self.a, d, r, mode_note, algorithm, checks, self.opts,
+        )
     }
 }
