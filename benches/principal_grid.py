@@ -85,6 +85,8 @@ def run_pari(m, nv, principal, timeout):
         ["gp", "-q", "-s", "1G"], input=prog, capture_output=True, text=True,
         preexec_fn=limit(timeout),
     ).stdout.splitlines()
+    if len(out) < 3:
+        raise TimeoutError  # killed by the CPU limit (or a PARI error)
     degs = [d for d in out[2].strip("[]").replace(" ", "").split(",") if d != "-oo"]
     return float(out[0]) / 1000.0, "[" + ",".join(degs) + "]"
 
