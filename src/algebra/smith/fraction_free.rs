@@ -154,10 +154,10 @@ fn reduce_line(line: &mut [&mut MPoly]) {
         let e = &*line[i];
         let Some(g) = gs.last() else {
             let g = e.primitive_normal();
-            let c = e.leading().expect("nonzero").1.clone() / &g.leading().expect("nonzero").1;
             if g.is_nonzero_constant() {
                 break;
             }
+            let c = e.leading().expect("nonzero").1.clone() / &g.leading().expect("nonzero").1;
             quotients.push((i, 0, MPoly::constant(c, e.nvars())));
             gs.push(g);
             continue;
@@ -174,7 +174,8 @@ fn reduce_line(line: &mut [&mut MPoly]) {
         quotients.push((i, gs.len(), q));
         gs.push(g2);
     }
-    if let Some(last) = gs.last().filter(|g| !g.is_nonzero_constant()) {
+    // A constant gcd is never kept: `gs` is empty then.
+    if let Some(last) = gs.last() {
         // g_k / g_final for every gcd taken (each divides the one before).
         let ratios: Vec<MPoly> = gs
             .iter()
