@@ -1098,18 +1098,18 @@ fn principal_fraction_free(
         kr.k.shown.join(", "),
         a.ring.names[p]
     ));
-    use super::fraction_free as ff;
-    let Some(ff) = ff::eliminate_fraction_free(a, p) else {
+    use super::fraction_free;
+    let Some(ff) = fraction_free::eliminate_fraction_free(a, p) else {
         // Its entries swelled: the invariant factors alone, where the
         // det/adjugate (square) or coprime maximal minors (non-square)
         // certify them.
         let why = format!(
             "the fraction-free elimination over Q[others][λ] stopped at its safeguard against swelling entries (over {} bits of coefficients, or one round multiplying their size by over {} above {} bits, or by over {} above {} bits)",
-            ff::SIZE_LIMIT_BITS,
-            ff::JUMP_FACTOR,
-            ff::JUMP_FLOOR_BITS,
-            ff::SWELL_FACTOR,
-            ff::SWELL_FLOOR_BITS,
+            fraction_free::SIZE_LIMIT_BITS,
+            fraction_free::JUMP_FACTOR,
+            fraction_free::JUMP_FLOOR_BITS,
+            fraction_free::SWELL_FACTOR,
+            fraction_free::SWELL_FLOOR_BITS,
         );
         let form_only = super::principal_form::FormOnly {
             name,
